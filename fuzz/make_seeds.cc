@@ -1,0 +1,60 @@
+// Builds each fuzz target's seed corpus from the conformance vectors:
+// whole files for the file decoders, chunk payloads for the component
+// decoders. Usage: make_seeds VECTORS_DIR OUT_DIR
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+#include "bitio/byte_io.h"
+#include "qmc/format.h"
+
+namespace fs = std::filesystem;
+
+static void write(const fs::path& path, const uint8_t* data, size_t size) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
+}
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: make_seeds VECTORS_DIR OUT_DIR\n");
+    return 2;
+  }
+  const fs::path out = argv[2];
+  for (const char* t : {"decode_file", "stream_decoder", "connectivity", "positions", "huffman", "roundtrip"})
+    fs::create_directories(out / t);
+  int n = 0;
+  for (const auto& entry : fs::directory_iterator(argv[1])) {
+    std::ifstream in(entry.path(), std::ios::binary);
+    std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::string name = entry.path().stem().string();
+    write(out / "decode_file" / name, bytes.data(), bytes.size());
+    std::vector<uint8_t> streamed{uint8_t(n)};
+    streamed.insert(streamed.end(), bytes.begin(), bytes.end());
+    write(out / "stream_decoder" / name, streamed.data(), streamed.size());
+    write(out / "roundtrip" / name, bytes.data(), bytes.size());
+    // Walk the chunks as far as the framing allows; invalid vectors stop early.
+    for (size_t pos = 8; pos + 12 <= bytes.size();) {
+      const uint32_t type = qmc::load_u32be(&bytes[pos]);
+      const uint32_t length = qmc::load_u32le(&bytes[pos + 4]);
+      if (length > bytes.size() - pos - 12) break;
+      const uint8_t* payload = &bytes[pos + 8];
+      if (type == qmc::kChunkConnectivity) {
+        write(out / "connectivity" / name, payload, length);
+        if (length > 3) {  // the bit stream starts with the degree table
+          std::vector<uint8_t> h{33};
+          h.insert(h.end(), payload + 3, payload + length);
+          write(out / "huffman" / name, h.data(), h.size());
+        }
+      }
+      if (type == qmc::kChunkPositions) write(out / "positions" / name, payload, length);
+      pos += 12 + size_t(length);
+    }
+    ++n;
+  }
+  std::printf("seeds from %d vectors in %s\n", n, argv[2]);
+  return 0;
+}

@@ -1,0 +1,25 @@
+// libFuzzer target: the streaming decoder against the whole-buffer decoder.
+// The first input byte chooses the piece sizes; the rest is the file. Spec
+// 3.5 requires the same result however the bytes arrive, so any difference
+// is a bug and aborts.
+#include <cstddef>
+#include <cstdint>
+
+#include "qmc/decoder.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  if (size == 0) return 0;
+  const size_t piece = size_t(data[0] % 17) + 1;
+  ++data;
+  --size;
+  qmc::DecodedFile whole;
+  const qmc::Status a = qmc::decode(data, size, &whole);
+  qmc::StreamDecoder stream;
+  qmc::Status b;
+  for (size_t pos = 0; pos < size && b.ok(); pos += piece)
+    b = stream.feed(data + pos, pos + piece <= size ? piece : size - pos);
+  if (b.ok()) b = stream.finish();
+  if (a.code() != b.code()) __builtin_trap();
+  if (a.ok() && qmc::canonical_output(whole) != qmc::canonical_output(stream.file())) __builtin_trap();
+  return 0;
+}

@@ -1,0 +1,85 @@
+// qmc decoder: whole-buffer and streaming decoding of .qmc files.
+// Depends on the C++ standard library only. Never throws for bad input:
+// every rejection is a Status naming the rule of spec/qmc-format.md it broke.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "qmc/format.h"
+#include "qmc/mesh.h"
+#include "qmc/status.h"
+
+namespace qmc {
+
+// One chunk as seen by the decoder (for `qmc info` and diagnostics).
+struct ChunkInfo {
+  uint32_t type = 0;
+  uint64_t offset = 0;   // byte offset of the chunk's type field in the file
+  uint32_t length = 0;   // payload bytes
+  bool critical = false;
+  bool known = false;    // understood by this decoder (unknown ancillary: skipped)
+};
+
+std::string chunk_type_name(uint32_t type);
+
+struct QuantizationInfo {
+  int bits = 0;                   // n of section 6.1
+  std::array<float, 3> min{};     // bounding box stored in POSN
+  std::array<float, 3> max{};
+};
+
+struct DecodedFile {
+  Mesh mesh;                          // positions dequantized per section 6.4
+  std::vector<uint32_t> quantized;    // the integers q of section 6.1, 3 per vertex
+  QuantizationInfo quantization;
+  ConnectivityMethod method = ConnectivityMethod::kIndexed;
+  uint8_t version_major = 0, version_minor = 0;
+  std::vector<ChunkInfo> chunks;
+  std::vector<std::string> texts;     // payloads of teXt chunks, "key=value"
+};
+
+struct DecoderLimits {
+  // Largest chunk payload this decoder buffers. The format allows 2^31 - 1;
+  // an embedder may lower it to bound memory.
+  uint32_t max_chunk_length = kMaxChunkLength;
+};
+
+// Decodes a complete file held in memory.
+Status decode(const uint8_t* data, size_t size, DecodedFile* out, const DecoderLimits& limits = {});
+
+// Decodes a file whose bytes arrive in pieces (section 3.5). Each complete
+// chunk is validated and decoded the moment its last byte arrives; a viewer
+// can poll `file()` as chunks land.
+class StreamDecoder {
+ public:
+  explicit StreamDecoder(const DecoderLimits& limits = {});
+  ~StreamDecoder();
+  StreamDecoder(const StreamDecoder&) = delete;
+  StreamDecoder& operator=(const StreamDecoder&) = delete;
+
+  // Consumes the bytes. After an error, every further call returns it again.
+  Status feed(const uint8_t* data, size_t size);
+  // Call once the input has ended: a file that stopped before QEND is kTruncated.
+  Status finish();
+
+  bool complete() const;          // QEND seen and valid
+  bool has_connectivity() const;  // CONN decoded: faces are available
+  bool has_positions() const;     // POSN decoded: positions are available
+  const DecodedFile& file() const;
+  DecodedFile take_file();
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+// The canonical byte serialization of a decoded mesh (section 10.2), whose
+// SHA-256 the conformance manifest records.
+std::vector<uint8_t> canonical_output(const DecodedFile& file);
+
+}  // namespace qmc

@@ -1,0 +1,47 @@
+// qmc: constants of the container format (spec/qmc-format.md sections 3-6).
+// Public so that tools and other implementations can name chunks and methods
+// the same way the specification does.
+#pragma once
+
+#include <cstdint>
+
+namespace qmc {
+
+// Section 3.1: the 8-byte file signature.
+inline constexpr uint8_t kSignature[8] = {0x89, 'Q', 'M', 'C', '\r', '\n', 0x1A, '\n'};
+
+// Section 4.1: the format version this library writes and reads.
+inline constexpr uint8_t kFormatMajor = 1;
+inline constexpr uint8_t kFormatMinor = 0;
+
+// Section 3.2: a chunk payload is at most 2^31 - 1 bytes.
+inline constexpr uint32_t kMaxChunkLength = 0x7FFFFFFFu;
+
+// Section 3.3: chunk types as 32-bit big-endian packing of their 4 ASCII letters.
+constexpr uint32_t chunk_type(char a, char b, char c, char d) {
+  return (uint32_t(uint8_t(a)) << 24) | (uint32_t(uint8_t(b)) << 16) | (uint32_t(uint8_t(c)) << 8) |
+         uint32_t(uint8_t(d));
+}
+inline constexpr uint32_t kChunkHeader = chunk_type('Q', 'H', 'D', 'R');
+inline constexpr uint32_t kChunkConnectivity = chunk_type('C', 'O', 'N', 'N');
+inline constexpr uint32_t kChunkPositions = chunk_type('P', 'O', 'S', 'N');
+inline constexpr uint32_t kChunkEnd = chunk_type('Q', 'E', 'N', 'D');
+inline constexpr uint32_t kChunkText = chunk_type('t', 'e', 'X', 't');
+
+// Section 3.3: bit 5 of the first type byte clear (upper-case letter) = critical.
+constexpr bool chunk_is_critical(uint32_t type) { return ((type >> 24) & 0x20u) == 0; }
+
+// Section 5.1: connectivity coding methods recorded in CONN.
+enum class ConnectivityMethod : uint8_t {
+  kIndexed = 0,  // universal fallback: any polygon soup (section 5.2)
+};
+const char* connectivity_method_name(ConnectivityMethod method);
+
+// Section 6.1: position quantization bits.
+inline constexpr int kMinPositionBits = 1;
+inline constexpr int kMaxPositionBits = 30;
+// Default keeps the largest per-vertex error below 1/4096 of the largest
+// bounding-box side (section 6.2 derives the bound).
+inline constexpr int kDefaultPositionBits = 12;
+
+}  // namespace qmc

@@ -1,0 +1,29 @@
+// CONN header of spec/qmc-format.md section 5.1 and dispatch on its method.
+#include "decoder/connectivity_decoder.h"
+
+#include <string>
+
+#include "bitio/byte_io.h"
+#include "decoder/indexed_connectivity_decoder.h"
+
+namespace qmc {
+
+Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex_count,
+                           ConnectivityMethod* method, Mesh* mesh) {
+  ByteReader in(payload, size);
+  uint8_t method_id = 0;
+  uint64_t vertices = 0, faces = 0;
+  if (!in.get_u8(&method_id) || !in.get_varint(&vertices) || !in.get_varint(&faces))
+    return Status(ErrorCode::kBadChunkPayload, "CONN header cut short or malformed varint");
+  if (vertices > UINT32_MAX || faces > UINT32_MAX)
+    return Status(ErrorCode::kBadChunkPayload, "CONN counts exceed 2^32 - 1");
+  if (method_id != uint8_t(ConnectivityMethod::kIndexed))
+    return Status(ErrorCode::kUnsupportedFeature, "connectivity method " + std::to_string(method_id));
+  Status s = decode_indexed_connectivity(in.cursor(), in.remaining(), uint32_t(vertices), uint32_t(faces), mesh);
+  if (!s.ok()) return s;
+  *vertex_count = uint32_t(vertices);
+  *method = ConnectivityMethod(method_id);
+  return Status::Ok();
+}
+
+}  // namespace qmc

@@ -1,0 +1,17 @@
+// The CONN chunk (spec/qmc-format.md section 5): header, then the method.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "qmc/format.h"
+#include "qmc/mesh.h"
+#include "qmc/status.h"
+
+namespace qmc {
+
+// Decodes a CONN payload into mesh->face_sizes / mesh->corners.
+Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex_count,
+                           ConnectivityMethod* method, Mesh* mesh);
+
+}  // namespace qmc

@@ -1,0 +1,227 @@
+// The container of spec/qmc-format.md sections 3 and 4: signature, chunk
+// framing, CRC, the required chunk order, and dispatch to the chunk
+// decoders. decode() is the streaming decoder fed all bytes at once.
+#include <cstring>
+#include <string>
+
+#include "bitio/byte_io.h"
+#include "bitio/crc32.h"
+#include "decoder/connectivity_decoder.h"
+#include "decoder/position_decoder.h"
+#include "qmc/decoder.h"
+
+namespace qmc {
+
+struct StreamDecoder::State {
+  DecoderLimits limits;
+  std::vector<uint8_t> pending;  // bytes of a unit (signature or chunk) not yet complete
+  uint64_t offset = 0;           // file offset of the first byte not yet consumed
+  bool signature_seen = false, header_seen = false, connectivity_seen = false, positions_seen = false;
+  bool complete = false;
+  uint32_t vertex_count = 0;
+  DecodedFile file;
+  Status error;
+
+  Status consume(const uint8_t* data, size_t size, size_t* used);
+  Status consume_signature(const uint8_t* data, size_t size, size_t* used);
+  Status handle_chunk(uint32_t type, const uint8_t* payload, uint32_t length);
+  Status handle_header(const uint8_t* payload, uint32_t length);
+  Status handle_connectivity(const uint8_t* payload, uint32_t length);
+  Status handle_positions(const uint8_t* payload, uint32_t length);
+  Status handle_end(uint32_t length);
+};
+
+namespace {
+
+bool is_ascii_letter(uint8_t c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
+
+Status order_error(const std::string& message) { return Status(ErrorCode::kChunkOrder, message); }
+
+}  // namespace
+
+std::string chunk_type_name(uint32_t type) {
+  std::string name;
+  for (int shift = 24; shift >= 0; shift -= 8) {
+    const uint8_t c = uint8_t(type >> shift);
+    if (c >= 0x20 && c < 0x7F) {
+      name += char(c);
+    } else {
+      static const char kHex[] = "0123456789ABCDEF";
+      name += "\\x";
+      name += kHex[c >> 4];
+      name += kHex[c & 15];
+    }
+  }
+  return name;
+}
+
+const char* connectivity_method_name(ConnectivityMethod method) {
+  switch (method) {
+    case ConnectivityMethod::kIndexed: return "indexed";
+  }
+  return "unknown";
+}
+
+Status StreamDecoder::State::consume_signature(const uint8_t* data, size_t size, size_t* used) {
+  const size_t n = size < sizeof(kSignature) ? size : sizeof(kSignature);
+  if (std::memcmp(data, kSignature, n) != 0)
+    return Status(ErrorCode::kBadSignature, "the file does not start with the qmc signature (section 3.1)");
+  if (n == sizeof(kSignature)) {
+    signature_seen = true;
+    *used = n;
+  }
+  return Status::Ok();
+}
+
+Status StreamDecoder::State::consume(const uint8_t* data, size_t size, size_t* used) {
+  size_t pos = 0;
+  *used = 0;
+  if (!signature_seen) {
+    if (Status s = consume_signature(data, size, &pos); !s.ok() || !signature_seen) return s;
+    offset += pos;
+  }
+  while (pos < size) {
+    if (complete)
+      return Status(ErrorCode::kTrailingData, "at byte " + std::to_string(offset) + ": data after QEND");
+    if (size - pos < 8) break;
+    const uint8_t* chunk = data + pos;
+    const uint32_t type = load_u32be(chunk);
+    const uint32_t length = load_u32le(chunk + 4);
+    for (int i = 0; i < 4; ++i)
+      if (!is_ascii_letter(chunk[i]))
+        return Status(ErrorCode::kBadChunkType, "at byte " + std::to_string(offset) + ": chunk type " +
+                                                     chunk_type_name(type) + " is not four ASCII letters");
+    if (length > kMaxChunkLength)
+      return Status(ErrorCode::kBadChunkLength, "at byte " + std::to_string(offset) + ": chunk " +
+                                                    chunk_type_name(type) + " length " + std::to_string(length) +
+                                                    " exceeds 2^31 - 1");
+    if (length > limits.max_chunk_length)
+      return Status(ErrorCode::kLimitExceeded, "at byte " + std::to_string(offset) + ": chunk " +
+                                                   chunk_type_name(type) + " length " + std::to_string(length) +
+                                                   " exceeds this decoder's limit");
+    if (size - pos < 12 + uint64_t(length)) break;
+    const uint32_t stored = load_u32le(chunk + 8 + length);
+    const uint32_t computed = crc32(chunk, 8 + size_t(length));
+    if (stored != computed)
+      return Status(ErrorCode::kBadCrc, "at byte " + std::to_string(offset) + ": chunk " + chunk_type_name(type) +
+                                            " CRC mismatch");
+    if (Status s = handle_chunk(type, chunk + 8, length); !s.ok())
+      return Status(s.code(), "at byte " + std::to_string(offset) + ": " + s.message());
+    pos += 12 + size_t(length);
+    offset += 12 + uint64_t(length);
+    *used = pos;
+  }
+  *used = pos;
+  return Status::Ok();
+}
+
+Status StreamDecoder::State::handle_chunk(uint32_t type, const uint8_t* payload, uint32_t length) {
+  ChunkInfo info;
+  info.type = type;
+  info.offset = offset;
+  info.length = length;
+  info.critical = chunk_is_critical(type);
+  info.known = true;
+  if (!header_seen && type != kChunkHeader)
+    return order_error("the first chunk must be QHDR, found " + chunk_type_name(type));
+  Status s;
+  switch (type) {
+    case kChunkHeader: s = handle_header(payload, length); break;
+    case kChunkConnectivity: s = handle_connectivity(payload, length); break;
+    case kChunkPositions: s = handle_positions(payload, length); break;
+    case kChunkEnd: s = handle_end(length); break;
+    case kChunkText: file.texts.emplace_back(reinterpret_cast<const char*>(payload), length); break;
+    default:
+      if (info.critical)
+        return Status(ErrorCode::kUnknownCriticalChunk, "unknown critical chunk " + chunk_type_name(type));
+      info.known = false;  // section 3.3: unknown ancillary chunks are skipped
+  }
+  if (s.ok()) file.chunks.push_back(info);
+  return s;
+}
+
+Status StreamDecoder::State::handle_header(const uint8_t* payload, uint32_t length) {
+  if (header_seen) return order_error("a second QHDR");
+  if (length != 2)
+    return Status(ErrorCode::kBadChunkPayload, "QHDR payload is " + std::to_string(length) + " bytes, not 2");
+  if (payload[0] != kFormatMajor)
+    return Status(ErrorCode::kUnsupportedVersion, "format version " + std::to_string(payload[0]) + "." +
+                                                      std::to_string(payload[1]) + "; this decoder reads " +
+                                                      std::to_string(kFormatMajor) + ".x");
+  file.version_major = payload[0];
+  file.version_minor = payload[1];
+  header_seen = true;
+  return Status::Ok();
+}
+
+Status StreamDecoder::State::handle_connectivity(const uint8_t* payload, uint32_t length) {
+  if (connectivity_seen) return order_error("a second CONN");
+  if (Status s = decode_connectivity(payload, length, &vertex_count, &file.method, &file.mesh); !s.ok()) return s;
+  connectivity_seen = true;
+  return Status::Ok();
+}
+
+Status StreamDecoder::State::handle_positions(const uint8_t* payload, uint32_t length) {
+  if (!connectivity_seen) return order_error("POSN before CONN");
+  if (positions_seen) return order_error("a second POSN");
+  Status s = decode_positions(payload, length, vertex_count, &file.quantization, &file.quantized,
+                              &file.mesh.positions);
+  if (!s.ok()) return s;
+  positions_seen = true;
+  return Status::Ok();
+}
+
+Status StreamDecoder::State::handle_end(uint32_t length) {
+  if (length != 0) return Status(ErrorCode::kBadChunkPayload, "QEND payload must be empty");
+  if (!connectivity_seen || !positions_seen)
+    return order_error(std::string("QEND before ") + (connectivity_seen ? "POSN" : "CONN"));
+  complete = true;
+  return Status::Ok();
+}
+
+StreamDecoder::StreamDecoder(const DecoderLimits& limits) : state_(new State) { state_->limits = limits; }
+StreamDecoder::~StreamDecoder() = default;
+
+Status StreamDecoder::feed(const uint8_t* data, size_t size) {
+  State& st = *state_;
+  if (!st.error.ok()) return st.error;
+  size_t used = 0;
+  if (st.pending.empty()) {
+    st.error = st.consume(data, size, &used);
+    if (st.error.ok()) st.pending.assign(data + used, data + size);
+  } else {
+    st.pending.insert(st.pending.end(), data, data + size);
+    st.error = st.consume(st.pending.data(), st.pending.size(), &used);
+    if (st.error.ok()) st.pending.erase(st.pending.begin(), st.pending.begin() + std::ptrdiff_t(used));
+  }
+  return st.error;
+}
+
+Status StreamDecoder::finish() {
+  State& st = *state_;
+  if (!st.error.ok()) return st.error;
+  if (st.complete) return Status::Ok();
+  if (!st.signature_seen)
+    st.error = Status(ErrorCode::kTruncated, "the input ends inside the signature");
+  else if (!st.pending.empty())
+    st.error = Status(ErrorCode::kTruncated, "the input ends inside the chunk at byte " + std::to_string(st.offset));
+  else
+    st.error = Status(ErrorCode::kTruncated, "the input ends before QEND");
+  return st.error;
+}
+
+bool StreamDecoder::complete() const { return state_->complete; }
+bool StreamDecoder::has_connectivity() const { return state_->connectivity_seen; }
+bool StreamDecoder::has_positions() const { return state_->positions_seen; }
+const DecodedFile& StreamDecoder::file() const { return state_->file; }
+DecodedFile StreamDecoder::take_file() { return std::move(state_->file); }
+
+Status decode(const uint8_t* data, size_t size, DecodedFile* out, const DecoderLimits& limits) {
+  StreamDecoder decoder(limits);
+  if (Status s = decoder.feed(data, size); !s.ok()) return s;
+  if (Status s = decoder.finish(); !s.ok()) return s;
+  *out = decoder.take_file();
+  return Status::Ok();
+}
+
+}  // namespace qmc

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# End-to-end checks of the qmc command line: the commands a user runs, their
+# output files, and exit codes on bad input. Usage: cli_test.sh QMC MESHGEN
+set -u
+qmc=$1 meshgen=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+passed=0 failed=0
+check() {  # check NAME EXPECTED_EXIT COMMAND...
+  local name=$1 want=$2; shift 2
+  "$@" >"$work/out" 2>"$work/err"
+  local got=$?
+  if [ "$got" -eq "$want" ]; then passed=$((passed + 1)); else
+    failed=$((failed + 1)); echo "FAIL $name: exit $got, expected $want"; cat "$work/out" "$work/err"; fi
+}
+contains() {  # contains NAME FILE PATTERN
+  if grep -q -- "$3" "$2"; then passed=$((passed + 1)); else
+    failed=$((failed + 1)); echo "FAIL $1: '$3' not in output:"; cat "$2"; fi
+}
+
+"$meshgen" torus 24 12 "$work/torus.obj" >/dev/null
+"$meshgen" soup 5 "$work/soup.off" >/dev/null
+check encode 0 "$qmc" encode "$work/torus.obj" "$work/torus.qmc"
+contains encode-reports-error "$work/out" "max error"
+contains encode-reports-bpv "$work/out" "bits/vertex"
+contains encode-names-coding "$work/out" "indexed coding"
+check decode-obj 0 "$qmc" decode "$work/torus.qmc" "$work/back.obj"
+check decode-ply 0 "$qmc" decode "$work/torus.qmc" "$work/back.ply"
+check decode-off 0 "$qmc" decode "$work/torus.qmc" "$work/back.off"
+check verify 0 "$qmc" verify "$work/torus.obj" "$work/torus.qmc"
+contains verify-ok "$work/out" "verify: OK"
+check verify-decoded-copy 0 "$qmc" encode "$work/back.ply" "$work/again.qmc" --bits 20
+check info 0 "$qmc" info "$work/torus.qmc"
+contains info-chunks "$work/out" "CONN"
+contains info-method "$work/out" "indexed"
+check info-json 0 "$qmc" info --json "$work/torus.qmc"
+contains info-json-valid "$work/out" '"connectivity":"indexed"'
+check soup-encode 0 "$qmc" encode "$work/soup.off" "$work/soup.qmc" -q 16 --text note=soup --quiet
+check soup-verify 0 "$qmc" verify "$work/soup.off" "$work/soup.qmc"
+check verify-wrong-mesh 1 "$qmc" verify "$work/soup.off" "$work/torus.qmc"
+check help 0 "$qmc" --help
+check encode-help 0 "$qmc" encode --help
+contains help-default-bits "$work/out" "1/4096"
+check no-args 2 "$qmc"
+check unknown-command 2 "$qmc" frobnicate
+check bad-bits 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --bits 40
+check unknown-option 2 "$qmc" decode "$work/torus.qmc" "$work/x.obj" --fast
+check missing-input 3 "$qmc" encode "$work/nope.obj" "$work/x.qmc"
+contains missing-input-message "$work/err" "cannot open"
+head -c 40 "$work/torus.qmc" >"$work/cut.qmc"
+check truncated 3 "$qmc" decode "$work/cut.qmc" "$work/x.obj"
+contains truncated-message "$work/err" "truncated"
+check info-truncated 3 "$qmc" info "$work/cut.qmc"
+printf 'v 0 0 0\nv 1 0 0\nf 1 2 7\n' >"$work/bad.obj"
+check bad-index 3 "$qmc" encode "$work/bad.obj" "$work/x.qmc"
+check bad-output-ext 3 "$qmc" decode "$work/torus.qmc" "$work/x.xyz"
+echo "cli: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,140 @@
+// Encoder behaviour: input validation (never a silent drop), the vertex
+// relabelling of spec 5.2.1, and the quantization bound of spec 6.2.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "mesh_generators.h"
+#include "qmc/decoder.h"
+#include "qmc/encoder.h"
+#include "roundtrip_check.h"
+
+namespace qmc {
+namespace {
+
+Mesh triangle_pair() {
+  Mesh m;
+  m.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 5, 5, 5};
+  m.face_sizes = {3, 3};
+  m.corners = {2, 0, 1, 0, 2, 3};  // vertex 4 unreferenced
+  return m;
+}
+
+DecodedFile round_trip(const Mesh& m, int bits = 12) {
+  EncodeOptions o;
+  o.position_bits = bits;
+  std::vector<uint8_t> bytes;
+  EXPECT_TRUE(encode(m, o, &bytes).ok());
+  DecodedFile d;
+  EXPECT_TRUE(decode(bytes.data(), bytes.size(), &d).ok());
+  return d;
+}
+
+TEST(Encoder, RelabelsVerticesByFirstReference) {
+  // Spec 5.2.1: faces (2 0 1) (0 2 3) -> labels 2->0, 0->1, 1->2, 3->3, unreferenced 4->4.
+  const DecodedFile d = round_trip(triangle_pair());
+  EXPECT_EQ(d.mesh.corners, (std::vector<uint32_t>{0, 1, 2, 1, 0, 3}));
+  EXPECT_EQ(d.mesh.face_sizes, (std::vector<uint32_t>{3, 3}));
+  ASSERT_EQ(d.mesh.vertex_count(), 5u);
+  EXPECT_FLOAT_EQ(d.mesh.positions[0], 1.f);  // old vertex 2 = (1, 1, 0)
+  EXPECT_FLOAT_EQ(d.mesh.positions[1], 1.f);
+  EXPECT_FLOAT_EQ(d.mesh.positions[12], 5.f);  // unreferenced vertex last
+}
+
+TEST(Encoder, StatsNameTheFileVertexOrder) {
+  std::vector<uint8_t> bytes;
+  EncodeStats stats;
+  ASSERT_TRUE(encode(triangle_pair(), EncodeOptions{}, &bytes, &stats).ok());
+  EXPECT_EQ(stats.file_vertex, (std::vector<uint32_t>{2, 0, 1, 3, 4}));
+  EXPECT_EQ(stats.total_bytes, bytes.size());
+  uint64_t sum = 8;
+  for (const ChunkStats& c : stats.chunks) sum += c.bytes;
+  EXPECT_EQ(sum, bytes.size());
+}
+
+TEST(Encoder, RejectsWhatItCannotRepresent) {
+  std::vector<uint8_t> out;
+  Mesh m = triangle_pair();
+  m.positions[4] = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_EQ(encode(m, {}, &out).code(), ErrorCode::kInvalidArgument);
+  m = triangle_pair();
+  m.positions[4] = std::numeric_limits<float>::infinity();
+  EXPECT_EQ(encode(m, {}, &out).code(), ErrorCode::kInvalidArgument);
+  m = triangle_pair();
+  m.face_sizes = {2, 4};
+  EXPECT_EQ(encode(m, {}, &out).code(), ErrorCode::kInvalidArgument);
+  m = triangle_pair();
+  m.corners[3] = 5;
+  EXPECT_EQ(encode(m, {}, &out).code(), ErrorCode::kInvalidArgument);
+  m = triangle_pair();
+  m.corners.pop_back();
+  EXPECT_EQ(encode(m, {}, &out).code(), ErrorCode::kInvalidArgument);
+  m = triangle_pair();
+  m.positions.pop_back();
+  EXPECT_EQ(encode(m, {}, &out).code(), ErrorCode::kInvalidArgument);
+  for (int bits : {0, 31, -1}) {
+    EncodeOptions o;
+    o.position_bits = bits;
+    EXPECT_EQ(encode(triangle_pair(), o, &out).code(), ErrorCode::kInvalidArgument) << bits;
+  }
+}
+
+TEST(Encoder, KeepsDegenerateFacesExactly) {
+  Mesh m = triangle_pair();
+  m.face_sizes = {3, 3, 4};
+  m.corners = {2, 0, 1, 0, 2, 3, 1, 1, 1, 1};  // a face repeating one vertex
+  const DecodedFile d = round_trip(m);
+  EXPECT_TRUE(tools::check_round_trip(m, d).ok());
+}
+
+TEST(Encoder, EveryBitDepthStaysWithinHalfAStep) {
+  const Mesh sphere = tools::make_quad_sphere(6);
+  for (int bits = kMinPositionBits; bits <= kMaxPositionBits; ++bits) {
+    const DecodedFile d = round_trip(sphere, bits);
+    const tools::RoundTripReport r = tools::check_round_trip(sphere, d);
+    EXPECT_TRUE(r.ok()) << bits << " bits: " << r.position_mismatch;
+  }
+}
+
+TEST(Encoder, DefaultBitsKeepErrorBelowOne4096thOfTheLargestSide) {
+  tools::RandomSoupOptions o;
+  o.vertices = 3000;
+  o.faces = 2000;
+  const Mesh m = tools::make_random_soup(11, o);
+  const tools::RoundTripReport r = tools::check_round_trip(m, round_trip(m));
+  ASSERT_TRUE(r.ok());
+  EXPECT_LT(r.max_error, r.max_bbox_side / 4096);
+}
+
+TEST(Encoder, DequantizationFollowsSection64) {
+  // 2 bits over [0, 1]: steps of 1/3, computed in binary64 and rounded once.
+  Mesh m;
+  m.positions = {0, 0, 0, 1.f / 3, 0, 0, 2.f / 3, 0, 0, 1, 0, 0};
+  const DecodedFile d = round_trip(m, 2);
+  EXPECT_EQ(d.quantized[3], 1u);
+  EXPECT_EQ(d.mesh.positions[3], float(0.0 + 1.0 * (1.0 / 3.0)));
+  EXPECT_EQ(d.mesh.positions[6], float(0.0 + 2.0 * (1.0 / 3.0)));
+  EXPECT_EQ(d.mesh.positions[9], 1.f);
+}
+
+TEST(Encoder, EmptyMeshAndPointCloud) {
+  EXPECT_EQ(round_trip(Mesh{}).mesh.vertex_count(), 0u);
+  Mesh points;
+  points.positions = {1, 2, 3, 4, 5, 6};
+  const DecodedFile d = round_trip(points);
+  EXPECT_EQ(d.mesh.vertex_count(), 2u);
+  EXPECT_EQ(d.mesh.face_count(), 0u);
+  EXPECT_TRUE(tools::check_round_trip(points, d).ok());
+}
+
+TEST(Encoder, OutputIsDeterministic) {
+  const Mesh m = tools::make_torus(20, 10);
+  std::vector<uint8_t> a, b;
+  ASSERT_TRUE(encode(m, {}, &a).ok());
+  ASSERT_TRUE(encode(m, {}, &b).ok());
+  EXPECT_EQ(a, b);
+}
+
+}  // namespace
+}  // namespace qmc

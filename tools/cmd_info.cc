@@ -1,0 +1,125 @@
+// qmc info: what a .qmc file holds and where its bytes go.
+#include <cstdio>
+#include <map>
+#include <string>
+
+#include "cli_common.h"
+#include "commands.h"
+#include "qmc/decoder.h"
+
+namespace qmc::cli {
+namespace {
+
+const char kHelp[] =
+    "usage: qmc info IN.qmc [--json]\n"
+    "\n"
+    "Lists the chunks of IN.qmc with their sizes and bits per vertex, the format\n"
+    "version, the connectivity coding and the quantization. A file that fails to\n"
+    "decode is listed up to the failing chunk, then the error (exit code 3).\n";
+
+std::string json_escape(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += char(c);
+    } else if (c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += char(c);
+    }
+  }
+  return out;
+}
+
+std::map<uint32_t, size_t> degree_histogram(const Mesh& mesh) {
+  std::map<uint32_t, size_t> h;
+  for (uint32_t d : mesh.face_sizes) ++h[d];
+  return h;
+}
+
+void print_text(const std::string& path, const DecodedFile& f, uint64_t size, const Status& status) {
+  const double v = f.mesh.vertex_count() ? double(f.mesh.vertex_count()) : 1.0;
+  std::printf("file         %s, %llu bytes, format %u.%u\n", path.c_str(), static_cast<unsigned long long>(size),
+              f.version_major, f.version_minor);
+  std::printf("mesh         %zu vertices, %zu faces", f.mesh.vertex_count(), f.mesh.face_count());
+  const char* sep = " (";
+  for (const auto& [degree, count] : degree_histogram(f.mesh)) {
+    std::printf("%s%zu of degree %u", sep, count, degree);
+    sep = ", ";
+  }
+  std::printf("%s\n", f.mesh.face_count() ? ")" : "");
+  std::printf("connectivity %s\n", connectivity_method_name(f.method));
+  if (f.quantization.bits)
+    std::printf("positions    %d bits/axis, box (%g %g %g) - (%g %g %g)\n", f.quantization.bits,
+                f.quantization.min[0], f.quantization.min[1], f.quantization.min[2], f.quantization.max[0],
+                f.quantization.max[1], f.quantization.max[2]);
+  std::printf("chunks       type  offset      bytes  bits/vertex\n");
+  for (const ChunkInfo& c : f.chunks)
+    std::printf("             %-4s %7llu %10llu %12.2f  %s%s\n", chunk_type_name(c.type).c_str(),
+                static_cast<unsigned long long>(c.offset), static_cast<unsigned long long>(c.length) + 12,
+                8.0 * (double(c.length) + 12) / v, c.critical ? "critical" : "ancillary",
+                c.known ? "" : ", unknown: skipped");
+  std::printf("total        %.2f bits/vertex (signature included)\n", 8.0 * double(size) / v);
+  for (const std::string& t : f.texts) std::printf("text         %s\n", t.c_str());
+  if (!status.ok()) std::printf("error        %s\n", status.to_string().c_str());
+}
+
+void print_json(const std::string& path, const DecodedFile& f, uint64_t size, const Status& status) {
+  std::printf("{\"file\":\"%s\",\"bytes\":%llu,\"version\":\"%u.%u\",\"vertices\":%zu,\"faces\":%zu,",
+              json_escape(path).c_str(), static_cast<unsigned long long>(size), f.version_major, f.version_minor,
+              f.mesh.vertex_count(), f.mesh.face_count());
+  std::printf("\"connectivity\":\"%s\",\"position_bits\":%d,", connectivity_method_name(f.method),
+              f.quantization.bits);
+  std::printf("\"bits_per_vertex\":%.4f,\"chunks\":[",
+              f.mesh.vertex_count() ? 8.0 * double(size) / double(f.mesh.vertex_count()) : 0.0);
+  for (size_t i = 0; i < f.chunks.size(); ++i) {
+    const ChunkInfo& c = f.chunks[i];
+    std::printf("%s{\"type\":\"%s\",\"offset\":%llu,\"bytes\":%llu,\"critical\":%s,\"known\":%s}", i ? "," : "",
+                json_escape(chunk_type_name(c.type)).c_str(), static_cast<unsigned long long>(c.offset),
+                static_cast<unsigned long long>(c.length) + 12, c.critical ? "true" : "false",
+                c.known ? "true" : "false");
+  }
+  std::printf("],\"texts\":[");
+  for (size_t i = 0; i < f.texts.size(); ++i)
+    std::printf("%s\"%s\"", i ? "," : "", json_escape(f.texts[i]).c_str());
+  std::printf("],\"error\":%s%s%s}\n", status.ok() ? "" : "\"", status.ok() ? "null" : json_escape(status.to_string()).c_str(),
+              status.ok() ? "" : "\"");
+}
+
+}  // namespace
+
+int run_info(int argc, char** argv) {
+  std::string input;
+  bool json = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      std::fputs(kHelp, stdout);
+      return kExitOk;
+    } else if (arg == "--json") {
+      json = true;
+    } else if (!arg.empty() && arg[0] == '-') {
+      return usage_error("info", "unknown option '" + arg + "'");
+    } else if (input.empty()) {
+      input = arg;
+    } else {
+      return usage_error("info", "too many arguments");
+    }
+  }
+  if (input.empty()) return usage_error("info", "needs IN.qmc");
+  std::vector<uint8_t> bytes;
+  if (Status s = read_file(input, &bytes); !s.ok()) return fail("info", s);
+  StreamDecoder decoder;
+  Status status = decoder.feed(bytes.data(), bytes.size());
+  if (status.ok()) status = decoder.finish();
+  if (json)
+    print_json(input, decoder.file(), bytes.size(), status);
+  else
+    print_text(input, decoder.file(), bytes.size(), status);
+  return status.ok() ? kExitOk : kExitError;
+}
+
+}  // namespace qmc::cli

@@ -1,0 +1,57 @@
+// qmc tools: synthetic meshes for tests, fuzzing seeds and benchmarks.
+//
+// Every generator is deterministic and platform-independent: positions come
+// from integer arithmetic or from IEEE operations whose results do not depend
+// on the compiler (correctly rounded +, *, /, sqrt on values where fused
+// multiply-add cannot change the outcome), and the random soup uses its own
+// integer RNG rather than std:: distributions, whose output varies between
+// standard libraries. The same call gives the same bits everywhere.
+#pragma once
+
+#include <cstdint>
+
+#include "qmc/mesh.h"
+
+namespace qmc::tools {
+
+// Regular tetrahedron inscribed in the cube [-1,1]^3; 4 triangles, outward.
+qmc::Mesh make_tetrahedron();
+
+// Cube [-1,1]^3: 8 vertices, 6 quads, outward orientation.
+qmc::Mesh make_cube();
+
+// Cube subdivided n x n per side, projected to the unit sphere: all quads,
+// closed, genus 0, 6n^2+2 vertices (shared vertices welded), 6n^2 faces,
+// outward. n < 1 is treated as 1.
+qmc::Mesh make_quad_sphere(int n);
+
+// Torus around the z axis: `major` x `minor` vertices and quads, genus 1,
+// outward. major and minor below 3 are treated as 3.
+qmc::Mesh make_torus(int major, int minor, float R = 1.f, float r = 0.35f);
+
+// Open nx x ny quad grid over [-1,1]^2 (one boundary loop), z a small smooth
+// bump, faces counter-clockwise seen from +z. Sizes below 1 are treated as 1.
+qmc::Mesh make_grid(int nx, int ny);
+
+// n-sided prism: n quads around, two n-gon caps; 2n vertices, outward.
+// n < 3 is treated as 3.
+qmc::Mesh make_prism(int n);
+
+struct RandomSoupOptions {
+  uint32_t vertices = 100;  // total vertex count
+  uint32_t faces = 150;
+  uint32_t min_degree = 3, max_degree = 8;  // corners per face (min raised to 3, max to min)
+  uint32_t unreferenced = 5;                // vertices no face uses (capped so faces have a vertex)
+  bool repeated_corners = true;             // some faces list a vertex twice
+};
+
+// Arbitrary polygon soup: positions on a 2^-23 grid in [-1,1)^3 (some
+// duplicated), faces of random degree whose corners are random vertices.
+// Exactly `unreferenced` vertices are unused whenever the faces have enough
+// corners to use all the others. With repeated_corners, face 0 and about a
+// fifth of the others contain one vertex twice; without, every face's corners
+// are distinct (as long as enough vertices exist). options.vertices == 0 gives
+// an empty mesh.
+qmc::Mesh make_random_soup(uint64_t seed, const RandomSoupOptions& options);
+
+}  // namespace qmc::tools

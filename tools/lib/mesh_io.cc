@@ -1,0 +1,1639 @@
+// qmc tools: OBJ, OFF, PLY and STL readers and OBJ, OFF, PLY writers.
+//
+// Every reader keeps faces and vertices exactly as the file lists them: no
+// welding (except STL, which has no shared vertices to begin with), no
+// removal of degenerate or non-manifold faces, no reordering.
+#include "mesh_io.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <system_error>
+#include <unordered_map>
+#include <utility>
+
+namespace qmc::tools {
+namespace {
+
+using qmc::ErrorCode;
+using qmc::Mesh;
+using qmc::Status;
+
+constexpr uint64_t kMaxIndex = std::numeric_limits<uint32_t>::max();
+
+Status invalid(std::string message) { return Status(ErrorCode::kInvalidArgument, std::move(message)); }
+
+// "bunny.obj line 12: " -- the prefix of every text-format error.
+std::string at_line(std::string_view name, uint64_t line) {
+  return std::string(name) + " line " + std::to_string(line) + ": ";
+}
+
+// Tokens from a file go into messages; keep them short and printable so a
+// binary file misread as text cannot flood the terminal.
+std::string quoted(std::string_view token) {
+  constexpr size_t kMaxShown = 40;
+  std::string shown = "'";
+  for (size_t i = 0; i < token.size() && i < kMaxShown; ++i) {
+    unsigned char c = static_cast<unsigned char>(token[i]);
+    shown += (c >= 0x20 && c < 0x7f) ? static_cast<char>(c) : '?';
+  }
+  if (token.size() > kMaxShown) shown += "...";
+  return shown + "'";
+}
+
+char lower(char c) { return (c >= 'A' && c <= 'Z') ? static_cast<char>(c - 'A' + 'a') : c; }
+
+std::string to_lower(std::string_view text) {
+  std::string result(text);
+  for (char& c : result) c = lower(c);
+  return result;
+}
+
+bool equals_ignoring_case(std::string_view a, std::string_view b) {
+  if (a.size() != b.size()) return false;
+  for (size_t i = 0; i < a.size(); ++i) {
+    if (lower(a[i]) != lower(b[i])) return false;
+  }
+  return true;
+}
+
+bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\v' || c == '\f'; }
+
+std::string_view trim(std::string_view text) {
+  while (!text.empty() && is_space(text.front())) text.remove_prefix(1);
+  while (!text.empty() && is_space(text.back())) text.remove_suffix(1);
+  return text;
+}
+
+std::string_view strip_comment(std::string_view line) { return line.substr(0, line.find('#')); }
+
+std::string_view strip_utf8_bom(std::string_view text) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  return text;
+}
+
+void split_tokens(std::string_view line, std::vector<std::string_view>* tokens) {
+  tokens->clear();
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && is_space(line[i])) ++i;
+    size_t start = i;
+    while (i < line.size() && !is_space(line[i])) ++i;
+    if (i > start) tokens->push_back(line.substr(start, i - start));
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Numbers. std::from_chars is locale-independent and correctly rounded, so
+// text written with "%.9g" reads back bit-exact; it does not accept the
+// leading '+' that some writers emit, so that is dropped first.
+
+std::string_view drop_plus(std::string_view token) {
+  if (token.size() > 1 && token[0] == '+' && token[1] != '+' && token[1] != '-') token.remove_prefix(1);
+  return token;
+}
+
+enum class Parse { kOk, kUnparsable, kOutOfRange };
+
+template <class Number>
+Parse parse_whole(std::string_view token, Number* out) {
+  token = drop_plus(token);
+  const char* end = token.data() + token.size();
+  auto [ptr, ec] = std::from_chars(token.data(), end, *out);
+  if (ec == std::errc::invalid_argument || ptr != end) return Parse::kUnparsable;
+  if (ec == std::errc::result_out_of_range) return Parse::kOutOfRange;
+  return Parse::kOk;
+}
+
+bool parse_int(std::string_view token, int64_t* out) { return parse_whole(token, out) == Parse::kOk; }
+
+bool parse_count(std::string_view token, uint64_t* out) {
+  return !token.empty() && token[0] != '-' && parse_whole(token, out) == Parse::kOk;
+}
+
+Parse parse_double(std::string_view token, double* out) {
+  double value = 0;
+  Parse result = parse_whole(token, &value);
+  if (result == Parse::kOk) *out = value;
+  return result;
+}
+
+// Parses straight to float (not via double) so the result is the float
+// nearest to the decimal text. libstdc++ reports float underflow as out of
+// range; such values are retried through double, which rounds them to a
+// subnormal or zero as the text intends.
+Parse parse_float(std::string_view token, float* out) {
+  float value = 0;
+  Parse result = parse_whole(token, &value);
+  if (result == Parse::kOk) {
+    *out = value;
+    return result;
+  }
+  double wide = 0;
+  if (result == Parse::kOutOfRange && parse_double(token, &wide) == Parse::kOk && std::fabs(wide) <= FLT_MAX) {
+    *out = static_cast<float>(wide);
+    return Parse::kOk;
+  }
+  return result;
+}
+
+// A coordinate must end up a finite float: the encoder cannot carry NaN or
+// infinity, so the reader rejects them where the message can name the line.
+// Returns an empty string on success, else the problem.
+std::string parse_coordinate(std::string_view token, float* out) {
+  switch (parse_float(token, out)) {
+    case Parse::kOk:
+      if (std::isfinite(*out)) return {};
+      return "non-finite coordinate " + quoted(token);
+    case Parse::kOutOfRange:
+      return "coordinate " + quoted(token) + " is outside the float range";
+    case Parse::kUnparsable:
+      break;
+  }
+  return "unparsable number " + quoted(token);
+}
+
+// Values the mesh does not keep (colours, normals, w) must still be numbers.
+bool is_number(std::string_view token) {
+  double ignored = 0;
+  return parse_double(token, &ignored) != Parse::kUnparsable;
+}
+
+// ---------------------------------------------------------------------------
+// Line and token iteration with 1-based line numbers.
+
+class LineReader {
+ public:
+  explicit LineReader(std::string_view text) : text_(text) {}
+
+  bool next(std::string_view* line) {
+    if (pos_ >= text_.size()) return false;
+    size_t end = text_.find('\n', pos_);
+    if (end == std::string_view::npos) end = text_.size();
+    *line = text_.substr(pos_, end - pos_);
+    if (!line->empty() && line->back() == '\r') line->remove_suffix(1);
+    pos_ = end + 1;
+    ++line_;
+    return true;
+  }
+  uint64_t line_number() const { return line_; }
+  // Offset just past the last line returned (and its newline).
+  size_t position() const { return std::min(pos_, text_.size()); }
+  size_t bytes_left() const { return text_.size() - position(); }
+
+ private:
+  std::string_view text_;
+  size_t pos_ = 0;
+  uint64_t line_ = 0;
+};
+
+// Whitespace-separated tokens across lines (ASCII PLY data, ASCII STL).
+class TokenStream {
+ public:
+  TokenStream(std::string_view text, uint64_t first_line)
+      : text_(text), line_(first_line), token_line_(first_line) {}
+
+  bool next(std::string_view* token) {
+    skip_space();
+    if (pos_ >= text_.size()) return false;
+    token_line_ = line_;
+    size_t start = pos_;
+    while (pos_ < text_.size() && !is_space(text_[pos_])) ++pos_;
+    *token = text_.substr(start, pos_ - start);
+    return true;
+  }
+  void skip_line() {
+    while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+  }
+  bool at_end() {
+    skip_space();
+    return pos_ >= text_.size();
+  }
+  // Line of the last token returned (so "data ends early" points at the
+  // last thing that was there).
+  uint64_t line() const { return token_line_; }
+  size_t bytes_left() const { return text_.size() - pos_; }
+
+ private:
+  void skip_space() {
+    while (pos_ < text_.size() && is_space(text_[pos_])) {
+      if (text_[pos_] == '\n') ++line_;
+      ++pos_;
+    }
+  }
+
+  std::string_view text_;
+  size_t pos_ = 0;
+  uint64_t line_;
+  uint64_t token_line_;
+};
+
+// ---------------------------------------------------------------------------
+// Warnings are tallied by kind so a file with a million normals yields one
+// line ("ignored normal (vn) lines: 1000000"), not a million.
+
+class WarningTally {
+ public:
+  void add(std::string_view kind, uint64_t count = 1) {
+    if (count == 0) return;
+    for (auto& entry : counted_) {
+      if (entry.first == kind) {
+        entry.second += count;
+        return;
+      }
+    }
+    counted_.emplace_back(std::string(kind), count);
+  }
+  size_t kinds() const { return counted_.size(); }
+  // A sentence that already carries its counts.
+  void note(std::string sentence) { notes_.push_back(std::move(sentence)); }
+
+  void append_to(std::vector<std::string>* out) const {
+    if (out == nullptr) return;
+    for (const auto& entry : counted_) out->push_back(entry.first + ": " + std::to_string(entry.second));
+    for (const auto& sentence : notes_) out->push_back(sentence);
+  }
+
+ private:
+  std::vector<std::pair<std::string, uint64_t>> counted_;
+  std::vector<std::string> notes_;
+};
+
+// Reserves for `claimed` items, but no more than the remaining input could
+// possibly hold: a header claiming 2^40 vertices must not allocate before the
+// data is there.
+template <class T>
+void reserve_bounded(std::vector<T>* items, uint64_t claimed, uint64_t bytes_left, uint64_t min_bytes_per_item) {
+  uint64_t justified = bytes_left / std::max<uint64_t>(min_bytes_per_item, 1);
+  items->reserve(items->size() + static_cast<size_t>(std::min(claimed, justified)));
+}
+
+// ---------------------------------------------------------------------------
+// OBJ
+
+class ObjParser {
+ public:
+  ObjParser(std::string_view name, WarningTally* warnings) : name_(name), warnings_(warnings) {}
+
+  Status parse(std::string_view text, Mesh* mesh) {
+    LineReader lines(text);
+    std::string joined;
+    std::string_view statement;
+    uint64_t line = 0;
+    while (next_statement(&lines, &joined, &statement, &line)) {
+      Status status = parse_statement(strip_comment(statement), line, mesh);
+      if (!status.ok()) return status;
+    }
+    warnings_->add("ignored texture coordinate indices on face corners", texture_refs_);
+    warnings_->add("ignored normal indices on face corners", normal_refs_);
+    if (largest_index_ != kNoIndex && largest_index_ >= mesh->vertex_count()) {
+      return invalid(at_line(name_, largest_index_line_) + "vertex index " + std::to_string(largest_index_ + 1) +
+                     " is out of range (the file has " + std::to_string(mesh->vertex_count()) + " vertices)");
+    }
+    return Status::Ok();
+  }
+
+ private:
+  static constexpr uint64_t kNoIndex = std::numeric_limits<uint64_t>::max();
+  static constexpr size_t kMaxUnknownKinds = 16;
+
+  // A trailing backslash continues a statement on the next line; errors
+  // report the line the statement starts on.
+  static bool next_statement(LineReader* lines, std::string* joined, std::string_view* statement,
+                             uint64_t* first_line) {
+    std::string_view line;
+    if (!lines->next(&line)) return false;
+    *first_line = lines->line_number();
+    if (!ends_with_backslash(line)) {
+      *statement = line;
+      return true;
+    }
+    joined->clear();
+    do {
+      std::string_view body = trim(line);
+      body.remove_suffix(1);
+      joined->append(body);
+      joined->push_back(' ');
+    } while (lines->next(&line) && ends_with_backslash(line));
+    if (!ends_with_backslash(line)) joined->append(line);
+    *statement = *joined;
+    return true;
+  }
+
+  static bool ends_with_backslash(std::string_view line) {
+    line = trim(line);
+    return !line.empty() && line.back() == '\\';
+  }
+
+  Status parse_statement(std::string_view statement, uint64_t line, Mesh* mesh) {
+    split_tokens(statement, &tokens_);
+    if (tokens_.empty()) return Status::Ok();
+    std::string_view keyword = tokens_[0];
+    if (keyword == "v") return parse_vertex(line, mesh);
+    if (keyword == "f") return parse_face(line, mesh);
+    if (keyword == "vt") {
+      warnings_->add("ignored texture coordinate (vt) lines");
+    } else if (keyword == "vn") {
+      warnings_->add("ignored normal (vn) lines");
+    } else if (keyword == "vp") {
+      warnings_->add("ignored parameter-space vertex (vp) lines");
+    } else if (keyword == "l") {
+      warnings_->add("ignored polyline (l) elements");
+    } else if (keyword == "p") {
+      warnings_->add("ignored point (p) elements");
+    } else if (keyword == "g" || keyword == "o" || keyword == "s" || keyword == "usemtl" || keyword == "mtllib") {
+      // Names of groups, objects, smoothing groups and materials: no geometry.
+    } else if (unknown_kinds_ < kMaxUnknownKinds) {
+      size_t before = warnings_->kinds();
+      warnings_->add("ignored lines with unknown keyword " + quoted(keyword));
+      if (warnings_->kinds() > before) ++unknown_kinds_;
+    } else {
+      warnings_->add("ignored lines with other unknown keywords");
+    }
+    return Status::Ok();
+  }
+
+  Status parse_vertex(uint64_t line, Mesh* mesh) {
+    size_t values = tokens_.size() - 1;
+    if (values < 3) {
+      return invalid(at_line(name_, line) + "vertex has " + std::to_string(values) + " coordinate(s); 3 are needed");
+    }
+    if (mesh->vertex_count() >= kMaxIndex) return invalid(at_line(name_, line) + "more than 2^32-1 vertices");
+    for (size_t i = 1; i <= 3; ++i) {
+      float value = 0;
+      std::string problem = parse_coordinate(tokens_[i], &value);
+      if (!problem.empty()) return invalid(at_line(name_, line) + problem + " in vertex");
+      mesh->positions.push_back(value);
+    }
+    for (size_t i = 4; i < tokens_.size(); ++i) {
+      if (!is_number(tokens_[i])) return invalid(at_line(name_, line) + "unparsable number " + quoted(tokens_[i]));
+    }
+    if (values == 4) {
+      warnings_->add("ignored w (homogeneous weight) values on v lines");
+    } else if (values == 6 || values == 7) {
+      warnings_->add("ignored per-vertex colours on v lines");
+    } else if (values > 3) {
+      warnings_->add("ignored extra values on v lines");
+    }
+    return Status::Ok();
+  }
+
+  Status parse_face(uint64_t line, Mesh* mesh) {
+    size_t corners = tokens_.size() - 1;
+    if (corners < 3) {
+      return invalid(at_line(name_, line) + "face has " + std::to_string(corners) +
+                     " corner(s); at least 3 are needed");
+    }
+    for (size_t i = 1; i < tokens_.size(); ++i) {
+      uint32_t index = 0;
+      Status status = parse_corner(tokens_[i], line, mesh->vertex_count(), &index);
+      if (!status.ok()) return status;
+      mesh->corners.push_back(index);
+    }
+    mesh->face_sizes.push_back(static_cast<uint32_t>(corners));
+    return Status::Ok();
+  }
+
+  // Corner forms: i, i/t, i/t/n, i//n. Texture and normal references are
+  // checked for syntax and counted; the mesh has nowhere to keep them.
+  Status parse_corner(std::string_view token, uint64_t line, size_t vertices_so_far, uint32_t* index) {
+    size_t slash = token.find('/');
+    std::string_view vertex = token.substr(0, slash);
+    if (slash != std::string_view::npos) {
+      std::string_view rest = token.substr(slash + 1);
+      size_t second = rest.find('/');
+      std::string_view texture = rest.substr(0, second);
+      bool has_normal = second != std::string_view::npos;
+      std::string_view normal = has_normal ? rest.substr(second + 1) : std::string_view();
+      int64_t ignored = 0;
+      bool texture_ok = texture.empty() ? has_normal : parse_int(texture, &ignored);
+      bool normal_ok = !has_normal || parse_int(normal, &ignored);
+      if (!texture_ok || !normal_ok) return invalid(at_line(name_, line) + "malformed face corner " + quoted(token));
+      if (!texture.empty()) ++texture_refs_;
+      if (has_normal) ++normal_refs_;
+    }
+    int64_t value = 0;
+    if (!parse_int(vertex, &value)) return invalid(at_line(name_, line) + "unparsable vertex index " + quoted(token));
+    if (value == 0) return invalid(at_line(name_, line) + "vertex index 0 is invalid (OBJ indices start at 1)");
+    if (value < 0) {
+      // Relative: -1 is the most recent vertex.
+      int64_t resolved = static_cast<int64_t>(vertices_so_far) + value;
+      if (resolved < 0) {
+        return invalid(at_line(name_, line) + "relative vertex index " + std::to_string(value) +
+                       " reaches before the first vertex (" + std::to_string(vertices_so_far) + " so far)");
+      }
+      *index = static_cast<uint32_t>(resolved);
+      return Status::Ok();
+    }
+    uint64_t zero_based = static_cast<uint64_t>(value) - 1;
+    if (zero_based >= kMaxIndex) {
+      return invalid(at_line(name_, line) + "vertex index " + std::to_string(value) + " is out of range");
+    }
+    // Positive indices may refer ahead; the largest is checked at the end.
+    if (largest_index_ == kNoIndex || zero_based > largest_index_) {
+      largest_index_ = zero_based;
+      largest_index_line_ = line;
+    }
+    *index = static_cast<uint32_t>(zero_based);
+    return Status::Ok();
+  }
+
+  std::string_view name_;
+  WarningTally* warnings_;
+  std::vector<std::string_view> tokens_;
+  uint64_t texture_refs_ = 0;
+  uint64_t normal_refs_ = 0;
+  size_t unknown_kinds_ = 0;
+  uint64_t largest_index_ = kNoIndex;
+  uint64_t largest_index_line_ = 0;
+};
+
+// ---------------------------------------------------------------------------
+// OFF
+
+// Header keyword [ST][C][N][4][n]OFF, per the Geomview OFF description.
+struct OffKind {
+  bool texture = false;
+  bool colour = false;
+  bool normal = false;
+  bool homogeneous = false;
+  bool dimension = false;
+};
+
+bool parse_off_keyword(std::string_view token, OffKind* kind) {
+  auto take = [&token](std::string_view prefix) {
+    if (token.substr(0, prefix.size()) != prefix) return false;
+    token.remove_prefix(prefix.size());
+    return true;
+  };
+  kind->texture = take("ST");
+  kind->colour = take("C");
+  kind->normal = take("N");
+  kind->homogeneous = take("4");
+  kind->dimension = take("n");
+  return token == "OFF";
+}
+
+class OffParser {
+ public:
+  OffParser(std::string_view text, std::string_view name, WarningTally* warnings)
+      : lines_(text), name_(name), warnings_(warnings) {}
+
+  Status parse(Mesh* mesh) {
+    uint64_t vertex_count = 0;
+    uint64_t face_count = 0;
+    Status status = parse_header(&vertex_count, &face_count);
+    if (status.ok()) status = parse_vertices(vertex_count, mesh);
+    if (status.ok()) status = parse_faces(face_count, mesh);
+    if (!status.ok()) return status;
+    uint64_t trailing = 0;
+    while (next_content()) ++trailing;
+    warnings_->add("ignored lines after the last OFF face", trailing);
+    return Status::Ok();
+  }
+
+ private:
+  // Next line with anything left after removing '#' comments.
+  bool next_content() {
+    std::string_view line;
+    while (lines_.next(&line)) {
+      split_tokens(strip_comment(line), &tokens_);
+      if (!tokens_.empty()) return true;
+    }
+    return false;
+  }
+
+  Status error(const std::string& problem) const { return invalid(at_line(name_, lines_.line_number()) + problem); }
+
+  // The keyword is optional; the counts may follow it on the same line.
+  Status parse_header(uint64_t* vertex_count, uint64_t* face_count) {
+    if (!next_content()) return invalid(std::string(name_) + ": empty file, expected an OFF header");
+    size_t first = 0;
+    if (parse_off_keyword(tokens_[0], &kind_)) {
+      first = 1;
+      if (tokens_.size() > 1 && tokens_[1] == "BINARY") {
+        return error("binary OFF is not supported; convert the file to ASCII OFF");
+      }
+      if (kind_.homogeneous) return error("4OFF (homogeneous coordinates) is not supported");
+    } else if (!is_number(tokens_[0])) {
+      return error("expected an OFF header keyword, found " + quoted(tokens_[0]));
+    }
+    auto refill = [&]() {
+      if (first < tokens_.size()) return true;
+      first = 0;
+      return next_content();
+    };
+    if (kind_.dimension) {
+      if (!refill()) return error("file ends before the nOFF dimension");
+      int64_t dimension = 0;
+      if (!parse_int(tokens_[first], &dimension)) return error("unparsable dimension " + quoted(tokens_[first]));
+      if (dimension != 3) return error("nOFF with dimension " + std::to_string(dimension) + " is not supported");
+      ++first;
+    }
+    if (!refill()) return error("file ends before the vertex and face counts");
+    size_t counts = tokens_.size() - first;
+    if (counts < 2 || counts > 3) return error("expected 'vertices faces [edges]' counts");
+    uint64_t edges = 0;
+    if (!parse_count(tokens_[first], vertex_count) || !parse_count(tokens_[first + 1], face_count) ||
+        (counts == 3 && !parse_count(tokens_[first + 2], &edges))) {
+      return error("unparsable vertex, face or edge count");
+    }
+    if (*vertex_count > kMaxIndex) return error("more than 2^32-1 vertices");
+    return Status::Ok();
+  }
+
+  Status parse_vertices(uint64_t count, Mesh* mesh) {
+    // Shortest vertex line: "0 0 0\n".
+    reserve_bounded(&mesh->positions, count * 3, lines_.bytes_left() * 3, 6);
+    for (uint64_t v = 0; v < count; ++v) {
+      if (!next_content()) {
+        return error("file ends after " + std::to_string(v) + " of " + std::to_string(count) + " vertices");
+      }
+      if (tokens_.size() < 3) return error("vertex line has fewer than 3 coordinates");
+      for (size_t i = 0; i < 3; ++i) {
+        float value = 0;
+        std::string problem = parse_coordinate(tokens_[i], &value);
+        if (!problem.empty()) return error(problem + " in vertex");
+        mesh->positions.push_back(value);
+      }
+      for (size_t i = 3; i < tokens_.size(); ++i) {
+        if (!is_number(tokens_[i])) return error("unparsable number " + quoted(tokens_[i]));
+      }
+      if (tokens_.size() > 3) tally_vertex_extras();
+    }
+    return Status::Ok();
+  }
+
+  void tally_vertex_extras() {
+    if (kind_.normal) warnings_->add("ignored per-vertex normals (NOFF)");
+    if (kind_.colour) warnings_->add("ignored per-vertex colours (COFF)");
+    if (kind_.texture) warnings_->add("ignored per-vertex texture coordinates (STOFF)");
+    if (!kind_.normal && !kind_.colour && !kind_.texture) warnings_->add("ignored extra values on OFF vertex lines");
+  }
+
+  Status parse_faces(uint64_t count, Mesh* mesh) {
+    // Shortest face line: "3 0 0 0\n".
+    reserve_bounded(&mesh->face_sizes, count, lines_.bytes_left(), 8);
+    const uint64_t vertices = mesh->vertex_count();
+    for (uint64_t f = 0; f < count; ++f) {
+      if (!next_content()) {
+        return error("file ends after " + std::to_string(f) + " of " + std::to_string(count) + " faces");
+      }
+      int64_t corners = 0;
+      if (!parse_int(tokens_[0], &corners)) return error("unparsable face size " + quoted(tokens_[0]));
+      if (corners < 3) {
+        return error("face has " + std::to_string(corners) + " corner(s); at least 3 are needed");
+      }
+      if (static_cast<uint64_t>(corners) > tokens_.size() - 1) {
+        return error("face declares " + std::to_string(corners) + " corners but lists " +
+                     std::to_string(tokens_.size() - 1) + " values");
+      }
+      for (size_t i = 1; i <= static_cast<size_t>(corners); ++i) {
+        int64_t index = 0;
+        if (!parse_int(tokens_[i], &index)) return error("unparsable vertex index " + quoted(tokens_[i]));
+        if (index < 0 || static_cast<uint64_t>(index) >= vertices) {
+          return error("vertex index " + std::to_string(index) + " is out of range (the file has " +
+                       std::to_string(vertices) + " vertices)");
+        }
+        mesh->corners.push_back(static_cast<uint32_t>(index));
+      }
+      for (size_t i = static_cast<size_t>(corners) + 1; i < tokens_.size(); ++i) {
+        if (!is_number(tokens_[i])) return error("unparsable number " + quoted(tokens_[i]));
+      }
+      if (tokens_.size() > static_cast<size_t>(corners) + 1) warnings_->add("ignored face colours (OFF)");
+      mesh->face_sizes.push_back(static_cast<uint32_t>(corners));
+    }
+    return Status::Ok();
+  }
+
+  LineReader lines_;
+  std::string_view name_;
+  WarningTally* warnings_;
+  std::vector<std::string_view> tokens_;
+  OffKind kind_;
+};
+
+// ---------------------------------------------------------------------------
+// PLY header
+
+enum class PlyType : uint8_t { kInt8, kUint8, kInt16, kUint16, kInt32, kUint32, kFloat32, kFloat64 };
+enum class PlyFormat : uint8_t { kAscii, kBinaryLittleEndian, kBinaryBigEndian };
+
+bool parse_ply_type(std::string_view name, PlyType* type) {
+  static const struct {
+    const char* name;
+    PlyType type;
+  } kTypes[] = {
+      {"char", PlyType::kInt8},     {"int8", PlyType::kInt8},       {"uchar", PlyType::kUint8},
+      {"uint8", PlyType::kUint8},   {"short", PlyType::kInt16},     {"int16", PlyType::kInt16},
+      {"ushort", PlyType::kUint16}, {"uint16", PlyType::kUint16},   {"int", PlyType::kInt32},
+      {"int32", PlyType::kInt32},   {"uint", PlyType::kUint32},     {"uint32", PlyType::kUint32},
+      {"float", PlyType::kFloat32}, {"float32", PlyType::kFloat32}, {"double", PlyType::kFloat64},
+      {"float64", PlyType::kFloat64},
+  };
+  for (const auto& entry : kTypes) {
+    if (name == entry.name) {
+      *type = entry.type;
+      return true;
+    }
+  }
+  return false;
+}
+
+size_t ply_type_size(PlyType type) {
+  switch (type) {
+    case PlyType::kInt8:
+    case PlyType::kUint8:
+      return 1;
+    case PlyType::kInt16:
+    case PlyType::kUint16:
+      return 2;
+    case PlyType::kInt32:
+    case PlyType::kUint32:
+    case PlyType::kFloat32:
+      return 4;
+    case PlyType::kFloat64:
+      return 8;
+  }
+  return 8;
+}
+
+bool ply_type_is_integral(PlyType type) { return type != PlyType::kFloat32 && type != PlyType::kFloat64; }
+
+struct PlyProperty {
+  std::string name;
+  bool is_list = false;
+  PlyType count_type = PlyType::kUint8;
+  PlyType value_type = PlyType::kFloat32;
+};
+
+struct PlyElement {
+  std::string name;
+  uint64_t count = 0;
+  uint64_t line = 0;
+  std::vector<PlyProperty> properties;
+
+  int find(std::string_view property) const {
+    for (size_t i = 0; i < properties.size(); ++i) {
+      if (properties[i].name == property) return static_cast<int>(i);
+    }
+    return -1;
+  }
+};
+
+struct PlyHeader {
+  PlyFormat format = PlyFormat::kAscii;
+  std::vector<PlyElement> elements;
+  size_t data_offset = 0;
+  uint64_t data_line = 0;
+};
+
+class PlyHeaderParser {
+ public:
+  PlyHeaderParser(std::string_view text, std::string_view name) : lines_(text), name_(name) {}
+
+  Status parse(PlyHeader* header) {
+    std::string_view line;
+    if (!lines_.next(&line) || trim(line) != "ply") return error("missing the 'ply' magic line");
+    bool have_format = false;
+    while (lines_.next(&line)) {
+      split_tokens(line, &tokens_);
+      if (tokens_.empty() || tokens_[0] == "comment" || tokens_[0] == "obj_info") continue;
+      Status status;
+      if (tokens_[0] == "format") {
+        status = parse_format(&header->format);
+        have_format = true;
+      } else if (tokens_[0] == "element") {
+        status = parse_element(header);
+      } else if (tokens_[0] == "property") {
+        status = parse_property(header);
+      } else if (tokens_[0] == "end_header") {
+        if (!have_format) return error("no 'format' line before end_header");
+        header->data_offset = lines_.position();
+        header->data_line = lines_.line_number() + 1;
+        return Status::Ok();
+      } else {
+        status = error("unknown PLY header keyword " + quoted(tokens_[0]));
+      }
+      if (!status.ok()) return status;
+    }
+    return invalid(std::string(name_) + ": PLY header has no end_header line");
+  }
+
+ private:
+  Status error(const std::string& problem) const { return invalid(at_line(name_, lines_.line_number()) + problem); }
+
+  Status parse_format(PlyFormat* format) {
+    if (tokens_.size() != 3) return error("expected 'format <encoding> 1.0'");
+    if (tokens_[2] != "1.0" && tokens_[2] != "1") return error("unsupported PLY version " + quoted(tokens_[2]));
+    if (tokens_[1] == "ascii") {
+      *format = PlyFormat::kAscii;
+    } else if (tokens_[1] == "binary_little_endian") {
+      *format = PlyFormat::kBinaryLittleEndian;
+    } else if (tokens_[1] == "binary_big_endian") {
+      *format = PlyFormat::kBinaryBigEndian;
+    } else {
+      return error("unknown PLY encoding " + quoted(tokens_[1]));
+    }
+    return Status::Ok();
+  }
+
+  Status parse_element(PlyHeader* header) {
+    if (tokens_.size() != 3) return error("expected 'element <name> <count>'");
+    PlyElement element;
+    element.name = std::string(tokens_[1]);
+    element.line = lines_.line_number();
+    if (!parse_count(tokens_[2], &element.count)) return error("unparsable element count " + quoted(tokens_[2]));
+    for (const PlyElement& other : header->elements) {
+      if (other.name == element.name) return error("element " + quoted(element.name) + " is declared twice");
+    }
+    header->elements.push_back(std::move(element));
+    return Status::Ok();
+  }
+
+  Status parse_property(PlyHeader* header) {
+    if (header->elements.empty()) return error("property before any element");
+    PlyProperty property;
+    bool ok = false;
+    if (tokens_.size() == 5 && tokens_[1] == "list") {
+      property.is_list = true;
+      ok = parse_ply_type(tokens_[2], &property.count_type) && parse_ply_type(tokens_[3], &property.value_type);
+      if (ok && !ply_type_is_integral(property.count_type)) return error("list count type must be an integer type");
+      property.name = std::string(tokens_[4]);
+    } else if (tokens_.size() == 3) {
+      ok = parse_ply_type(tokens_[1], &property.value_type);
+      property.name = std::string(tokens_[2]);
+    } else {
+      return error("expected 'property <type> <name>' or 'property list <type> <type> <name>'");
+    }
+    if (!ok) return error("unknown PLY property type");
+    header->elements.back().properties.push_back(std::move(property));
+    return Status::Ok();
+  }
+
+  LineReader lines_;
+  std::string_view name_;
+  std::vector<std::string_view> tokens_;
+};
+
+// ---------------------------------------------------------------------------
+// PLY data
+
+struct PlyValue {
+  int64_t integer = 0;  // integral types
+  float single = 0;     // float32
+  double real = 0;      // float64
+};
+
+// What is being read, for messages: "element 'face' item 12".
+struct PlyItem {
+  const PlyElement* element;
+  uint64_t index;
+};
+
+std::string describe(const PlyItem& item) {
+  return "element " + quoted(item.element->name) + " item " + std::to_string(item.index);
+}
+
+// Reads scalars from ASCII or binary PLY data with bounds checks, so a short
+// or corrupt file gives an error naming the line or byte offset.
+class PlyDataReader {
+ public:
+  PlyDataReader(std::string_view data, const PlyHeader& header, std::string_view name)
+      : data_(data),
+        tokens_(data, header.data_line),
+        format_(header.format),
+        base_offset_(header.data_offset),
+        name_(name) {}
+
+  bool binary() const { return format_ != PlyFormat::kAscii; }
+  uint64_t bytes_left() const { return binary() ? data_.size() - pos_ : tokens_.bytes_left(); }
+
+  // "bunny.ply line 40: " or "bunny.ply byte 1234: ".
+  std::string where() const {
+    if (!binary()) return at_line(name_, tokens_.line());
+    return std::string(name_) + " byte " + std::to_string(base_offset_ + pos_) + ": ";
+  }
+
+  Status read(PlyType type, const PlyItem& item, PlyValue* value) {
+    return binary() ? read_binary(type, item, value) : read_ascii(type, item, value);
+  }
+
+  // Skips `count` values of `type`; binary data is skipped without a loop so
+  // a huge claimed count costs nothing before the bounds check fails it.
+  Status skip(PlyType type, uint64_t count, const PlyItem& item) {
+    if (binary()) return skip_bytes(count, ply_type_size(type), item);
+    PlyValue ignored;
+    for (uint64_t i = 0; i < count; ++i) {
+      Status status = read_ascii(type, item, &ignored);
+      if (!status.ok()) return status;
+    }
+    return Status::Ok();
+  }
+
+  // Skips `count` values of `size` bytes; `item` is where they start.
+  Status skip_bytes(uint64_t count, uint64_t size, const PlyItem& item) {
+    uint64_t left = data_.size() - pos_;
+    if (size != 0 && count > left / size) return truncated(item);
+    pos_ += static_cast<size_t>(count * size);
+    return Status::Ok();
+  }
+
+  // Skips `count` whole items of `size` bytes each, naming the first item
+  // that does not fit if the data is short.
+  Status skip_items(const PlyElement& element, uint64_t size) {
+    uint64_t left = data_.size() - pos_;
+    if (size != 0 && element.count > left / size) {
+      pos_ += static_cast<size_t>(left / size * size);
+      return truncated(PlyItem{&element, left / size});
+    }
+    pos_ += static_cast<size_t>(element.count * size);
+    return Status::Ok();
+  }
+
+  // Leftover data after the last element, for a warning.
+  uint64_t trailing() {
+    if (binary()) return data_.size() - pos_;
+    uint64_t count = 0;
+    std::string_view token;
+    while (tokens_.next(&token)) ++count;
+    return count;
+  }
+
+ private:
+  Status truncated(const PlyItem& item) const {
+    return invalid(where() + "truncated binary data in " + describe(item) + " (" +
+                   std::to_string(data_.size() - pos_) + " bytes left)");
+  }
+
+  Status read_binary(PlyType type, const PlyItem& item, PlyValue* value) {
+    size_t size = ply_type_size(type);
+    if (data_.size() - pos_ < size) return truncated(item);
+    uint64_t bits = 0;
+    for (size_t i = 0; i < size; ++i) {
+      size_t byte = format_ == PlyFormat::kBinaryLittleEndian ? i : size - 1 - i;
+      bits |= uint64_t{static_cast<unsigned char>(data_[pos_ + byte])} << (8 * i);
+    }
+    pos_ += size;
+    decode_bits(type, bits, value);
+    return Status::Ok();
+  }
+
+  static void decode_bits(PlyType type, uint64_t bits, PlyValue* value) {
+    switch (type) {
+      case PlyType::kInt8:
+        value->integer = static_cast<int8_t>(static_cast<uint8_t>(bits));
+        break;
+      case PlyType::kInt16:
+        value->integer = static_cast<int16_t>(static_cast<uint16_t>(bits));
+        break;
+      case PlyType::kInt32:
+        value->integer = static_cast<int32_t>(static_cast<uint32_t>(bits));
+        break;
+      case PlyType::kUint8:
+      case PlyType::kUint16:
+      case PlyType::kUint32:
+        value->integer = static_cast<int64_t>(bits);
+        break;
+      case PlyType::kFloat32: {
+        uint32_t narrow = static_cast<uint32_t>(bits);
+        std::memcpy(&value->single, &narrow, sizeof narrow);
+        break;
+      }
+      case PlyType::kFloat64:
+        std::memcpy(&value->real, &bits, sizeof bits);
+        break;
+    }
+  }
+
+  Status read_ascii(PlyType type, const PlyItem& item, PlyValue* value) {
+    std::string_view token;
+    if (!tokens_.next(&token)) return invalid(where() + "data ends inside " + describe(item));
+    bool ok = false;
+    if (type == PlyType::kFloat32) {
+      ok = parse_float(token, &value->single) == Parse::kOk;
+    } else if (type == PlyType::kFloat64) {
+      ok = parse_double(token, &value->real) == Parse::kOk;
+    } else {
+      ok = parse_int(token, &value->integer) && fits(type, value->integer);
+    }
+    if (!ok) return invalid(where() + "unparsable or out-of-range value " + quoted(token) + " in " + describe(item));
+    return Status::Ok();
+  }
+
+  static bool fits(PlyType type, int64_t v) {
+    switch (type) {
+      case PlyType::kInt8:
+        return v >= -128 && v <= 127;
+      case PlyType::kUint8:
+        return v >= 0 && v <= 255;
+      case PlyType::kInt16:
+        return v >= -32768 && v <= 32767;
+      case PlyType::kUint16:
+        return v >= 0 && v <= 65535;
+      case PlyType::kInt32:
+        return v >= INT32_MIN && v <= INT32_MAX;
+      case PlyType::kUint32:
+        return v >= 0 && v <= int64_t{UINT32_MAX};
+      default:
+        return true;
+    }
+  }
+
+  std::string_view data_;
+  size_t pos_ = 0;  // binary position within data_
+  TokenStream tokens_;
+  PlyFormat format_;
+  size_t base_offset_;
+  std::string_view name_;
+};
+
+// Converts a stored x/y/z value; false if it is not a finite float.
+bool ply_coordinate(PlyType type, const PlyValue& value, float* out) {
+  if (type == PlyType::kFloat32) {
+    *out = value.single;
+  } else if (type == PlyType::kFloat64) {
+    // A double beyond the float range has no float value (casting it is UB).
+    if (!(std::fabs(value.real) <= FLT_MAX)) return false;
+    *out = static_cast<float>(value.real);
+  } else {
+    *out = static_cast<float>(value.integer);
+  }
+  return std::isfinite(*out);
+}
+
+std::string describe_value(PlyType type, const PlyValue& value) {
+  if (type == PlyType::kFloat32) return std::to_string(value.single);
+  if (type == PlyType::kFloat64) return std::to_string(value.real);
+  return std::to_string(value.integer);
+}
+
+// Minimum bytes (binary) or characters (ASCII: a digit and a separator per
+// value) an item of this element occupies, for bounded reservations.
+uint64_t min_item_size(const PlyElement& element, bool binary, uint64_t min_list_length) {
+  uint64_t size = 0;
+  for (const PlyProperty& property : element.properties) {
+    if (property.is_list) {
+      size += binary ? ply_type_size(property.count_type) + min_list_length * ply_type_size(property.value_type)
+                     : 2 * (1 + min_list_length);
+    } else {
+      size += binary ? ply_type_size(property.value_type) : 2;
+    }
+  }
+  return size;
+}
+
+std::string property_names(const PlyElement& element, const std::vector<int>& used) {
+  std::string names;
+  for (size_t i = 0; i < element.properties.size(); ++i) {
+    if (std::find(used.begin(), used.end(), static_cast<int>(i)) != used.end()) continue;
+    if (!names.empty()) names += ", ";
+    names += element.properties[i].name;
+  }
+  return names;
+}
+
+class PlyParser {
+ public:
+  PlyParser(std::string_view text, std::string_view name, WarningTally* warnings)
+      : text_(text), name_(name), warnings_(warnings) {}
+
+  Status parse(Mesh* mesh) {
+    Status status = PlyHeaderParser(text_, name_).parse(&header_);
+    if (!status.ok()) return status;
+    status = find_roles();
+    if (!status.ok()) return status;
+    PlyDataReader reader(text_.substr(header_.data_offset), header_, name_);
+    for (const PlyElement& element : header_.elements) {
+      if (&element == vertex_element_) {
+        status = read_vertices(element, &reader, mesh);
+      } else if (&element == face_element_) {
+        status = read_faces(element, &reader, mesh);
+      } else {
+        status = skip_element(element, &reader);
+      }
+      if (!status.ok()) return status;
+    }
+    if (faces_before_vertices_) {
+      status = check_deferred_indices(*mesh);
+      if (!status.ok()) return status;
+    }
+    warnings_->add(reader.binary() ? "ignored trailing bytes after the PLY data" : "ignored trailing values after the PLY data",
+                   reader.trailing());
+    return Status::Ok();
+  }
+
+ private:
+  Status header_error(const PlyElement& element, const std::string& problem) const {
+    return invalid(at_line(name_, element.line) + problem);
+  }
+
+  Status find_roles() {
+    for (const PlyElement& element : header_.elements) {
+      if (element.name == "vertex") vertex_element_ = &element;
+      if (element.name == "face") face_element_ = &element;
+    }
+    if (vertex_element_ == nullptr) return invalid(std::string(name_) + ": PLY file has no 'vertex' element");
+    const char* axes[3] = {"x", "y", "z"};
+    for (int axis = 0; axis < 3; ++axis) {
+      xyz_[axis] = vertex_element_->find(axes[axis]);
+      if (xyz_[axis] < 0 || vertex_element_->properties[xyz_[axis]].is_list) {
+        return header_error(*vertex_element_, std::string("vertex element has no scalar property '") + axes[axis] + "'");
+      }
+    }
+    if (face_element_ == nullptr) return Status::Ok();
+    indices_ = face_element_->find("vertex_indices");
+    if (indices_ < 0) indices_ = face_element_->find("vertex_index");
+    if (indices_ < 0 || !face_element_->properties[indices_].is_list) {
+      return header_error(*face_element_, "face element has no list property 'vertex_indices' or 'vertex_index'");
+    }
+    if (!ply_type_is_integral(face_element_->properties[indices_].value_type)) {
+      return header_error(*face_element_, "face vertex indices have a floating-point type");
+    }
+    return Status::Ok();
+  }
+
+  Status read_vertices(const PlyElement& element, PlyDataReader* reader, Mesh* mesh) {
+    reserve_bounded(&mesh->positions, element.count * 3, reader->bytes_left() * 3,
+                    min_item_size(element, reader->binary(), 0));
+    for (uint64_t v = 0; v < element.count; ++v) {
+      PlyItem item{&element, v};
+      float xyz[3] = {0, 0, 0};
+      for (size_t p = 0; p < element.properties.size(); ++p) {
+        const PlyProperty& property = element.properties[p];
+        if (property.is_list) {
+          Status status = skip_list(property, item, reader);
+          if (!status.ok()) return status;
+          continue;
+        }
+        PlyValue value;
+        Status status = reader->read(property.value_type, item, &value);
+        if (!status.ok()) return status;
+        for (int axis = 0; axis < 3; ++axis) {
+          if (xyz_[axis] != static_cast<int>(p)) continue;
+          if (!ply_coordinate(property.value_type, value, &xyz[axis])) {
+            return invalid(reader->where() + "non-finite or out-of-range coordinate " +
+                           describe_value(property.value_type, value) + " in " + describe(item));
+          }
+        }
+      }
+      mesh->positions.insert(mesh->positions.end(), xyz, xyz + 3);
+    }
+    vertices_read_ = true;
+    std::string extra = property_names(element, {xyz_[0], xyz_[1], xyz_[2]});
+    if (!extra.empty() && element.count > 0) {
+      warnings_->note("ignored PLY vertex properties (" + extra + ") on " + std::to_string(element.count) +
+                      " vertices");
+    }
+    return Status::Ok();
+  }
+
+  Status read_faces(const PlyElement& element, PlyDataReader* reader, Mesh* mesh) {
+    faces_before_vertices_ = !vertices_read_;
+    reserve_bounded(&mesh->face_sizes, element.count, reader->bytes_left(), min_item_size(element, reader->binary(), 3));
+    for (uint64_t f = 0; f < element.count; ++f) {
+      PlyItem item{&element, f};
+      for (size_t p = 0; p < element.properties.size(); ++p) {
+        const PlyProperty& property = element.properties[p];
+        Status status = static_cast<int>(p) == indices_ ? read_face_corners(property, item, reader, mesh)
+                        : property.is_list             ? skip_list(property, item, reader)
+                                                       : reader->skip(property.value_type, 1, item);
+        if (!status.ok()) return status;
+      }
+    }
+    std::string extra = property_names(element, {indices_});
+    if (!extra.empty() && element.count > 0) {
+      warnings_->note("ignored PLY face properties (" + extra + ") on " + std::to_string(element.count) + " faces");
+    }
+    return Status::Ok();
+  }
+
+  Status read_face_corners(const PlyProperty& property, const PlyItem& item, PlyDataReader* reader, Mesh* mesh) {
+    PlyValue count;
+    Status status = reader->read(property.count_type, item, &count);
+    if (!status.ok()) return status;
+    if (count.integer < 3) {
+      return invalid(reader->where() + describe(item) + ": face has " + std::to_string(count.integer) +
+                     " corner(s); at least 3 are needed");
+    }
+    uint64_t corners = static_cast<uint64_t>(count.integer);
+    size_t index_size = ply_type_size(property.value_type);
+    if (reader->binary() && corners > reader->bytes_left() / index_size) {
+      return reader->skip_bytes(corners, index_size, item);  // reports the truncation
+    }
+    const uint64_t vertices = mesh->vertex_count();
+    for (uint64_t c = 0; c < corners; ++c) {
+      PlyValue index;
+      status = reader->read(property.value_type, item, &index);
+      if (!status.ok()) return status;
+      bool in_range = index.integer >= 0 && static_cast<uint64_t>(index.integer) < kMaxIndex &&
+                      (faces_before_vertices_ || static_cast<uint64_t>(index.integer) < vertices);
+      if (!in_range) {
+        return invalid(reader->where() + "vertex index " + std::to_string(index.integer) + " in " + describe(item) +
+                       " is out of range (the file has " + std::to_string(vertex_element_->count) + " vertices)");
+      }
+      mesh->corners.push_back(static_cast<uint32_t>(index.integer));
+    }
+    mesh->face_sizes.push_back(static_cast<uint32_t>(corners));
+    return Status::Ok();
+  }
+
+  Status skip_list(const PlyProperty& property, const PlyItem& item, PlyDataReader* reader) {
+    PlyValue count;
+    Status status = reader->read(property.count_type, item, &count);
+    if (!status.ok()) return status;
+    if (count.integer < 0) return invalid(reader->where() + "negative list length in " + describe(item));
+    return reader->skip(property.value_type, static_cast<uint64_t>(count.integer), item);
+  }
+
+  Status skip_element(const PlyElement& element, PlyDataReader* reader) {
+    if (element.count > 0) {
+      warnings_->note("ignored PLY element " + quoted(element.name) + " (" + std::to_string(element.count) +
+                      " items)");
+    }
+    if (element.properties.empty()) return Status::Ok();
+    bool fixed_size = reader->binary() && std::none_of(element.properties.begin(), element.properties.end(),
+                                                       [](const PlyProperty& p) { return p.is_list; });
+    if (fixed_size) return reader->skip_items(element, min_item_size(element, true, 0));
+    // Every item consumes at least one byte or token, so this loop is bounded by the data.
+    for (uint64_t i = 0; i < element.count; ++i) {
+      PlyItem item{&element, i};
+      for (const PlyProperty& property : element.properties) {
+        Status status = property.is_list ? skip_list(property, item, reader) : reader->skip(property.value_type, 1, item);
+        if (!status.ok()) return status;
+      }
+    }
+    return Status::Ok();
+  }
+
+  // Only when faces precede vertices in the file: indices could not be
+  // checked while reading.
+  Status check_deferred_indices(const Mesh& mesh) const {
+    for (size_t i = 0; i < mesh.corners.size(); ++i) {
+      if (mesh.corners[i] >= mesh.vertex_count()) {
+        return invalid(std::string(name_) + ": face vertex index " + std::to_string(mesh.corners[i]) +
+                       " is out of range (the file has " + std::to_string(mesh.vertex_count()) + " vertices)");
+      }
+    }
+    return Status::Ok();
+  }
+
+  std::string_view text_;
+  std::string_view name_;
+  WarningTally* warnings_;
+  PlyHeader header_;
+  const PlyElement* vertex_element_ = nullptr;
+  const PlyElement* face_element_ = nullptr;
+  int xyz_[3] = {-1, -1, -1};
+  int indices_ = -1;
+  bool vertices_read_ = false;
+  bool faces_before_vertices_ = false;
+};
+
+// ---------------------------------------------------------------------------
+// STL
+
+// STL lists each triangle's corners by value; corners with bit-identical
+// positions become one vertex, numbered in order of first appearance.
+class StlVertexMerger {
+ public:
+  explicit StlVertexMerger(Mesh* mesh) : mesh_(mesh) {}
+
+  void reserve(uint64_t corners) { map_.reserve(static_cast<size_t>(corners)); }
+
+  void add(const float xyz[3]) {
+    Key key{bits(xyz[0]), bits(xyz[1]), bits(xyz[2])};
+    auto [it, inserted] = map_.try_emplace(key, static_cast<uint32_t>(mesh_->vertex_count()));
+    if (inserted) mesh_->positions.insert(mesh_->positions.end(), xyz, xyz + 3);
+    mesh_->corners.push_back(it->second);
+    ++corners_;
+  }
+
+  void report(WarningTally* warnings) const {
+    if (corners_ == 0) return;
+    warnings->note("merged " + std::to_string(corners_) + " STL corners into " +
+                   std::to_string(mesh_->vertex_count()) + " vertices");
+  }
+
+ private:
+  struct Key {
+    uint32_t x, y, z;
+    bool operator==(const Key& other) const { return x == other.x && y == other.y && z == other.z; }
+  };
+  struct KeyHash {
+    size_t operator()(const Key& key) const {
+      uint64_t h = (uint64_t{key.x} << 32 | key.y) * 0x9E3779B97F4A7C15ull;
+      h ^= (h >> 29) ^ (uint64_t{key.z} * 0xBF58476D1CE4E5B9ull);
+      return static_cast<size_t>(h ^ (h >> 32));
+    }
+  };
+  static uint32_t bits(float value) {
+    uint32_t result = 0;
+    std::memcpy(&result, &value, sizeof result);
+    return result;
+  }
+
+  Mesh* mesh_;
+  std::unordered_map<Key, uint32_t, KeyHash> map_;
+  uint64_t corners_ = 0;
+};
+
+uint32_t read_le32(const char* p) {
+  uint32_t value = 0;
+  for (int i = 3; i >= 0; --i) value = (value << 8) | static_cast<unsigned char>(p[i]);
+  return value;
+}
+
+float read_le_float(const char* p) {
+  uint32_t bits = read_le32(p);
+  float value = 0;
+  std::memcpy(&value, &bits, sizeof value);
+  return value;
+}
+
+constexpr uint64_t kStlHeaderBytes = 84;
+constexpr uint64_t kStlTriangleBytes = 50;
+
+// Binary when the size matches the triangle count exactly (some binary files
+// also begin with "solid"); otherwise ASCII if it starts with "solid".
+bool stl_is_binary(std::string_view data) {
+  if (data.size() >= kStlHeaderBytes &&
+      kStlHeaderBytes + kStlTriangleBytes * uint64_t{read_le32(data.data() + 80)} == data.size()) {
+    return true;
+  }
+  std::string_view start = trim(data.substr(0, 64));
+  return !(start.size() >= 5 && equals_ignoring_case(start.substr(0, 5), "solid") &&
+           (start.size() == 5 || is_space(start[5])));
+}
+
+Status parse_binary_stl(std::string_view data, std::string_view name, Mesh* mesh, WarningTally* warnings) {
+  if (data.size() < kStlHeaderBytes) {
+    return invalid(std::string(name) + ": truncated binary STL: " + std::to_string(data.size()) +
+                   " bytes, the header alone needs 84");
+  }
+  uint64_t triangles = read_le32(data.data() + 80);
+  uint64_t needed = kStlHeaderBytes + kStlTriangleBytes * triangles;
+  if (data.size() < needed) {
+    return invalid(std::string(name) + ": truncated binary STL: header says " + std::to_string(triangles) +
+                   " triangles (" + std::to_string(needed) + " bytes) but the file has " +
+                   std::to_string(data.size()) + " bytes");
+  }
+  StlVertexMerger merger(mesh);
+  merger.reserve(triangles * 3);
+  mesh->face_sizes.reserve(static_cast<size_t>(triangles));
+  uint64_t attributes = 0;
+  for (uint64_t t = 0; t < triangles; ++t) {
+    const char* record = data.data() + kStlHeaderBytes + kStlTriangleBytes * t;
+    for (int corner = 0; corner < 3; ++corner) {
+      float xyz[3];
+      for (int axis = 0; axis < 3; ++axis) xyz[axis] = read_le_float(record + 12 + 12 * corner + 4 * axis);
+      if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) {
+        return invalid(std::string(name) + " byte " + std::to_string(kStlHeaderBytes + kStlTriangleBytes * t) +
+                       ": non-finite coordinate in triangle " + std::to_string(t));
+      }
+      merger.add(xyz);
+    }
+    mesh->face_sizes.push_back(3);
+    if (record[48] != 0 || record[49] != 0) ++attributes;
+  }
+  warnings->add("ignored STL facet normals", triangles);
+  warnings->add("ignored non-zero STL attribute words", attributes);
+  warnings->add("ignored trailing bytes after the STL triangles", data.size() - needed);
+  merger.report(warnings);
+  return Status::Ok();
+}
+
+class AsciiStlParser {
+ public:
+  AsciiStlParser(std::string_view text, std::string_view name, WarningTally* warnings)
+      : tokens_(text, 1), name_(name), warnings_(warnings) {}
+
+  Status parse(Mesh* mesh) {
+    StlVertexMerger merger(mesh);
+    std::string_view token;
+    while (tokens_.next(&token)) {
+      if (!equals_ignoring_case(token, "solid")) return error("expected 'solid', found " + quoted(token));
+      tokens_.skip_line();  // the solid's name
+      Status status = parse_solid(&merger, mesh);
+      if (!status.ok()) return status;
+    }
+    warnings_->add("ignored STL facet normals", facets_);
+    merger.report(warnings_);
+    return Status::Ok();
+  }
+
+ private:
+  Status error(const std::string& problem) const { return invalid(at_line(name_, tokens_.line()) + problem); }
+
+  Status expect(std::string_view keyword) {
+    std::string_view token;
+    if (!tokens_.next(&token)) return error("file ends where '" + std::string(keyword) + "' was expected");
+    if (!equals_ignoring_case(token, keyword)) {
+      return error("expected '" + std::string(keyword) + "', found " + quoted(token));
+    }
+    return Status::Ok();
+  }
+
+  Status parse_solid(StlVertexMerger* merger, Mesh* mesh) {
+    std::string_view token;
+    while (tokens_.next(&token)) {
+      if (equals_ignoring_case(token, "endsolid")) {
+        tokens_.skip_line();
+        return Status::Ok();
+      }
+      if (!equals_ignoring_case(token, "facet")) return error("expected 'facet' or 'endsolid', found " + quoted(token));
+      Status status = parse_facet(merger, mesh);
+      if (!status.ok()) return status;
+    }
+    warnings_->add("STL solids without 'endsolid'");
+    return Status::Ok();
+  }
+
+  Status parse_facet(StlVertexMerger* merger, Mesh* mesh) {
+    Status status = expect("normal");
+    for (int i = 0; i < 3 && status.ok(); ++i) status = read_number(nullptr);
+    if (status.ok()) status = expect("outer");
+    if (status.ok()) status = expect("loop");
+    if (!status.ok()) return status;
+    std::string_view token;
+    uint32_t corners = 0;
+    while (tokens_.next(&token) && equals_ignoring_case(token, "vertex")) {
+      float xyz[3];
+      for (int axis = 0; axis < 3 && status.ok(); ++axis) status = read_number(&xyz[axis]);
+      if (!status.ok()) return status;
+      merger->add(xyz);
+      ++corners;
+    }
+    if (!equals_ignoring_case(token, "endloop")) return error("expected 'vertex' or 'endloop'");
+    if (corners < 3) return error("facet has " + std::to_string(corners) + " vertices; at least 3 are needed");
+    mesh->face_sizes.push_back(corners);
+    ++facets_;
+    return expect("endfacet");
+  }
+
+  // With a null `coordinate` (normals) any number is accepted, even NaN.
+  Status read_number(float* coordinate) {
+    std::string_view token;
+    if (!tokens_.next(&token)) return error("file ends inside a facet");
+    if (coordinate == nullptr) return is_number(token) ? Status::Ok() : error("unparsable number " + quoted(token));
+    std::string problem = parse_coordinate(token, coordinate);
+    return problem.empty() ? Status::Ok() : error(problem + " in vertex");
+  }
+
+  TokenStream tokens_;
+  std::string_view name_;
+  WarningTally* warnings_;
+  uint64_t facets_ = 0;
+};
+
+// ---------------------------------------------------------------------------
+// Dispatch
+
+Status parse_any(std::string_view data, const std::string& format, std::string_view name, Mesh* mesh,
+                 WarningTally* warnings) {
+  if (format == "obj") return ObjParser(name, warnings).parse(strip_utf8_bom(data), mesh);
+  if (format == "off") return OffParser(strip_utf8_bom(data), name, warnings).parse(mesh);
+  if (format == "ply") return PlyParser(data, name, warnings).parse(mesh);
+  if (stl_is_binary(data)) return parse_binary_stl(data, name, mesh, warnings);
+  return AsciiStlParser(data, name, warnings).parse(mesh);
+}
+
+bool is_readable_format(const std::string& format) {
+  return format == "obj" || format == "off" || format == "ply" || format == "stl";
+}
+
+Status read_named(std::string_view data, const std::string& format, std::string_view name, Mesh* mesh,
+                  std::vector<std::string>* warnings) {
+  if (mesh == nullptr) return invalid("read_mesh: mesh is null");
+  Mesh parsed;
+  WarningTally tally;
+  Status status = parse_any(data, format, name, &parsed, &tally);
+  if (!status.ok()) return status;
+  *mesh = std::move(parsed);
+  tally.append_to(warnings);
+  return Status::Ok();
+}
+
+// Lower-case extension without the dot; empty if there is none.
+std::string extension_of(const std::string& path) {
+  size_t slash = path.find_last_of("/\\");
+  size_t dot = path.rfind('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return {};
+  return to_lower(std::string_view(path).substr(dot + 1));
+}
+
+Status read_file(const std::string& path, std::string* data) {
+  std::FILE* file = std::fopen(path.c_str(), "rb");
+  if (file == nullptr) return Status(ErrorCode::kIo, "cannot open " + path + ": " + std::strerror(errno));
+  char buffer[1 << 16];
+  size_t n = 0;
+  while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) data->append(buffer, n);
+  int error = std::ferror(file) ? errno : 0;
+  std::fclose(file);
+  if (error != 0) return Status(ErrorCode::kIo, "cannot read " + path + ": " + std::strerror(error));
+  return Status::Ok();
+}
+
+// ---------------------------------------------------------------------------
+// Writers
+
+// Text output, flushed to a file in pieces so huge meshes need no huge buffer.
+class TextSink {
+ public:
+  explicit TextSink(std::FILE* file) : file_(file) {}
+
+  void put(std::string_view text) {
+    text_.append(text);
+    if (file_ != nullptr && text_.size() >= kFlushBytes) flush();
+  }
+  void put_uint(uint64_t value) {
+    char buffer[24];
+    put(std::string_view(buffer, static_cast<size_t>(std::to_chars(buffer, buffer + sizeof buffer, value).ptr - buffer)));
+  }
+  // "%.9g" digits, the fewest that always round-trip a float; to_chars
+  // ignores the C locale, which printf would not.
+  void put_float(float value) {
+    char buffer[32];
+    auto result = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 9);
+    put(std::string_view(buffer, static_cast<size_t>(result.ptr - buffer)));
+  }
+  bool flush() {
+    if (file_ != nullptr && !text_.empty()) {
+      if (std::fwrite(text_.data(), 1, text_.size(), file_) != text_.size()) failed_ = true;
+      text_.clear();
+    }
+    return !failed_;
+  }
+  std::string& text() { return text_; }
+
+ private:
+  static constexpr size_t kFlushBytes = 1 << 20;
+  std::FILE* file_;
+  std::string text_;
+  bool failed_ = false;
+};
+
+void put_vertex_line(const Mesh& mesh, size_t v, TextSink* out) {
+  for (int axis = 0; axis < 3; ++axis) {
+    out->put(" ");
+    out->put_float(mesh.positions[3 * v + axis]);
+  }
+  out->put("\n");
+}
+
+void write_obj(const Mesh& mesh, TextSink* out) {
+  for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+    out->put("v");
+    put_vertex_line(mesh, v, out);
+  }
+  size_t corner = 0;
+  for (uint32_t size : mesh.face_sizes) {
+    out->put("f");
+    for (uint32_t i = 0; i < size; ++i) {
+      out->put(" ");
+      out->put_uint(uint64_t{mesh.corners[corner++]} + 1);
+    }
+    out->put("\n");
+  }
+}
+
+void put_face_lines(const Mesh& mesh, TextSink* out) {
+  size_t corner = 0;
+  for (uint32_t size : mesh.face_sizes) {
+    out->put_uint(size);
+    for (uint32_t i = 0; i < size; ++i) {
+      out->put(" ");
+      out->put_uint(mesh.corners[corner++]);
+    }
+    out->put("\n");
+  }
+}
+
+void write_off(const Mesh& mesh, TextSink* out) {
+  out->put("OFF\n");
+  out->put_uint(mesh.vertex_count());
+  out->put(" ");
+  out->put_uint(mesh.face_count());
+  out->put(" 0\n");
+  for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+    out->put_float(mesh.positions[3 * v]);
+    out->put(" ");
+    out->put_float(mesh.positions[3 * v + 1]);
+    out->put(" ");
+    out->put_float(mesh.positions[3 * v + 2]);
+    out->put("\n");
+  }
+  put_face_lines(mesh, out);
+}
+
+void write_ply(const Mesh& mesh, TextSink* out) {
+  uint32_t max_degree = 0;
+  for (uint32_t size : mesh.face_sizes) max_degree = std::max(max_degree, size);
+  // The narrowest common types that hold the data, so other tools read it.
+  const char* count_type = max_degree <= 255 ? "uchar" : "uint";
+  const char* index_type = mesh.vertex_count() <= uint64_t{INT32_MAX} ? "int" : "uint";
+  out->put("ply\nformat ascii 1.0\nelement vertex ");
+  out->put_uint(mesh.vertex_count());
+  out->put("\nproperty float x\nproperty float y\nproperty float z\nelement face ");
+  out->put_uint(mesh.face_count());
+  out->put(std::string("\nproperty list ") + count_type + " " + index_type + " vertex_indices\nend_header\n");
+  for (size_t v = 0; v < mesh.vertex_count(); ++v) {
+    out->put_float(mesh.positions[3 * v]);
+    out->put(" ");
+    out->put_float(mesh.positions[3 * v + 1]);
+    out->put(" ");
+    out->put_float(mesh.positions[3 * v + 2]);
+    out->put("\n");
+  }
+  put_face_lines(mesh, out);
+}
+
+// Writing a mesh we could not read back would only move the failure later.
+Status validate_for_writing(const Mesh& mesh) {
+  if (mesh.positions.size() % 3 != 0) return invalid("mesh positions are not a multiple of 3 floats");
+  for (float value : mesh.positions) {
+    if (!std::isfinite(value)) return invalid("mesh has a non-finite coordinate");
+  }
+  uint64_t corners = 0;
+  for (uint32_t size : mesh.face_sizes) {
+    if (size < 3) return invalid("mesh has a face with fewer than 3 corners");
+    corners += size;
+  }
+  if (corners != mesh.corners.size()) return invalid("mesh face sizes do not add up to its corner count");
+  for (uint32_t index : mesh.corners) {
+    if (index >= mesh.vertex_count()) return invalid("mesh has a corner index out of range");
+  }
+  return Status::Ok();
+}
+
+bool is_writable_format(const std::string& format) { return format == "obj" || format == "off" || format == "ply"; }
+
+void write_any(const Mesh& mesh, const std::string& format, TextSink* out) {
+  if (format == "obj") {
+    write_obj(mesh, out);
+  } else if (format == "off") {
+    write_off(mesh, out);
+  } else {
+    write_ply(mesh, out);
+  }
+}
+
+}  // namespace
+
+Status read_mesh(const std::string& path, Mesh* mesh, std::vector<std::string>* warnings) {
+  std::string format = extension_of(path);
+  if (!is_readable_format(format)) {
+    return invalid(path + ": unsupported extension (expected .obj, .off, .ply or .stl)");
+  }
+  std::string data;
+  Status status = read_file(path, &data);
+  if (!status.ok()) return status;
+  return read_named(data, format, path, mesh, warnings);
+}
+
+Status read_mesh_from_memory(std::string_view text_or_bytes, std::string_view format, Mesh* mesh,
+                             std::vector<std::string>* warnings) {
+  std::string lowered = to_lower(format);
+  if (!is_readable_format(lowered)) {
+    return invalid("unsupported format " + quoted(format) + " (expected obj, off, ply or stl)");
+  }
+  return read_named(text_or_bytes, lowered, "<" + lowered + " data>", mesh, warnings);
+}
+
+Status write_mesh_to_memory(const Mesh& mesh, std::string_view format, std::string* text) {
+  std::string lowered = to_lower(format);
+  if (!is_writable_format(lowered)) return invalid("cannot write format " + quoted(format) + " (expected obj, off or ply)");
+  if (text == nullptr) return invalid("write_mesh_to_memory: text is null");
+  Status status = validate_for_writing(mesh);
+  if (!status.ok()) return status;
+  TextSink sink(nullptr);
+  write_any(mesh, lowered, &sink);
+  *text = std::move(sink.text());
+  return Status::Ok();
+}
+
+Status write_mesh(const std::string& path, const Mesh& mesh) {
+  std::string format = extension_of(path);
+  if (!is_writable_format(format)) return invalid(path + ": cannot write this extension (expected .obj, .off or .ply)");
+  Status status = validate_for_writing(mesh);
+  if (!status.ok()) return Status(status.code(), path + ": " + status.message());
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  if (file == nullptr) return Status(ErrorCode::kIo, "cannot create " + path + ": " + std::strerror(errno));
+  TextSink sink(file);
+  write_any(mesh, format, &sink);
+  bool ok = sink.flush();
+  int error = ok ? 0 : errno;
+  if (std::fclose(file) != 0 && ok) {
+    ok = false;
+    error = errno;
+  }
+  if (!ok) return Status(ErrorCode::kIo, "cannot write " + path + ": " + std::strerror(error));
+  return Status::Ok();
+}
+
+}  // namespace qmc::tools

@@ -1,0 +1,41 @@
+// qmc tools: reading and writing meshes in common interchange formats.
+//
+// These readers are deliberately our own: qmc must carry any polygon soup
+// exactly (repeated corners, non-manifold edges, pinched and unreferenced
+// vertices, all in file order), and general-purpose mesh libraries reject or
+// repair such faces while loading.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "qmc/mesh.h"
+#include "qmc/status.h"
+
+namespace qmc::tools {
+
+// Reads by extension (case-insensitive): .obj .off .ply .stl.
+// Anything in the file that a qmc::Mesh does not carry (texture coordinates,
+// normals, colours, 'l'/'p' elements, extra PLY elements or properties, STL
+// vertex merging) is reported in *warnings as one short counted sentence per
+// kind; `warnings` may be null. Unreadable files give ErrorCode::kIo,
+// malformed content ErrorCode::kInvalidArgument with a message naming the
+// file, the line (text formats) or byte offset (binary formats) and the
+// problem. On failure *mesh and *warnings are left unchanged.
+qmc::Status read_mesh(const std::string& path, qmc::Mesh* mesh, std::vector<std::string>* warnings);
+
+// As read_mesh, for data already in memory; `format` is "obj", "off", "ply"
+// or "stl" (case-insensitive).
+qmc::Status read_mesh_from_memory(std::string_view text_or_bytes, std::string_view format,
+                                  qmc::Mesh* mesh, std::vector<std::string>* warnings);
+
+// Writes .obj .off .ply (ASCII) by extension, faces exactly as stored. Floats
+// are printed like "%.9g" (locale-independent), so they read back bit-exact.
+// A mesh that violates the qmc::Mesh invariants gives kInvalidArgument.
+qmc::Status write_mesh(const std::string& path, const qmc::Mesh& mesh);
+
+// As write_mesh, into *text; `format` is "obj", "off" or "ply".
+qmc::Status write_mesh_to_memory(const qmc::Mesh& mesh, std::string_view format, std::string* text);
+
+}  // namespace qmc::tools

@@ -1,0 +1,405 @@
+// qmc-make-vectors: writes the conformance vectors and MANIFEST
+// (spec/qmc-format.md section 10) into a directory.
+//
+// Published vectors are frozen: this program exists to show how each was
+// made and to add new ones. Re-running it over conformance/ must leave the
+// existing files byte-identical (tests/conformance_test.cc checks that the
+// committed files still decode as listed; a diff after re-running means the
+// encoder's output changed, which is allowed only with new vector names).
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "bitio/bit_writer.h"
+#include "bitio/byte_io.h"
+#include "bitio/huffman.h"
+#include "encoder/chunk_writer.h"
+#include "mesh_generators.h"
+#include "qmc/decoder.h"
+#include "qmc/encoder.h"
+#include "roundtrip_check.h"
+#include "sha256.h"
+
+namespace {
+
+using qmc::Mesh;
+
+struct Chunk {
+  uint32_t type;
+  std::vector<uint8_t> payload;
+};
+using Chunks = std::vector<Chunk>;
+
+// Splits one of our own (valid) files into chunks.
+Chunks split(const std::vector<uint8_t>& file) {
+  Chunks out;
+  for (size_t pos = 8; pos + 12 <= file.size();) {
+    const uint32_t length = qmc::load_u32le(&file[pos + 4]);
+    out.push_back({qmc::load_u32be(&file[pos]), {file.begin() + long(pos) + 8, file.begin() + long(pos + 8 + length)}});
+    pos += 12 + length;
+  }
+  return out;
+}
+
+std::vector<uint8_t> join(const Chunks& chunks) {
+  std::vector<uint8_t> out;
+  qmc::write_signature(&out);
+  for (const Chunk& c : chunks) qmc::write_chunk(&out, c.type, c.payload);
+  return out;
+}
+
+size_t find(const Chunks& chunks, uint32_t type) {
+  for (size_t i = 0; i < chunks.size(); ++i)
+    if (chunks[i].type == type) return i;
+  std::fprintf(stderr, "qmc-make-vectors: chunk missing\n");
+  std::exit(3);
+}
+
+std::vector<uint8_t> encode(const Mesh& mesh, int bits, std::vector<std::string> texts = {}) {
+  qmc::EncodeOptions options;
+  options.position_bits = bits;
+  options.texts = std::move(texts);
+  std::vector<uint8_t> out;
+  if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: %s\n", s.to_string().c_str());
+    std::exit(3);
+  }
+  return out;
+}
+
+class VectorWriter {
+ public:
+  explicit VectorWriter(std::string dir) : dir_(std::move(dir)) {}
+
+  // A valid vector; `source` (if given) is checked against the decoded mesh.
+  void valid(const std::string& name, const std::vector<uint8_t>& bytes, const Mesh* source) {
+    qmc::DecodedFile file;
+    if (qmc::Status s = qmc::decode(bytes.data(), bytes.size(), &file); !s.ok()) die(name, s.to_string());
+    if (source && !qmc::tools::check_round_trip(*source, file).ok()) die(name, "does not reproduce its source");
+    const std::vector<uint8_t> out = qmc::canonical_output(file);
+    write(name, bytes, "valid", qmc::tools::sha256_hex(out.data(), out.size()));
+  }
+
+  void invalid(const std::string& name, const std::vector<uint8_t>& bytes, qmc::ErrorCode expected) {
+    qmc::DecodedFile file;
+    const qmc::Status s = qmc::decode(bytes.data(), bytes.size(), &file);
+    if (s.code() != expected) die(name, "decodes as " + s.to_string());
+    write(name, bytes, "invalid", qmc::error_code_name(expected));
+  }
+
+  void finish() {
+    std::ofstream out(dir_ + "/MANIFEST");
+    out << "# qmc conformance vectors (spec/qmc-format.md section 10).\n"
+           "# valid PATH SHA256-of-canonical-output | invalid PATH ERROR\n";
+    for (const std::string& line : manifest_) out << line << "\n";
+  }
+
+ private:
+  void write(const std::string& name, const std::vector<uint8_t>& bytes, const char* kind, const std::string& expect) {
+    const std::string path = "vectors/" + name + ".qmc";
+    std::ofstream f(dir_ + "/" + path, std::ios::binary);
+    f.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    if (!f) die(name, "cannot write");
+    char line[512];
+    std::snprintf(line, sizeof line, "%-7s %-44s %s", kind, path.c_str(), expect.c_str());
+    manifest_.push_back(line);
+  }
+  [[noreturn]] static void die(const std::string& name, const std::string& why) {
+    std::fprintf(stderr, "qmc-make-vectors: %s: %s\n", name.c_str(), why.c_str());
+    std::exit(3);
+  }
+  std::string dir_;
+  std::vector<std::string> manifest_;
+};
+
+Mesh planar_square_grid() {
+  Mesh m;
+  for (int y = 0; y < 3; ++y)
+    for (int x = 0; x < 3; ++x) m.positions.insert(m.positions.end(), {float(x), float(y), 0.f});
+  for (uint32_t y = 0; y < 2; ++y)
+    for (uint32_t x = 0; x < 2; ++x) {
+      m.face_sizes.push_back(4);
+      m.corners.insert(m.corners.end(), {3 * y + x, 3 * y + x + 1, 3 * y + x + 4, 3 * y + x + 3});
+    }
+  return m;
+}
+
+Mesh points_only() {
+  Mesh m;
+  for (int i = 0; i < 5; ++i) m.positions.insert(m.positions.end(), {float(i), float(i * i), -float(i)});
+  return m;
+}
+
+// CONN payload of method 0 with a hand-made bit stream (invalid streams).
+std::vector<uint8_t> conn_payload(uint64_t vertices, uint64_t faces, const std::function<void(qmc::BitWriter*)>& body) {
+  std::vector<uint8_t> p{0};
+  qmc::put_varint(&p, vertices);
+  qmc::put_varint(&p, faces);
+  qmc::BitWriter bits;
+  body(&bits);
+  const std::vector<uint8_t> stream = bits.finish();
+  p.insert(p.end(), stream.begin(), stream.end());
+  return p;
+}
+
+std::vector<uint8_t> lengths_of(std::initializer_list<std::pair<uint32_t, uint8_t>> set, size_t alphabet) {
+  std::vector<uint8_t> l(alphabet, 0);
+  for (auto [symbol, length] : set) l[symbol] = length;
+  return l;
+}
+
+// A POSN payload for one vertex with a hand-made stream.
+std::vector<uint8_t> posn_payload(uint64_t vertices, uint8_t bits, const float min[3], const float max[3],
+                                  const std::function<void(qmc::BitWriter*)>& body) {
+  std::vector<uint8_t> p;
+  qmc::put_varint(&p, vertices);
+  p.push_back(bits);
+  for (int a = 0; a < 3; ++a) qmc::put_f32le(&p, min[a]);
+  for (int a = 0; a < 3; ++a) qmc::put_f32le(&p, max[a]);
+  qmc::BitWriter w;
+  body(&w);
+  const std::vector<uint8_t> stream = w.finish();
+  p.insert(p.end(), stream.begin(), stream.end());
+  return p;
+}
+
+void write_valid(VectorWriter* w) {
+  using namespace qmc::tools;
+  const Mesh empty;
+  w->valid("valid_empty_mesh", encode(empty, 12), &empty);
+  const Mesh tetra = make_tetrahedron();
+  w->valid("valid_tetrahedron", encode(tetra, 12), &tetra);
+  const Mesh cube = make_cube();
+  w->valid("valid_cube_8bit", encode(cube, 8), &cube);
+  const Mesh sphere = make_quad_sphere(4);
+  w->valid("valid_quad_sphere", encode(sphere, 12), &sphere);
+  const Mesh torus = make_torus(12, 8);
+  w->valid("valid_torus_quads", encode(torus, 14), &torus);
+  const Mesh prism = make_prism(40);
+  w->valid("valid_prism_40gon_caps", encode(prism, 12), &prism);
+  RandomSoupOptions soup_options;
+  soup_options.vertices = 400;
+  soup_options.faces = 500;
+  const Mesh soup = make_random_soup(7, soup_options);
+  w->valid("valid_random_soup", encode(soup, 16), &soup);
+  const Mesh points = points_only();
+  w->valid("valid_unreferenced_vertices_only", encode(points, 10), &points);
+  w->valid("valid_1bit_positions", encode(sphere, 1), &sphere);
+  w->valid("valid_30bit_positions", encode(sphere, 30), &sphere);
+  const Mesh flat = planar_square_grid();
+  w->valid("valid_flat_axis", encode(flat, 12), &flat);
+  w->valid("valid_text_chunk", encode(cube, 12, {"generator=qmc conformance", "units=m"}), &cube);
+
+  Chunks c = split(encode(cube, 12));
+  c.insert(c.begin() + 1, Chunk{qmc::chunk_type('e', 'x', 'T', 'n'), {1, 2, 3, 4, 5}});
+  c.insert(c.end() - 1, Chunk{qmc::chunk_type('z', 'z', 'z', 'z'), {}});
+  w->valid("valid_unknown_ancillary_chunks", join(c), &cube);
+  c = split(encode(cube, 12));
+  c[0].payload[1] = 7;
+  w->valid("valid_future_minor_version", join(c), &cube);
+}
+
+void write_container_errors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  const std::vector<uint8_t> cube = encode(qmc::tools::make_cube(), 12);
+  std::vector<uint8_t> b = cube;
+  b[1] = 'q';
+  w->invalid("invalid_signature", b, ErrorCode::kBadSignature);
+  w->invalid("invalid_truncated_signature", {cube.begin(), cube.begin() + 5}, ErrorCode::kTruncated);
+  w->invalid("invalid_truncated_in_chunk", {cube.begin(), cube.end() - 20}, ErrorCode::kTruncated);
+  w->invalid("invalid_missing_qend", {cube.begin(), cube.end() - 12}, ErrorCode::kTruncated);
+  b = cube;
+  b[8 + 12 + 2 + 12] ^= 0x01;  // a byte inside CONN's payload
+  w->invalid("invalid_crc", b, ErrorCode::kBadCrc);
+  b = cube;
+  b.push_back(0);
+  w->invalid("invalid_trailing_data", b, ErrorCode::kTrailingData);
+
+  Chunks c = split(cube);
+  c[1].type = qmc::chunk_type('C', 'O', '1', 'N');
+  w->invalid("invalid_chunk_type_not_letters", join(c), ErrorCode::kBadChunkType);
+  b = cube;
+  b[8 + 4 + 3] = 0x80;  // QHDR length = 2^31 + 2
+  w->invalid("invalid_chunk_length", b, ErrorCode::kBadChunkLength);
+  c = split(cube);
+  c.insert(c.begin() + 1, Chunk{qmc::chunk_type('Z', 'Z', 'Z', 'Z'), {}});
+  w->invalid("invalid_unknown_critical_chunk", join(c), ErrorCode::kUnknownCriticalChunk);
+  c = split(cube);
+  c[0].payload[0] = 2;
+  w->invalid("invalid_major_version", join(c), ErrorCode::kUnsupportedVersion);
+  c = split(cube);
+  c[0].payload.push_back(0);
+  w->invalid("invalid_qhdr_length", join(c), ErrorCode::kBadChunkPayload);
+  c = split(cube);
+  c.back().payload.push_back(0);
+  w->invalid("invalid_qend_not_empty", join(c), ErrorCode::kBadChunkPayload);
+}
+
+void write_order_errors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  const Chunks base = split(encode(qmc::tools::make_cube(), 12));  // QHDR CONN POSN QEND
+  w->invalid("invalid_order_conn_first", join({base[1], base[0], base[2], base[3]}), ErrorCode::kChunkOrder);
+  w->invalid("invalid_order_posn_before_conn", join({base[0], base[2], base[1], base[3]}), ErrorCode::kChunkOrder);
+  w->invalid("invalid_order_qend_early", join({base[0], base[1], base[3]}), ErrorCode::kChunkOrder);
+  w->invalid("invalid_order_second_conn", join({base[0], base[1], base[1], base[2], base[3]}), ErrorCode::kChunkOrder);
+  w->invalid("invalid_order_second_qhdr", join({base[0], base[0], base[1], base[2], base[3]}), ErrorCode::kChunkOrder);
+}
+
+void write_connectivity_errors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  const Mesh tetra = qmc::tools::make_tetrahedron();
+  const Chunks base = split(encode(tetra, 12));
+  const size_t conn = find(base, qmc::kChunkConnectivity);
+  auto with_conn = [&](std::vector<uint8_t> payload) {
+    Chunks c = base;
+    c[conn].payload = std::move(payload);
+    return join(c);
+  };
+  std::vector<uint8_t> p = base[conn].payload;
+  p[0] = 9;
+  w->invalid("invalid_conn_unknown_method", with_conn(p), ErrorCode::kUnsupportedFeature);
+  p = base[conn].payload;
+  p[1] = 3;  // vertex_count 3: the fourth vertex cannot be introduced
+  w->invalid("invalid_conn_vertex_beyond_count", with_conn(p), ErrorCode::kBadSymbol);
+  p = base[conn].payload;
+  p.insert(p.begin() + 1, 0x84);  // vertex_count 4 written as 84 00: not shortest form
+  p[2] = 0x00;
+  w->invalid("invalid_conn_varint_not_shortest", with_conn(p), ErrorCode::kBadChunkPayload);
+  p = base[conn].payload;
+  p.push_back(0);
+  w->invalid("invalid_conn_trailing_byte", with_conn(p), ErrorCode::kBadChunkPayload);
+  p = {0, 4, 0xFF, 0xFF, 0xFF, 0xFF, 0x0F};
+  p.insert(p.end(), base[conn].payload.begin() + 3, base[conn].payload.end());
+  w->invalid("invalid_conn_face_count_unjustified", with_conn(p), ErrorCode::kLimitExceeded);
+
+  const size_t A = 65;
+  auto deg3 = [](qmc::BitWriter* b) { qmc::write_code_lengths(b, lengths_of({{0, 1}}, 33)); };
+  w->invalid("invalid_huffman_oversubscribed", with_conn(conn_payload(4, 1, [&](qmc::BitWriter* b) {
+               qmc::write_code_lengths(b, lengths_of({{0, 1}, {1, 1}, {2, 1}}, 33));
+             })), ErrorCode::kBadHuffmanTable);
+  w->invalid("invalid_huffman_incomplete", with_conn(conn_payload(4, 1, [&](qmc::BitWriter* b) {
+               qmc::write_code_lengths(b, lengths_of({{0, 1}, {1, 2}}, 33));
+             })), ErrorCode::kBadHuffmanTable);
+  w->invalid("invalid_huffman_single_symbol_length_2", with_conn(conn_payload(4, 1, [&](qmc::BitWriter* b) {
+               qmc::write_code_lengths(b, lengths_of({{0, 2}}, 33));
+             })), ErrorCode::kBadHuffmanTable);
+  w->invalid("invalid_huffman_symbol_outside_alphabet", with_conn(conn_payload(4, 1, [&](qmc::BitWriter* b) {
+               qmc::write_code_lengths(b, lengths_of({{40, 1}}, 41));
+             })), ErrorCode::kBadHuffmanTable);
+  w->invalid("invalid_conn_recent_slot_empty_list", with_conn(conn_payload(4, 1, [&](qmc::BitWriter* b) {
+               deg3(b);
+               qmc::write_code_lengths(b, lengths_of({{0, 1}, {5, 1}}, A));
+               b->write_bits(0, 1);  // degree 3
+               b->write_bits(1, 1);  // corner symbol 5: slot 4 of an empty list
+             })), ErrorCode::kBadSymbol);
+  w->invalid("invalid_conn_back_distance_too_far", with_conn(conn_payload(4, 1, [&](qmc::BitWriter* b) {
+               deg3(b);
+               qmc::write_code_lengths(b, lengths_of({{0, 1}, {34, 1}}, A));
+               b->write_bits(0, 1);  // degree 3
+               b->write_bits(0, 1);  // new vertex 0
+               b->write_bits(1, 1);  // class 2 distance ...
+               b->write_bits(1, 1);  // ... d = 3 > next_label = 1
+             })), ErrorCode::kBadSymbol);
+  w->invalid("invalid_conn_single_code_bad_word", with_conn(conn_payload(4, 1, [&](qmc::BitWriter* b) {
+               deg3(b);
+               qmc::write_code_lengths(b, lengths_of({{0, 1}}, A));
+               b->write_bits(0, 1);  // degree 3
+               b->write_bits(1, 1);  // '1' is no code word of a one-symbol code
+               b->write_bits(0xFF, 8);
+             })), ErrorCode::kBadSymbol);
+  w->invalid("invalid_conn_degree_unjustified", with_conn(conn_payload(4, 1, [&](qmc::BitWriter* b) {
+               qmc::write_code_lengths(b, lengths_of({{32, 1}}, 33));
+               qmc::write_code_lengths(b, lengths_of({{0, 1}}, A));
+               b->write_bits(0, 1);           // class 32
+               b->write_bits(0x7FFFFFFF, 31);  // degree 3 + 2^32 - 1
+             })), ErrorCode::kLimitExceeded);
+  w->invalid("invalid_conn_truncated_stream", with_conn(conn_payload(100, 3, [&](qmc::BitWriter* b) {
+               deg3(b);
+               qmc::write_code_lengths(b, lengths_of({{0, 1}, {1, 1}}, A));
+               // 19 bits so far; with the padding, the stream holds two faces, not three.
+               b->write_bits(0, 1);
+               b->write_bits(0, 2);
+             })), ErrorCode::kTruncated);
+}
+
+void write_position_errors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  const Chunks base = split(encode(qmc::tools::make_tetrahedron(), 12));
+  const size_t posn = find(base, qmc::kChunkPositions);
+  auto with_posn = [&](std::vector<uint8_t> payload) {
+    Chunks c = base;
+    c[posn].payload = std::move(payload);
+    return join(c);
+  };
+  std::vector<uint8_t> p = base[posn].payload;
+  p[0] = 5;
+  w->invalid("invalid_posn_count_mismatch", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = base[posn].payload;
+  p[1] = 0;
+  w->invalid("invalid_posn_zero_bits", with_posn(p), ErrorCode::kBadChunkPayload);
+  p[1] = 31;
+  w->invalid("invalid_posn_31_bits", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = base[posn].payload;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<uint8_t> nan_bytes;
+  qmc::put_f32le(&nan_bytes, nan);
+  std::copy(nan_bytes.begin(), nan_bytes.end(), p.begin() + 2);
+  w->invalid("invalid_posn_nan_bound", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = base[posn].payload;
+  std::swap_ranges(p.begin() + 2, p.begin() + 6, p.begin() + 14);  // swap min.x and max.x
+  w->invalid("invalid_posn_min_above_max", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = base[posn].payload;
+  p.push_back(0);
+  w->invalid("invalid_posn_trailing_byte", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = base[posn].payload;
+  p.resize(p.size() - 1);
+  w->invalid("invalid_posn_truncated_stream", with_posn(p), ErrorCode::kTruncated);
+
+  // One vertex, no faces: CONN says V = 1.
+  const std::vector<uint8_t> conn_v1 = {0, 1, 0};
+  const float lo[3] = {0, 0, 0}, hi[3] = {1, 1, 1}, flat_hi[3] = {0, 1, 1};
+  auto one_vertex = [&](const float* max, bool negative) {
+    return posn_payload(1, 4, lo, max, [&](qmc::BitWriter* b) {
+      qmc::write_code_lengths(b, lengths_of({{1, 1}}, 5));  // x: class 1 only
+      qmc::write_code_lengths(b, lengths_of({{0, 1}}, 5));
+      qmc::write_code_lengths(b, lengths_of({{0, 1}}, 5));
+      b->write_bits(0, 1);              // x class 1
+      b->write_bits(negative ? 1 : 0, 1);  // sign
+      b->write_bits(0, 2);              // y, z class 0
+    });
+  };
+  w->invalid("invalid_posn_negative_value", join({base[0], {qmc::kChunkConnectivity, conn_v1},
+                                                  {qmc::kChunkPositions, one_vertex(hi, true)}, base.back()}),
+             ErrorCode::kBadSymbol);
+  w->invalid("invalid_posn_flat_axis_nonzero", join({base[0], {qmc::kChunkConnectivity, conn_v1},
+                                                     {qmc::kChunkPositions, one_vertex(flat_hi, false)}, base.back()}),
+             ErrorCode::kBadSymbol);
+  const std::vector<uint8_t> conn_huge = {0, 0xFF, 0xFF, 0xFF, 0xFF, 0x0F, 0};
+  w->invalid("invalid_posn_vertex_count_unjustified",
+             join({base[0], {qmc::kChunkConnectivity, conn_huge},
+                   {qmc::kChunkPositions, posn_payload(0xFFFFFFFFu, 12, lo, hi, [](qmc::BitWriter* b) {
+                      b->write_bits(0xABCD, 16);
+                    })}, base.back()}),
+             ErrorCode::kLimitExceeded);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: qmc-make-vectors DIR   (writes DIR/MANIFEST and DIR/vectors/*.qmc)\n");
+    return 2;
+  }
+  VectorWriter w(argv[1]);
+  write_valid(&w);
+  write_container_errors(&w);
+  write_order_errors(&w);
+  write_connectivity_errors(&w);
+  write_position_errors(&w);
+  w.finish();
+  return 0;
+}

@@ -1,0 +1,47 @@
+// qmc: command-line front end of the codec.
+#include <cstdio>
+#include <cstring>
+#include <string>
+
+#include "commands.h"
+#include "cli_common.h"
+
+namespace {
+
+const char kUsage[] =
+    "qmc - mesh compression codec (format version 1.0, spec/qmc-format.md)\n"
+    "\n"
+    "usage: qmc COMMAND [ARGS]\n"
+    "\n"
+    "commands:\n"
+    "  encode IN OUT.qmc [options]   compress a mesh (.obj .off .ply .stl)\n"
+    "  decode IN.qmc OUT             decompress to .obj, .off or .ply\n"
+    "  info IN.qmc [--json]          chunks, bytes per component, bits per vertex\n"
+    "  verify IN OUT.qmc             decode OUT.qmc and compare it with IN\n"
+    "  conform DIR                   check the conformance vectors listed in DIR/MANIFEST\n"
+    "\n"
+    "Positions are quantized to 12 bits per axis by default, which keeps every\n"
+    "vertex within 1/4096 of the largest bounding-box side (-q to change).\n"
+    "Run 'qmc COMMAND --help' for a command's options.\n"
+    "exit codes: 0 ok, 1 check failed (verify, conform), 2 usage, 3 error\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
+    std::fputs(kUsage, argc < 2 ? stderr : stdout);
+    return argc < 2 ? qmc::cli::kExitUsage : qmc::cli::kExitOk;
+  }
+  const std::string command = argv[1];
+  if (command == "--version") {
+    std::puts("qmc 0.1.0 (format 1.0)");
+    return 0;
+  }
+  if (command == "encode") return qmc::cli::run_encode(argc - 1, argv + 1);
+  if (command == "decode") return qmc::cli::run_decode(argc - 1, argv + 1);
+  if (command == "info") return qmc::cli::run_info(argc - 1, argv + 1);
+  if (command == "verify") return qmc::cli::run_verify(argc - 1, argv + 1);
+  if (command == "conform") return qmc::cli::run_conform(argc - 1, argv + 1);
+  std::fprintf(stderr, "qmc: unknown command '%s'\n\n%s", command.c_str(), kUsage);
+  return qmc::cli::kExitUsage;
+}
