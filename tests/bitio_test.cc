@@ -110,14 +110,20 @@ TEST(ExpGolomb, RejectsTooManyLeadingZerosAndTooLargeValues) {
   r.read_exp_golomb();
   EXPECT_TRUE(r.invalid());
 
-  BitWriter w;  // 32 zeros then 33 ones: value 2^33 - 2, above 2^32 - 2
-  w.write_bits(0, 32);
-  w.write_bits(0xFFFFFFFF, 32);
-  w.write_bits(1, 1);
-  const std::vector<uint8_t> bytes = w.finish();
-  BitReader r2(bytes.data(), bytes.size());
+  // The 32nd zero is rejected at once, even if the stream ends right after it.
+  const uint8_t four_zero_bytes[4] = {0, 0, 0, 0};
+  BitReader r2(four_zero_bytes, 4);
   r2.read_exp_golomb();
   EXPECT_TRUE(r2.invalid());
+  EXPECT_FALSE(r2.overrun());
+  // 31 zeros is the longest prefix: 2^32 - 2 is the largest value.
+  BitWriter w;
+  w.write_bits(0, 31);
+  w.write_bits(0xFFFFFFFF, 32);
+  const std::vector<uint8_t> bytes = w.finish();
+  BitReader r3(bytes.data(), bytes.size());
+  EXPECT_EQ(r3.read_exp_golomb(), 0xFFFFFFFEu);
+  EXPECT_FALSE(r3.invalid());
 }
 
 TEST(Varint, RoundTripsShortestForm) {

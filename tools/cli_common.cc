@@ -1,5 +1,6 @@
 #include "cli_common.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -44,17 +45,50 @@ int usage_error(const char* command, const std::string& message) {
   return kExitUsage;
 }
 
-bool take_option(int argc, char** argv, int* i, const std::string& name, std::string* value) {
-  const std::string arg = argv[*i];
-  if (arg.rfind(name + "=", 0) == 0) {
-    *value = arg.substr(name.size() + 1);
-    return true;
-  }
-  if (arg == name && *i + 1 < argc) {
-    *value = argv[++*i];
-    return true;
-  }
+bool CommandLine::has(const std::string& name) const {
+  for (const std::string& s : switches)
+    if (s == name) return true;
   return false;
+}
+
+static const std::vector<std::string>* find_valued(const CommandSpec& spec, const std::string& name) {
+  for (const std::vector<std::string>& names : spec.valued)
+    for (const std::string& n : names)
+      if (n == name) return &names;
+  return nullptr;
+}
+
+int parse_command_line(const CommandSpec& spec, int argc, char** argv, CommandLine* out) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      std::fputs(spec.help, stdout);
+      return kExitOk;
+    }
+    if (arg.size() < 2 || arg[0] != '-') {
+      out->positional.push_back(arg);
+      continue;
+    }
+    const size_t eq = arg.find('=');
+    const std::string name = arg.substr(0, eq);
+    if (const std::vector<std::string>* names = find_valued(spec, name)) {
+      if (eq != std::string::npos) {
+        out->options.push_back({names->front(), arg.substr(eq + 1)});
+      } else if (i + 1 < argc) {
+        out->options.push_back({names->front(), argv[++i]});
+      } else {
+        return usage_error(spec.name, name + " needs a value");
+      }
+    } else if (eq == std::string::npos &&
+               std::find(spec.switches.begin(), spec.switches.end(), arg) != spec.switches.end()) {
+      out->switches.push_back(arg);
+    } else {
+      return usage_error(spec.name, "unknown option '" + arg + "'");
+    }
+  }
+  if (out->positional.size() < spec.min_positional) return usage_error(spec.name, "missing arguments");
+  if (out->positional.size() > spec.max_positional) return usage_error(spec.name, "too many arguments");
+  return -1;
 }
 
 bool parse_int(const std::string& text, long min, long max, long* out) {

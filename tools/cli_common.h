@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "qmc/decoder.h"
@@ -25,8 +26,26 @@ Status load_mesh(const std::string& path, Mesh* mesh);
 int fail(const char* command, const Status& status);
 int usage_error(const char* command, const std::string& message);
 
-// True if `arg` is --NAME=VALUE or --NAME followed by a value; advances i.
-bool take_option(int argc, char** argv, int* i, const std::string& name, std::string* value);
+// The arguments of one subcommand: switches, options with values, and
+// positional arguments, in the forms `--name`, `--name VALUE`, `--name=VALUE`.
+struct CommandLine {
+  std::vector<std::string> positional;
+  std::vector<std::pair<std::string, std::string>> options;  // canonical name, value
+  std::vector<std::string> switches;
+  bool has(const std::string& name) const;
+};
+
+struct CommandSpec {
+  const char* name;                      // "encode"
+  const char* help;                      // printed for --help
+  std::vector<std::string> switches;     // e.g. {"--quiet"}
+  std::vector<std::vector<std::string>> valued;  // each: canonical name, then aliases
+  size_t min_positional, max_positional;
+};
+
+// Returns -1 to go on, or the exit code to return now (after --help or a
+// usage error, which it has already reported).
+int parse_command_line(const CommandSpec& spec, int argc, char** argv, CommandLine* out);
 bool parse_int(const std::string& text, long min, long max, long* out);
 
 // Largest per-axis quantization step of a decoded file (section 6.4).

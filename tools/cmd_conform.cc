@@ -83,24 +83,11 @@ Status read_manifest(const std::string& dir, std::vector<Entry>* entries) {
 }  // namespace
 
 int run_conform(int argc, char** argv) {
-  std::string dir;
-  bool verbose = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      std::fputs(kHelp, stdout);
-      return kExitOk;
-    } else if (arg == "--verbose") {
-      verbose = true;
-    } else if (!arg.empty() && arg[0] == '-') {
-      return usage_error("conform", "unknown option '" + arg + "'");
-    } else if (dir.empty()) {
-      dir = arg;
-    } else {
-      return usage_error("conform", "too many arguments");
-    }
-  }
-  if (dir.empty()) return usage_error("conform", "needs DIR");
+  CommandLine cl;
+  const CommandSpec spec{"conform", kHelp, {"--verbose"}, {}, 1, 1};
+  if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
+  const std::string& dir = cl.positional[0];
+  const bool verbose = cl.has("--verbose");
   std::vector<Entry> entries;
   if (Status s = read_manifest(dir, &entries); !s.ok()) return fail("conform", s);
   int passed = 0, failed = 0;

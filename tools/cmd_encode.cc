@@ -31,34 +31,25 @@ struct EncodeArgs {
   bool quiet = false;
 };
 
+const CommandSpec kSpec{"encode", kHelp, {"--quiet"}, {{"--bits", "-q"}, {"--text"}}, 2, 2};
+
 int parse(int argc, char** argv, EncodeArgs* args) {
-  for (int i = 1; i < argc; ++i) {
-    std::string value;
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      std::fputs(kHelp, stdout);
-      return -1;
-    } else if (take_option(argc, argv, &i, "--bits", &value) || take_option(argc, argv, &i, "-q", &value)) {
-      long bits = 0;
-      if (!parse_int(value, kMinPositionBits, kMaxPositionBits, &bits))
-        return usage_error("encode", "--bits takes a whole number from 1 to 30, got '" + value + "'");
-      args->options.position_bits = int(bits);
-    } else if (take_option(argc, argv, &i, "--text", &value)) {
+  CommandLine cl;
+  if (int rc = parse_command_line(kSpec, argc, argv, &cl); rc >= 0) return rc;
+  args->input = cl.positional[0];
+  args->output = cl.positional[1];
+  args->quiet = cl.has("--quiet");
+  for (const auto& [name, value] : cl.options) {
+    if (name == "--text") {
       args->options.texts.push_back(value);
-    } else if (arg == "--quiet") {
-      args->quiet = true;
-    } else if (!arg.empty() && arg[0] == '-') {
-      return usage_error("encode", "unknown option '" + arg + "'");
-    } else if (args->input.empty()) {
-      args->input = arg;
-    } else if (args->output.empty()) {
-      args->output = arg;
-    } else {
-      return usage_error("encode", "too many arguments");
+      continue;
     }
+    long bits = 0;
+    if (!parse_int(value, kMinPositionBits, kMaxPositionBits, &bits))
+      return usage_error("encode", "--bits takes a whole number from 1 to 30, got '" + value + "'");
+    args->options.position_bits = int(bits);
   }
-  if (args->output.empty()) return usage_error("encode", "needs IN and OUT.qmc");
-  return 0;
+  return -1;
 }
 
 void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& stats,
@@ -83,7 +74,7 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
 
 int run_encode(int argc, char** argv) {
   EncodeArgs args;
-  if (int rc = parse(argc, argv, &args); rc != 0) return rc < 0 ? kExitOk : rc;
+  if (int rc = parse(argc, argv, &args); rc >= 0) return rc;
   std::vector<uint8_t> input_bytes;
   if (Status s = read_file(args.input, &input_bytes); !s.ok()) return fail("encode", s);
   Mesh mesh;

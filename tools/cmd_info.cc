@@ -92,24 +92,11 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
 }  // namespace
 
 int run_info(int argc, char** argv) {
-  std::string input;
-  bool json = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      std::fputs(kHelp, stdout);
-      return kExitOk;
-    } else if (arg == "--json") {
-      json = true;
-    } else if (!arg.empty() && arg[0] == '-') {
-      return usage_error("info", "unknown option '" + arg + "'");
-    } else if (input.empty()) {
-      input = arg;
-    } else {
-      return usage_error("info", "too many arguments");
-    }
-  }
-  if (input.empty()) return usage_error("info", "needs IN.qmc");
+  CommandLine cl;
+  const CommandSpec spec{"info", kHelp, {"--json"}, {}, 1, 1};
+  if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
+  const std::string& input = cl.positional[0];
+  const bool json = cl.has("--json");
   std::vector<uint8_t> bytes;
   if (Status s = read_file(input, &bytes); !s.ok()) return fail("info", s);
   StreamDecoder decoder;

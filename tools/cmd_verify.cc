@@ -17,23 +17,11 @@ static const char kVerifyHelp[] =
     "quantization step. Exit 0 if both hold, 1 if not, 3 on unreadable input.\n";
 
 int run_verify(int argc, char** argv) {
-  std::string original_path, qmc_path;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      std::fputs(kVerifyHelp, stdout);
-      return kExitOk;
-    } else if (!arg.empty() && arg[0] == '-') {
-      return usage_error("verify", "unknown option '" + arg + "'");
-    } else if (original_path.empty()) {
-      original_path = arg;
-    } else if (qmc_path.empty()) {
-      qmc_path = arg;
-    } else {
-      return usage_error("verify", "too many arguments");
-    }
-  }
-  if (qmc_path.empty()) return usage_error("verify", "needs IN and OUT.qmc");
+  CommandLine cl;
+  const CommandSpec spec{"verify", kVerifyHelp, {}, {}, 2, 2};
+  if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
+  const std::string& original_path = cl.positional[0];
+  const std::string& qmc_path = cl.positional[1];
   Mesh original;
   if (Status s = load_mesh(original_path, &original); !s.ok()) return fail("verify", s);
   std::vector<uint8_t> bytes;

@@ -2,10 +2,10 @@
 // (spec/qmc-format.md section 10) into a directory.
 //
 // Published vectors are frozen: this program exists to show how each was
-// made and to add new ones. Re-running it over conformance/ must leave the
-// existing files byte-identical (tests/conformance_test.cc checks that the
-// committed files still decode as listed; a diff after re-running means the
-// encoder's output changed, which is allowed only with new vector names).
+// made and to add new ones. Re-running it over conformance/ leaves the
+// existing files byte-identical as long as the encoder's output does not
+// change; `git diff conformance/` shows if it did, and such a change must
+// not be committed over existing vectors (give new vectors new names).
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -194,6 +194,27 @@ void write_valid(VectorWriter* w) {
   w->valid("valid_flat_axis", encode(flat, 12), &flat);
   w->valid("valid_text_chunk", encode(cube, 12, {"generator=qmc conformance", "units=m"}), &cube);
 
+  // Awkward bounds and fine steps, so that reconstruction arithmetic other
+  // than spec 6.4's (another operation order, binary32, FMA) changes bits.
+  RandomSoupOptions dense;
+  dense.vertices = 3000;
+  dense.faces = 200;
+  Mesh odd = make_random_soup(21, dense);
+  for (size_t i = 0; i < odd.positions.size(); i += 3) {
+    odd.positions[i] = odd.positions[i] * 4321.123f - 1234.567f;
+    odd.positions[i + 1] = odd.positions[i + 1] * 1.3e-3f + 1e-3f;
+    odd.positions[i + 2] = odd.positions[i + 2] * 3.7f - 7.1f;
+  }
+  w->valid("valid_dequantization_24bit", encode(odd, 24), &odd);
+  w->valid("valid_dequantization_17bit", encode(odd, 17), &odd);
+
+  // Flat axes at -0.0: spec 6.4's formula gives +0.0, a shortcut would give -0.0.
+  Mesh negative_zero;
+  for (int i = 0; i < 4; ++i) negative_zero.positions.insert(negative_zero.positions.end(), {-0.f, float(i), -0.f});
+  negative_zero.face_sizes = {4};
+  negative_zero.corners = {0, 1, 2, 3};
+  w->valid("valid_negative_zero_bounds", encode(negative_zero, 12), &negative_zero);
+
   Chunks c = split(encode(cube, 12));
   c.insert(c.begin() + 1, Chunk{qmc::chunk_type('e', 'x', 'T', 'n'), {1, 2, 3, 4, 5}});
   c.insert(c.end() - 1, Chunk{qmc::chunk_type('z', 'z', 'z', 'z'), {}});
@@ -246,6 +267,11 @@ void write_order_errors(VectorWriter* w) {
   w->invalid("invalid_order_posn_before_conn", join({base[0], base[2], base[1], base[3]}), ErrorCode::kChunkOrder);
   w->invalid("invalid_order_qend_early", join({base[0], base[1], base[3]}), ErrorCode::kChunkOrder);
   w->invalid("invalid_order_second_conn", join({base[0], base[1], base[1], base[2], base[3]}), ErrorCode::kChunkOrder);
+  // Spec 3.6: order rules come before unknown types and before payload checks.
+  w->invalid("invalid_order_unknown_critical_first",
+             join({{qmc::chunk_type('Z', 'Z', 'Z', 'Z'), {}}, base[0], base[1], base[2], base[3]}), ErrorCode::kChunkOrder);
+  w->invalid("invalid_order_qend_early_not_empty", join({base[0], base[1], {qmc::kChunkEnd, {0}}}),
+             ErrorCode::kChunkOrder);
   w->invalid("invalid_order_second_qhdr", join({base[0], base[0], base[1], base[2], base[3]}), ErrorCode::kChunkOrder);
 }
 
@@ -278,6 +304,10 @@ void write_connectivity_errors(VectorWriter* w) {
 
   const size_t A = 65;
   auto deg3 = [](qmc::BitWriter* b) { qmc::write_code_lengths(b, lengths_of({{0, 1}}, 33)); };
+  w->invalid("invalid_conn_unknown_method_no_counts", with_conn({9}), ErrorCode::kUnsupportedFeature);
+  w->invalid("invalid_huffman_exp_golomb_32_zeros", with_conn(conn_payload(4, 1, [&](qmc::BitWriter* b) {
+               b->write_bits(0, 32);  // rejected at the 32nd zero, before the stream ends
+             })), ErrorCode::kBadHuffmanTable);
   w->invalid("invalid_huffman_oversubscribed", with_conn(conn_payload(4, 1, [&](qmc::BitWriter* b) {
                qmc::write_code_lengths(b, lengths_of({{0, 1}, {1, 1}, {2, 1}}, 33));
              })), ErrorCode::kBadHuffmanTable);

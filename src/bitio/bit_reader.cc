@@ -39,26 +39,17 @@ void BitReader::skip_bits(int count) {
 }
 
 uint32_t BitReader::read_exp_golomb() {
+  // Section 7.2: at most 31 leading zeros, so value + 1 < 2^32. The 32nd
+  // zero is rejected as soon as it is read.
   int zeros = 0;
   while (!read_bit()) {
     if (overrun_) return 0;
-    if (++zeros > 32) {
+    if (++zeros == 32) {
       invalid_ = true;
       return 0;
     }
   }
-  // Value + 1 = 1 followed by `zeros` bits; must stay below 2^32.
-  uint64_t v = 1;
-  if (zeros > 16) {
-    v = (v << (zeros - 16)) | read_bits(zeros - 16);
-    v = (v << 16) | read_bits(16);
-  } else {
-    v = (v << zeros) | read_bits(zeros);
-  }
-  if (v - 1 > 0xFFFFFFFEull) {
-    invalid_ = true;
-    return 0;
-  }
+  const uint64_t v = (uint64_t(1) << zeros) | read_bits(zeros);
   return uint32_t(v - 1);
 }
 

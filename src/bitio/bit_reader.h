@@ -20,8 +20,8 @@ class BitReader {
   // The next `count` (0..32) bits without consuming them.
   uint32_t peek_bits(int count) const;
   void skip_bits(int count);
-  // Exp-Golomb order 0 (section 7.2). A prefix of more than 32 zeros is
-  // invalid: sets invalid() and returns 0.
+  // Exp-Golomb order 0 (section 7.2). A prefix of 32 zeros is invalid:
+  // sets invalid() and returns 0.
   uint32_t read_exp_golomb();
 
   uint64_t position() const { return pos_; }

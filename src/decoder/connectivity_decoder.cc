@@ -13,12 +13,14 @@ Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex
   ByteReader in(payload, size);
   uint8_t method_id = 0;
   uint64_t vertices = 0, faces = 0;
-  if (!in.get_u8(&method_id) || !in.get_varint(&vertices) || !in.get_varint(&faces))
-    return Status(ErrorCode::kBadChunkPayload, "CONN header cut short or malformed varint");
-  if (vertices > UINT32_MAX || faces > UINT32_MAX)
-    return Status(ErrorCode::kBadChunkPayload, "CONN counts exceed 2^32 - 1");
+  // Fields are checked in the order of section 5.1.
+  if (!in.get_u8(&method_id)) return Status(ErrorCode::kBadChunkPayload, "CONN payload is empty");
   if (method_id != uint8_t(ConnectivityMethod::kIndexed))
     return Status(ErrorCode::kUnsupportedFeature, "connectivity method " + std::to_string(method_id));
+  if (!in.get_varint(&vertices) || vertices > UINT32_MAX)
+    return Status(ErrorCode::kBadChunkPayload, "CONN vertex_count missing, malformed or above 2^32 - 1");
+  if (!in.get_varint(&faces) || faces > UINT32_MAX)
+    return Status(ErrorCode::kBadChunkPayload, "CONN face_count missing, malformed or above 2^32 - 1");
   Status s = decode_indexed_connectivity(in.cursor(), in.remaining(), uint32_t(vertices), uint32_t(faces), mesh);
   if (!s.ok()) return s;
   *vertex_count = uint32_t(vertices);

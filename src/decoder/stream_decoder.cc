@@ -172,9 +172,10 @@ Status StreamDecoder::State::handle_positions(const uint8_t* payload, uint32_t l
 }
 
 Status StreamDecoder::State::handle_end(uint32_t length) {
-  if (length != 0) return Status(ErrorCode::kBadChunkPayload, "QEND payload must be empty");
+  // Section 3.6: order rules before payload checks.
   if (!connectivity_seen || !positions_seen)
     return order_error(std::string("QEND before ") + (connectivity_seen ? "POSN" : "CONN"));
+  if (length != 0) return Status(ErrorCode::kBadChunkPayload, "QEND payload must be empty");
   complete = true;
   return Status::Ok();
 }
