@@ -22,6 +22,10 @@ const char kHelp[] =
     "  -q, --bits N        position quantization bits per axis, 1..30 (default 12:\n"
     "                      every vertex stays within 1/4096 of the largest\n"
     "                      bounding-box side; see spec section 6.2)\n"
+    "  --connectivity M    auto (default): the quad coder of seed 001 for closed\n"
+    "                      genus-0 or one-boundary pure-quad manifold meshes, the\n"
+    "                      indexed coding otherwise (the reason is printed);\n"
+    "                      indexed: always indexed; quad: quad coder or an error\n"
     "  --text KEY=VALUE    store a teXt chunk (repeatable)\n"
     "  --quiet             print nothing on success\n";
 
@@ -31,7 +35,7 @@ struct EncodeArgs {
   bool quiet = false;
 };
 
-const CommandSpec kSpec{"encode", kHelp, {"--quiet"}, {{"--bits", "-q"}, {"--text"}}, 2, 2};
+const CommandSpec kSpec{"encode", kHelp, {"--quiet"}, {{"--bits", "-q"}, {"--text"}, {"--connectivity"}}, 2, 2};
 
 int parse(int argc, char** argv, EncodeArgs* args) {
   CommandLine cl;
@@ -42,6 +46,13 @@ int parse(int argc, char** argv, EncodeArgs* args) {
   for (const auto& [name, value] : cl.options) {
     if (name == "--text") {
       args->options.texts.push_back(value);
+      continue;
+    }
+    if (name == "--connectivity") {
+      if (value == "auto") args->options.connectivity = ConnectivityChoice::kAuto;
+      else if (value == "indexed") args->options.connectivity = ConnectivityChoice::kIndexed;
+      else if (value == "quad") args->options.connectivity = ConnectivityChoice::kQuad;
+      else return usage_error("encode", "--connectivity takes auto, indexed or quad, got '" + value + "'");
       continue;
     }
     long bits = 0;
@@ -57,8 +68,22 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
   const double v = mesh.vertex_count() ? double(mesh.vertex_count()) : 1.0;
   std::printf("input       %s: %zu vertices, %zu faces, %s\n", args.input.c_str(), mesh.vertex_count(),
               mesh.face_count(), human_bytes(input_bytes).c_str());
-  std::printf("connectivity %s coding (universal fallback for any polygon mesh)\n",
-              connectivity_method_name(stats.method));
+  if (stats.method == ConnectivityMethod::kQuad) {
+    const QuadCoderStats& q = stats.quad;
+    std::printf("connectivity quad coder (seed 001: Q1-Q13, Spirale Reversi), %s, %s:",
+                q.closed ? "closed (one quad cut open)" : "one boundary", quad_coding_name(QuadCoding(q.coding)));
+    for (int c = 0; c < kQuadCodingCount; ++c) {
+      if (q.coding_bits[c] < 0) std::printf(" %s n/a", quad_coding_name(QuadCoding(c)));
+      else std::printf(" %s %.3f", quad_coding_name(QuadCoding(c)), double(q.coding_bits[c]) / v);
+    }
+    std::printf(" bits/vertex\n");
+    if (q.claim_violations)
+      std::printf("             %u times a Q5/Q10/Q12/Q13 was followed by Q1-Q5 (seed 001 4.1 claim fails)\n",
+                  q.claim_violations);
+  } else {
+    std::printf("connectivity indexed coding%s%s\n", stats.fallback_reason.empty() ? "" : "; quad coder not used: ",
+                stats.fallback_reason.c_str());
+  }
   for (const ChunkStats& c : stats.chunks)
     std::printf("  %-4s %10llu bytes  %8.2f bits/vertex\n", chunk_type_name(c.type).c_str(),
                 static_cast<unsigned long long>(c.bytes), 8.0 * double(c.bytes) / v);

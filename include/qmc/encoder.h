@@ -1,6 +1,7 @@
 // qmc encoder: polygon mesh in, .qmc bytes out.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -11,8 +12,16 @@
 
 namespace qmc {
 
+// Which connectivity coding to use (section 5.1).
+enum class ConnectivityChoice : uint8_t {
+  kAuto,     // the quad coder where the mesh is in its scope, else indexed
+  kIndexed,  // always the indexed coding
+  kQuad,     // the quad coder or an error naming why it cannot be used
+};
+
 struct EncodeOptions {
   int position_bits = kDefaultPositionBits;  // 1..30, section 6.1
+  ConnectivityChoice connectivity = ConnectivityChoice::kAuto;
   std::vector<std::string> texts;            // written as teXt chunks ("key=value")
 };
 
@@ -21,13 +30,26 @@ struct ChunkStats {
   uint64_t bytes = 0;  // whole chunk: 12 bytes of framing plus the payload
 };
 
+struct QuadCoderStats {
+  bool closed = false;                   // a quad was cut open (closed mesh)
+  uint8_t coding = 0;                    // chosen coding, spec 5.3.5
+  std::array<int64_t, 5> coding_bits{};  // symbol-stream bits per coding; -1 = not applicable
+  uint32_t claim_violations = 0;         // Q5/Q10/Q12/Q13 followed by Q1-Q5
+  std::array<uint32_t, 14> type_counts{};  // index 1..13
+};
+
 struct EncodeStats {
   ConnectivityMethod method = ConnectivityMethod::kIndexed;
+  std::string fallback_reason;  // why the quad coder was not used (kAuto), empty if it was
+  QuadCoderStats quad;          // filled when method == kQuad
   std::vector<ChunkStats> chunks;
   uint64_t total_bytes = 0;
   // Vertex order of the file: file_vertex[i] is the input index of the
-  // vertex the decoder will output as vertex i (section 5.2.1 relabelling).
+  // vertex the decoder will output as vertex i (sections 5.2.1, 5.3.4).
   std::vector<uint32_t> file_vertex;
+  // Face order of the file: face_source[i] is the input index of the face
+  // the decoder will output as face i.
+  std::vector<uint32_t> face_source;
 };
 
 // Encodes `mesh`. Fails (never silently drops anything) on input the format

@@ -10,9 +10,10 @@ namespace qmc {
 // Section 3.1: the 8-byte file signature.
 inline constexpr uint8_t kSignature[8] = {0x89, 'Q', 'M', 'C', '\r', '\n', 0x1A, '\n'};
 
-// Section 4.1: the format version this library writes and reads.
+// Section 4.1: the format version this library writes and reads. Minor 1
+// added connectivity method 1; files using only method 0 still say 1.0.
 inline constexpr uint8_t kFormatMajor = 1;
-inline constexpr uint8_t kFormatMinor = 0;
+inline constexpr uint8_t kFormatMinor = 1;
 
 // Section 3.2: a chunk payload is at most 2^31 - 1 bytes.
 inline constexpr uint32_t kMaxChunkLength = 0x7FFFFFFFu;
@@ -34,8 +35,20 @@ constexpr bool chunk_is_critical(uint32_t type) { return ((type >> 24) & 0x20u) 
 // Section 5.1: connectivity coding methods recorded in CONN.
 enum class ConnectivityMethod : uint8_t {
   kIndexed = 0,  // universal fallback: any polygon soup (section 5.2)
+  kQuad = 1,     // seed 001 quad coder: Q1..Q13, Spirale Reversi (section 5.3)
 };
 const char* connectivity_method_name(ConnectivityMethod method);
+
+// Section 5.3.5: how method 1 codes its interaction types.
+enum class QuadCoding : uint8_t {
+  kPlain4 = 0,     // 4 bits per type (seed 001 §4.1), always applicable
+  kCodingI = 1,    // seed 001 table 4-2
+  kCodingII = 2,   // table 4-6
+  kCodingIII = 3,  // table 4-8
+  kHuffman = 4,    // canonical Huffman per current class, tables in the stream
+};
+inline constexpr int kQuadCodingCount = 5;
+const char* quad_coding_name(QuadCoding coding);
 
 // Section 6.1: position quantization bits.
 inline constexpr int kMinPositionBits = 1;

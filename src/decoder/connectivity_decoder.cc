@@ -5,6 +5,7 @@
 
 #include "bitio/byte_io.h"
 #include "decoder/indexed_connectivity_decoder.h"
+#include "decoder/quad_connectivity_decoder.h"
 
 namespace qmc {
 
@@ -15,13 +16,19 @@ Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex
   uint64_t vertices = 0, faces = 0;
   // Fields are checked in the order of section 5.1.
   if (!in.get_u8(&method_id)) return Status(ErrorCode::kBadChunkPayload, "CONN payload is empty");
-  if (method_id != uint8_t(ConnectivityMethod::kIndexed))
+  if (method_id > uint8_t(ConnectivityMethod::kQuad))
     return Status(ErrorCode::kUnsupportedFeature, "connectivity method " + std::to_string(method_id));
   if (!in.get_varint(&vertices) || vertices > UINT32_MAX)
     return Status(ErrorCode::kBadChunkPayload, "CONN vertex_count missing, malformed or above 2^32 - 1");
   if (!in.get_varint(&faces) || faces > UINT32_MAX)
     return Status(ErrorCode::kBadChunkPayload, "CONN face_count missing, malformed or above 2^32 - 1");
-  Status s = decode_indexed_connectivity(in.cursor(), in.remaining(), uint32_t(vertices), uint32_t(faces), mesh);
+  Status s;
+  if (method_id == uint8_t(ConnectivityMethod::kIndexed)) {
+    s = decode_indexed_connectivity(in.cursor(), in.remaining(), uint32_t(vertices), uint32_t(faces), mesh);
+  } else {
+    QuadConnectivityInfo quad;
+    s = decode_quad_connectivity(in.cursor(), in.remaining(), uint32_t(vertices), uint32_t(faces), mesh, &quad);
+  }
   if (!s.ok()) return s;
   *vertex_count = uint32_t(vertices);
   *method = ConnectivityMethod(method_id);

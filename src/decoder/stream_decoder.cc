@@ -58,6 +58,7 @@ std::string chunk_type_name(uint32_t type) {
 const char* connectivity_method_name(ConnectivityMethod method) {
   switch (method) {
     case ConnectivityMethod::kIndexed: return "indexed";
+    case ConnectivityMethod::kQuad: return "quad";
   }
   return "unknown";
 }

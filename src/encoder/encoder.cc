@@ -8,7 +8,10 @@
 #include "bitio/byte_io.h"
 #include "encoder/chunk_writer.h"
 #include "encoder/indexed_connectivity_encoder.h"
+#include "decoder/connectivity_decoder.h"
 #include "encoder/position_encoder.h"
+#include "encoder/quad_connectivity_encoder.h"
+#include "encoder/quad_traversal_encoder.h"
 #include "encoder/vertex_order.h"
 
 namespace qmc {
@@ -47,31 +50,96 @@ Status validate(const Mesh& mesh, const EncodeOptions& options) {
 
 void add_chunk(std::vector<uint8_t>* out, EncodeStats* stats, uint32_t type, const std::vector<uint8_t>& payload) {
   write_chunk(out, type, payload);
-  if (stats) stats->chunks.push_back({type, 12 + uint64_t(payload.size())});
+  stats->chunks.push_back({type, 12 + uint64_t(payload.size())});
+}
+
+// The connectivity chosen for the file: CONN payload and the mesh in file
+// order (positions permuted, faces relabelled and reordered).
+struct FileConnectivity {
+  ConnectivityMethod method = ConnectivityMethod::kIndexed;
+  std::vector<uint8_t> payload;
+  Mesh mesh;
+  std::vector<uint32_t> file_vertex, face_source;
+};
+
+std::vector<float> permuted_positions(const Mesh& mesh, const std::vector<uint32_t>& file_vertex) {
+  std::vector<float> out;
+  out.reserve(mesh.positions.size());
+  for (uint32_t v : file_vertex)
+    for (int a = 0; a < 3; ++a) out.push_back(mesh.positions[3 * size_t(v) + a]);
+  return out;
+}
+
+FileConnectivity indexed_connectivity(const Mesh& mesh) {
+  FileConnectivity c;
+  const VertexOrder order = first_reference_order(mesh);
+  c.mesh = relabel(mesh, order);
+  c.payload = encode_indexed_connectivity(c.mesh);
+  c.file_vertex = order.file_vertex;
+  c.face_source.resize(mesh.face_count());
+  for (uint32_t f = 0; f < c.face_source.size(); ++f) c.face_source[f] = f;
+  return c;
+}
+
+// The quad coder (section 5.3), checked by decoding its own output: a mesh
+// it would get wrong goes to the indexed coding instead, with the reason.
+std::string quad_connectivity(const Mesh& mesh, FileConnectivity* c, QuadCoderStats* stats) {
+  QuadTraversal traversal;
+  if (std::string why = encode_quad_traversal(mesh, &traversal); !why.empty()) return why;
+  QuadCodingChoice choice;
+  c->method = ConnectivityMethod::kQuad;
+  c->payload = encode_quad_connectivity(traversal, uint32_t(mesh.vertex_count()), &choice);
+  c->mesh.face_sizes.assign(traversal.faces.size() / 4, 4);
+  c->mesh.corners = traversal.faces;
+  c->mesh.positions = permuted_positions(mesh, traversal.file_vertex);
+  c->file_vertex = std::move(traversal.file_vertex);
+  c->face_source = std::move(traversal.face_source);
+  Mesh check;
+  uint32_t vertices = 0;
+  ConnectivityMethod method;
+  const Status decoded = decode_connectivity(c->payload.data(), c->payload.size(), &vertices, &method, &check);
+  if (!decoded.ok() || check.corners != c->mesh.corners || vertices != mesh.vertex_count())
+    return "internal: the quad coder's output did not decode to the input (" + decoded.to_string() + ")";
+  stats->closed = traversal.closed;
+  stats->coding = choice.coding;
+  stats->coding_bits = choice.stream_bits;
+  stats->claim_violations = traversal.claim_violations;
+  for (uint8_t t : traversal.types) ++stats->type_counts[t];
+  return {};
 }
 
 }  // namespace
 
 Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* out, EncodeStats* stats) {
   if (Status s = validate(mesh, options); !s.ok()) return s;
-  const VertexOrder order = first_reference_order(mesh);
-  const Mesh file_mesh = relabel(mesh, order);
+  EncodeStats local;
+  EncodeStats& st = stats ? *stats : local;
+  st = EncodeStats{};
+  FileConnectivity conn;
+  bool quad = false;
+  if (options.connectivity != ConnectivityChoice::kIndexed) {
+    const std::string why = quad_connectivity(mesh, &conn, &st.quad);
+    quad = why.empty();
+    if (!quad && options.connectivity == ConnectivityChoice::kQuad)
+      return invalid("the quad coder cannot take this mesh: " + why);
+    st.fallback_reason = why;
+  }
+  if (!quad) conn = indexed_connectivity(mesh);
 
   out->clear();
-  if (stats) *stats = EncodeStats{};
   write_signature(out);
-  add_chunk(out, stats, kChunkHeader, {kFormatMajor, kFormatMinor});
+  // The lowest minor version that defines everything in the file (4.1).
+  const uint8_t minor = quad ? 1 : 0;
+  add_chunk(out, &st, kChunkHeader, {kFormatMajor, minor});
   for (const std::string& text : options.texts)
-    add_chunk(out, stats, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));
-  add_chunk(out, stats, kChunkConnectivity, encode_indexed_connectivity(file_mesh));
-  add_chunk(out, stats, kChunkPositions,
-            encode_positions(quantize_positions(file_mesh.positions, options.position_bits)));
-  add_chunk(out, stats, kChunkEnd, {});
-  if (stats) {
-    stats->method = ConnectivityMethod::kIndexed;
-    stats->total_bytes = out->size();
-    stats->file_vertex = order.file_vertex;
-  }
+    add_chunk(out, &st, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));
+  add_chunk(out, &st, kChunkConnectivity, conn.payload);
+  add_chunk(out, &st, kChunkPositions, encode_positions(quantize_positions(conn.mesh.positions, options.position_bits)));
+  add_chunk(out, &st, kChunkEnd, {});
+  st.method = conn.method;
+  st.total_bytes = out->size();
+  st.file_vertex = std::move(conn.file_vertex);
+  st.face_source = std::move(conn.face_source);
   return Status::Ok();
 }
 

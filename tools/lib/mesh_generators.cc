@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "subdivision.h"
+
 namespace qmc::tools {
 namespace {
 
@@ -85,6 +87,58 @@ UnitVector unit_circle(uint64_t k, uint64_t n) {
 // lone float product needs no such care: nothing is there to fuse it with.)
 float sum_of_products(float a, float b, float c, float d) {
   return static_cast<float>(static_cast<double>(a) * b + static_cast<double>(c) * d);
+}
+
+// ---------------------------------------------------------------------------
+// Exact arithmetic in Z[phi], phi the golden ratio (phi^2 = phi + 1): the
+// icosahedron's coordinates, and the sums and dot products built from them,
+// are a + b*phi with small integers a, b. Topology and squared lengths are
+// decided exactly; only the final normalisation rounds, and it evaluates
+// b*phi by repeated addition so no product exists that a compiler could
+// fuse into a multiply-add.
+
+struct Golden {
+  int64_t a = 0, b = 0;  // a + b*phi
+
+  Golden operator+(Golden o) const { return {a + o.a, b + o.b}; }
+  Golden operator-(Golden o) const { return {a - o.a, b - o.b}; }
+  Golden operator*(Golden o) const { return {a * o.a + b * o.b, a * o.b + b * o.a + b * o.b}; }
+  bool operator==(Golden o) const { return a == o.a && b == o.b; }
+
+  double value() const {
+    constexpr double kPhi = 1.6180339887498948482;
+    double multiple = 0;
+    for (int64_t i = 0; i < (b < 0 ? -b : b); ++i) multiple += kPhi;
+    return (b < 0 ? -multiple : multiple) + static_cast<double>(a);
+  }
+};
+
+struct GoldenVector {
+  Golden c[3];
+
+  GoldenVector operator+(const GoldenVector& o) const { return {{c[0] + o.c[0], c[1] + o.c[1], c[2] + o.c[2]}}; }
+  GoldenVector operator-(const GoldenVector& o) const { return {{c[0] - o.c[0], c[1] - o.c[1], c[2] - o.c[2]}}; }
+  Golden dot(const GoldenVector& o) const { return c[0] * o.c[0] + c[1] * o.c[1] + c[2] * o.c[2]; }
+  GoldenVector cross(const GoldenVector& o) const {
+    return {{c[1] * o.c[2] - c[2] * o.c[1], c[2] * o.c[0] - c[0] * o.c[2], c[0] * o.c[1] - c[1] * o.c[0]}};
+  }
+};
+
+void add_unit_vertex(Mesh* mesh, const GoldenVector& direction) {
+  const double length = std::sqrt(direction.dot(direction).value());
+  for (const Golden& coordinate : direction.c) mesh->positions.push_back(static_cast<float>(coordinate.value() / length));
+}
+
+// x / |x| for a float vector; x*x is exact in double, so fusing it into the
+// following addition changes nothing.
+void project_to_unit_sphere(Mesh* mesh) {
+  for (size_t v = 0; v < mesh->vertex_count(); ++v) {
+    float* p = &mesh->positions[3 * v];
+    const double x = p[0], y = p[1], z = p[2];
+    const double length = std::sqrt(x * x + y * y + z * z);
+    if (length == 0) continue;
+    for (int axis = 0; axis < 3; ++axis) p[axis] = static_cast<float>(static_cast<double>(p[axis]) / length);
+  }
 }
 
 // ---------------------------------------------------------------------------
@@ -300,6 +354,75 @@ Mesh make_prism(int n) {
   for (uint32_t k = sides; k > 0; --k) mesh.corners.push_back(k - 1);
   mesh.face_sizes.push_back(sides);
   for (uint32_t k = 0; k < sides; ++k) mesh.corners.push_back(sides + k);
+  return mesh;
+}
+
+Mesh make_deltoidal_hexecontahedron() {
+  // Icosahedron: cyclic permutations of (0, +-1, +-phi); edges have squared
+  // length exactly 4, non-edges more.
+  std::vector<GoldenVector> ico;
+  for (int rotation = 0; rotation < 3; ++rotation) {
+    for (int s1 : {1, -1}) {
+      for (int s2 : {1, -1}) {
+        GoldenVector p;
+        p.c[(rotation + 1) % 3] = {s1, 0};
+        p.c[(rotation + 2) % 3] = {0, s2};
+        ico.push_back(p);
+      }
+    }
+  }
+  const Golden kEdgeLength2{4, 0};
+  auto adjacent = [&](size_t i, size_t j) { return (ico[i] - ico[j]).dot(ico[i] - ico[j]) == kEdgeLength2; };
+  std::vector<std::vector<uint32_t>> triangles;
+  for (uint32_t i = 0; i < 12; ++i) {
+    for (uint32_t j = i + 1; j < 12; ++j) {
+      if (!adjacent(i, j)) continue;
+      for (uint32_t k = j + 1; k < 12; ++k) {
+        if (!adjacent(i, k) || !adjacent(j, k)) continue;
+        // Outward when the triple product is positive; it is +-(2 + 2 phi),
+        // far from zero, so its rounded value has the right sign.
+        const bool outward = ico[i].dot(ico[j].cross(ico[k])).value() > 0;
+        triangles.push_back(outward ? std::vector<uint32_t>{i, j, k} : std::vector<uint32_t>{i, k, j});
+      }
+    }
+  }
+
+  Mesh mesh;
+  for (const GoldenVector& p : ico) add_unit_vertex(&mesh, p);
+  for (const auto& t : triangles) add_unit_vertex(&mesh, ico[t[0]] + ico[t[1]] + ico[t[2]]);
+  // Edge vertices numbered by first appearance walking the triangles, as
+  // Catmull-Clark numbers its edge points.
+  std::vector<uint32_t> edge_index(12 * 12, 0);
+  for (const auto& t : triangles) {
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t a = t[i];
+      const uint32_t b = t[(i + 1) % 3];
+      if (edge_index[a * 12 + b] != 0) continue;
+      edge_index[a * 12 + b] = edge_index[b * 12 + a] = static_cast<uint32_t>(mesh.vertex_count());
+      add_unit_vertex(&mesh, ico[a] + ico[b]);
+    }
+  }
+  for (uint32_t f = 0; f < triangles.size(); ++f) {
+    const auto& t = triangles[f];
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t v = t[i];
+      const uint32_t next = t[(i + 1) % 3];
+      const uint32_t prev = t[(i + 2) % 3];
+      add_face(&mesh, {v, edge_index[v * 12 + next], static_cast<uint32_t>(ico.size()) + f, edge_index[prev * 12 + v]});
+    }
+  }
+  return mesh;
+}
+
+Mesh make_refined_sphere(int levels) {
+  Mesh mesh = make_deltoidal_hexecontahedron();
+  for (int level = 0; level < std::clamp(levels, 0, 10); ++level) {
+    Mesh finer;
+    // Cannot fail: every step's input is a closed, oriented manifold.
+    if (!catmull_clark(mesh, &finer).ok()) break;
+    project_to_unit_sphere(&finer);
+    mesh = std::move(finer);
+  }
   return mesh;
 }
 

@@ -33,6 +33,22 @@ qmc::Mesh make_torus(int major, int minor, float R = 1.f, float r = 0.35f);
 // bump, faces counter-clockwise seen from +z. Sizes below 1 are treated as 1.
 qmc::Mesh make_grid(int nx, int ny);
 
+// Deltoidal hexecontahedron with its vertices on the unit sphere: the thesis's
+// "60-quad sphere". 62 vertices -- the 12 icosahedron vertices (valence 5),
+// then the 20 icosahedron face centres (the dodecahedron's vertices, valence
+// 3), then the 30 icosahedron edge midpoints (valence 4), each direction
+// normalised -- and 60 kites, closed, genus 0, outward. It is numbered like
+// one Catmull-Clark step of the icosahedron (see subdivision.h): for each
+// icosahedron face, one kite per corner, (vertex, edge, centre, edge). On the
+// sphere the kites are slightly non-planar.
+qmc::Mesh make_deltoidal_hexecontahedron();
+
+// The deltoidal hexecontahedron after `levels` Catmull-Clark steps, every
+// vertex projected back to the unit sphere after each step: 60 * 4^levels
+// quads, 60 * 4^levels + 2 vertices (levels 5: 61440 quads; levels 7:
+// 983040). levels is clamped to [0, 10].
+qmc::Mesh make_refined_sphere(int levels);
+
 // n-sided prism: n quads around, two n-gon caps; 2n vertices, outward.
 // n < 3 is treated as 3.
 qmc::Mesh make_prism(int n);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "encoder/quad_traversal_encoder.h"
+
 namespace qmc::tools {
 
 std::vector<uint32_t> spec_vertex_order(const Mesh& mesh) {
@@ -20,19 +22,51 @@ std::vector<uint32_t> spec_vertex_order(const Mesh& mesh) {
   return order;
 }
 
+bool spec_correspondence(const Mesh& original, ConnectivityMethod method, Correspondence* c, std::string* why) {
+  if (method == ConnectivityMethod::kQuad) {
+    QuadTraversal traversal;
+    *why = encode_quad_traversal(original, &traversal);
+    if (!why->empty()) return false;
+    c->file_vertex = std::move(traversal.file_vertex);
+    c->face_source = std::move(traversal.face_source);
+    return true;
+  }
+  c->file_vertex = spec_vertex_order(original);
+  c->face_source.resize(original.face_count());
+  for (uint32_t f = 0; f < c->face_source.size(); ++f) c->face_source[f] = f;
+  return true;
+}
+
 namespace {
 
-std::string compare_faces(const Mesh& original, const Mesh& decoded, const std::vector<uint32_t>& label) {
-  if (original.face_sizes.size() != decoded.face_sizes.size())
-    return "face count " + std::to_string(decoded.face_sizes.size()) + " instead of " +
-           std::to_string(original.face_sizes.size());
-  if (original.corners.size() != decoded.corners.size()) return "corner count differs";
+// Rotation (never reversal) of `source` relabelled that equals `decoded`.
+bool same_cycle(const uint32_t* source, const uint32_t* decoded, uint32_t n, const std::vector<uint32_t>& label) {
+  for (uint32_t r = 0; r < n; ++r) {
+    uint32_t i = 0;
+    while (i < n && label[source[(i + r) % n]] == decoded[i]) ++i;
+    if (i == n) return true;
+  }
+  return false;
+}
+
+std::string compare_faces(const Mesh& original, const Mesh& decoded, const Correspondence& c,
+                          const std::vector<uint32_t>& label) {
+  if (original.face_count() != decoded.face_count() || c.face_source.size() != decoded.face_count())
+    return "face count " + std::to_string(decoded.face_count()) + " instead of " +
+           std::to_string(original.face_count());
+  std::vector<size_t> offset(original.face_count() + 1, 0);
+  for (size_t f = 0; f < original.face_count(); ++f) offset[f + 1] = offset[f] + original.face_sizes[f];
+  std::vector<bool> used(original.face_count(), false);
   size_t k = 0;
-  for (size_t f = 0; f < original.face_sizes.size(); ++f) {
-    if (original.face_sizes[f] != decoded.face_sizes[f]) return "face " + std::to_string(f) + " degree differs";
-    for (uint32_t i = 0; i < original.face_sizes[f]; ++i, ++k)
-      if (label[original.corners[k]] != decoded.corners[k])
-        return "face " + std::to_string(f) + " corner " + std::to_string(i) + " differs";
+  for (size_t f = 0; f < decoded.face_count(); ++f) {
+    const uint32_t src = c.face_source[f];
+    if (src >= original.face_count() || used[src]) return "face " + std::to_string(f) + " has no distinct source";
+    used[src] = true;
+    const uint32_t n = decoded.face_sizes[f];
+    if (original.face_sizes[src] != n) return "face " + std::to_string(f) + " degree differs";
+    if (!same_cycle(&original.corners[offset[src]], &decoded.corners[k], n, label))
+      return "face " + std::to_string(f) + " (input face " + std::to_string(src) + ") differs";
+    k += n;
   }
   return {};
 }
@@ -46,16 +80,33 @@ double float_ulp(double x) {
 }  // namespace
 
 RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decoded) {
+  Correspondence c;
+  std::string why;
+  if (!spec_correspondence(original, decoded.method, &c, &why)) {
+    RoundTripReport report;
+    report.face_mismatch = "the file uses the quad coder but the input is outside its scope: " + why;
+    return report;
+  }
+  return check_round_trip(original, decoded, c);
+}
+
+RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decoded, const Correspondence& c) {
   RoundTripReport report;
-  const std::vector<uint32_t> order = spec_vertex_order(original);
-  if (decoded.mesh.vertex_count() != original.vertex_count()) {
+  const std::vector<uint32_t>& order = c.file_vertex;
+  if (decoded.mesh.vertex_count() != original.vertex_count() || order.size() != original.vertex_count()) {
     report.face_mismatch = "vertex count " + std::to_string(decoded.mesh.vertex_count()) + " instead of " +
                            std::to_string(original.vertex_count());
     return report;
   }
-  std::vector<uint32_t> label(order.size());
-  for (uint32_t i = 0; i < order.size(); ++i) label[order[i]] = i;
-  report.face_mismatch = compare_faces(original, decoded.mesh, label);
+  std::vector<uint32_t> label(order.size(), UINT32_MAX);
+  for (uint32_t i = 0; i < order.size(); ++i) {
+    if (order[i] >= label.size() || label[order[i]] != UINT32_MAX) {
+      report.face_mismatch = "the vertex correspondence is not a permutation";
+      return report;
+    }
+    label[order[i]] = i;
+  }
+  report.face_mismatch = compare_faces(original, decoded.mesh, c, label);
   report.faces_equal = report.face_mismatch.empty();
 
   const QuantizationInfo& q = decoded.quantization;

@@ -17,6 +17,16 @@ namespace qmc::tools {
 // unreferenced vertices in input order.
 std::vector<uint32_t> spec_vertex_order(const Mesh& mesh);
 
+// Which input vertex and face each decoded vertex and face stands for.
+struct Correspondence {
+  std::vector<uint32_t> file_vertex;  // decoded vertex -> input vertex
+  std::vector<uint32_t> face_source;  // decoded face -> input face
+};
+
+// The correspondence the spec defines for `method`: section 5.2.1 for the
+// indexed coding, the traversal of section 5.3.3-5.3.4 for the quad coder.
+bool spec_correspondence(const Mesh& original, ConnectivityMethod method, Correspondence* c, std::string* why);
+
 struct RoundTripReport {
   bool faces_equal = false;
   std::string face_mismatch;        // first difference, if any
@@ -27,8 +37,12 @@ struct RoundTripReport {
   bool ok() const { return faces_equal && positions_within_bound; }
 };
 
-// Faces must match exactly after relabelling; every coordinate must lie
-// within half a quantization step (plus binary32 rounding) of the input.
+// Every decoded face must be its source face relabelled (for the quad coder
+// possibly starting at another corner, never reversed); every coordinate
+// must lie within half a quantization step (plus binary32 rounding) of the
+// input.
+RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decoded, const Correspondence& c);
+// The same with the spec's correspondence for the file's method.
 RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decoded);
 
 }  // namespace qmc::tools
