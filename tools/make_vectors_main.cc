@@ -59,9 +59,13 @@ size_t find(const Chunks& chunks, uint32_t type) {
   std::exit(3);
 }
 
-std::vector<uint8_t> encode(const Mesh& mesh, int bits, std::vector<std::string> texts = {}) {
+// Vectors of format 1.0 use the indexed coding, whatever the encoder would
+// choose by itself today: they are frozen (see the top of this file).
+std::vector<uint8_t> encode(const Mesh& mesh, int bits, std::vector<std::string> texts = {},
+                            qmc::ConnectivityChoice connectivity = qmc::ConnectivityChoice::kIndexed) {
   qmc::EncodeOptions options;
   options.position_bits = bits;
+  options.connectivity = connectivity;
   options.texts = std::move(texts);
   std::vector<uint8_t> out;
   if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
