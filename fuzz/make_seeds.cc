@@ -18,13 +18,26 @@ static void write(const fs::path& path, const uint8_t* data, size_t size) {
   out.write(reinterpret_cast<const char*>(data), std::streamsize(size));
 }
 
+// quad_connectivity input: face_count as u16, then the method-1 data.
+static void write_quad_seed(const fs::path& path, const uint8_t* payload, size_t size) {
+  qmc::ByteReader in(payload, size);
+  uint8_t method = 0;
+  uint64_t vertices = 0, faces = 0;
+  if (!in.get_u8(&method) || method != 1 || !in.get_varint(&vertices) || !in.get_varint(&faces) || faces > 0xFFFF)
+    return;
+  std::vector<uint8_t> seed{uint8_t(faces), uint8_t(faces >> 8)};
+  seed.insert(seed.end(), in.cursor(), in.cursor() + in.remaining());
+  write(path, seed.data(), seed.size());
+}
+
 int main(int argc, char** argv) {
   if (argc != 3) {
     std::fprintf(stderr, "usage: make_seeds VECTORS_DIR OUT_DIR\n");
     return 2;
   }
   const fs::path out = argv[2];
-  for (const char* t : {"decode_file", "stream_decoder", "connectivity", "positions", "huffman", "roundtrip"})
+  for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "positions", "huffman",
+                        "roundtrip"})
     fs::create_directories(out / t);
   int n = 0;
   for (const auto& entry : fs::directory_iterator(argv[1])) {
@@ -44,6 +57,7 @@ int main(int argc, char** argv) {
       const uint8_t* payload = &bytes[pos + 8];
       if (type == qmc::kChunkConnectivity) {
         write(out / "connectivity" / name, payload, length);
+        write_quad_seed(out / "quad_connectivity" / name, payload, length);
         if (length > 3) {  // the bit stream starts with the degree table
           std::vector<uint8_t> h{33};
           h.insert(h.end(), payload + 3, payload + length);

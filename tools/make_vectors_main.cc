@@ -19,6 +19,8 @@
 #include "bitio/huffman.h"
 #include "encoder/chunk_writer.h"
 #include "mesh_generators.h"
+#include "quad_disk_generator.h"
+#include "decoder/spirale_reversi_decoder.h"
 #include "qmc/decoder.h"
 #include "qmc/encoder.h"
 #include "roundtrip_check.h"
@@ -421,6 +423,116 @@ void write_position_errors(VectorWriter* w) {
              ErrorCode::kLimitExceeded);
 }
 
+// Format 1.1: connectivity method 1, the quad coder (spec 5.3).
+std::vector<uint8_t> encode_quads(const Mesh& mesh, int coding = -1) {
+  qmc::EncodeOptions options;
+  options.connectivity = qmc::ConnectivityChoice::kQuad;
+  options.quad_coding = coding;
+  std::vector<uint8_t> out;
+  if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: %s\n", s.to_string().c_str());
+    std::exit(3);
+  }
+  return out;
+}
+
+Mesh decoded_disk(const std::vector<uint8_t>& types) {
+  Mesh m;
+  qmc::spirale_reversi_decode(types, false, UINT32_MAX, &m);
+  uint32_t n = 0;
+  for (uint32_t v : m.corners) n = std::max(n, v + 1);
+  for (uint32_t i = 0; i < n; ++i) m.positions.insert(m.positions.end(), {float(i % 7), float(i / 7), float(i % 3)});
+  return m;
+}
+
+// A random disk in which all thirteen interaction types occur.
+Mesh all_types_disk() {
+  for (uint64_t seed = 1;; ++seed) {
+    const std::vector<uint8_t> types = qmc::tools::random_quad_sequence(seed, 80);
+    bool seen[14] = {};
+    for (uint8_t t : types) seen[t] = true;
+    bool all = true;
+    for (int t = 1; t <= 13; ++t) all = all && seen[t];
+    if (all) return decoded_disk(types);
+  }
+}
+
+void write_quad_valid(VectorWriter* w) {
+  using namespace qmc::tools;
+  const Mesh sphere = make_refined_sphere(1);  // 240 quads, closed
+  const char* names[] = {"plain", "coding_i", "coding_ii", "coding_iii", "huffman"};
+  for (int c = 0; c < qmc::kQuadCodingCount; ++c)
+    w->valid(std::string("valid_quad_sphere240_") + names[c], encode_quads(sphere, c), &sphere);
+  const Mesh thesis = decoded_disk({13, 6, 6, 5, 12, 12, 6, 6, 12, 12, 9, 1, 6, 1});
+  w->valid("valid_quad_thesis_example_coding_i", encode_quads(thesis, 1), &thesis);
+  const Mesh all = all_types_disk();
+  w->valid("valid_quad_all_thirteen_types", encode_quads(all), &all);
+  const Mesh grid = make_grid(6, 4);
+  w->valid("valid_quad_grid_one_boundary", encode_quads(grid), &grid);
+  Mesh doublet = make_grid(4, 4);  // quad 5 split in two around a valence-2 vertex
+  const uint32_t a = doublet.corners[20], c2 = doublet.corners[22], d = doublet.corners[23];
+  const uint32_t v = uint32_t(doublet.vertex_count());
+  for (int k = 0; k < 3; ++k) doublet.positions.push_back(0.5f * (doublet.positions[3 * a + k] + doublet.positions[3 * c2 + k]));
+  doublet.corners[23] = v;
+  doublet.face_sizes.push_back(4);
+  doublet.corners.insert(doublet.corners.end(), {a, v, c2, d});
+  w->valid("valid_quad_valence_two_vertex", encode_quads(doublet), &doublet);
+  Mesh cube = make_cube();
+  cube.positions.insert(cube.positions.end(), {9, 9, 9, -9, 9, 9, 9, -9, 9});
+  w->valid("valid_quad_cube_unreferenced_vertices", encode_quads(cube), &cube);
+  Mesh pillow;
+  pillow.positions = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  pillow.face_sizes = {4, 4};
+  pillow.corners = {0, 1, 2, 3, 3, 2, 1, 0};
+  w->valid("valid_quad_two_quad_pillow", encode_quads(pillow), &pillow);
+}
+
+// Method-1 CONN payload with types in the plain 4-bit coding, or raw stream bytes.
+std::vector<uint8_t> quad_conn(uint64_t vertices, uint64_t faces, uint8_t flags, uint8_t coding,
+                               const std::vector<uint8_t>& plain_types, std::vector<uint8_t> raw = {}) {
+  std::vector<uint8_t> p{1};
+  qmc::put_varint(&p, vertices);
+  qmc::put_varint(&p, faces);
+  p.push_back(flags);
+  p.push_back(coding);
+  if (raw.empty()) {
+    qmc::BitWriter bits;
+    for (uint8_t t : plain_types) bits.write_bits(uint32_t(t - 1), 4);
+    raw = bits.finish();
+  }
+  p.insert(p.end(), raw.begin(), raw.end());
+  return p;
+}
+
+void write_quad_errors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  const Chunks base = split(encode_quads(qmc::tools::make_cube()));
+  const size_t conn = find(base, qmc::kChunkConnectivity);
+  auto with_conn = [&](std::vector<uint8_t> payload) {
+    Chunks c = base;
+    c[conn].payload = std::move(payload);
+    return join(c);
+  };
+  // Types are listed in stream (encoder) order; the decoder applies them last to first.
+  w->invalid("invalid_quad_no_boundary_for_q5", with_conn(quad_conn(8, 2, 0, 0, {1, 5})), ErrorCode::kBadSymbol);
+  w->invalid("invalid_quad_empty_loop_stack", with_conn(quad_conn(8, 2, 0, 0, {3, 1})), ErrorCode::kBadSymbol);
+  w->invalid("invalid_quad_q8_one_loop", with_conn(quad_conn(8, 3, 0, 0, {8, 1, 1})), ErrorCode::kBadSymbol);
+  w->invalid("invalid_quad_q13_on_four_edges", with_conn(quad_conn(8, 2, 0, 0, {13, 1})), ErrorCode::kBadSymbol);
+  w->invalid("invalid_quad_loop_left_over", with_conn(quad_conn(8, 2, 0, 0, {1, 1})), ErrorCode::kBadSymbol);
+  w->invalid("invalid_quad_closed_six_edges_left", with_conn(quad_conn(8, 3, 1, 0, {2, 1})), ErrorCode::kBadSymbol);
+  w->invalid("invalid_quad_labels_beyond_vertex_count", with_conn(quad_conn(5, 2, 0, 0, {6, 1})), ErrorCode::kBadSymbol);
+  w->invalid("invalid_quad_edge_used_twice", with_conn(quad_conn(8, 3, 0, 0, {13, 2, 1})), ErrorCode::kBadSymbol);
+  w->invalid("invalid_quad_reserved_flags", with_conn(quad_conn(8, 1, 2, 0, {1})), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_quad_unknown_coding", with_conn(quad_conn(8, 1, 0, 5, {1})), ErrorCode::kUnsupportedFeature);
+  w->invalid("invalid_quad_closed_one_face", with_conn(quad_conn(8, 1, 1, 0, {})), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_quad_plain_value_13", with_conn(quad_conn(8, 1, 0, 0, {}, {0xD0})), ErrorCode::kBadSymbol);
+  w->invalid("invalid_quad_coding_iii_unused_word", with_conn(quad_conn(8, 1, 0, 3, {}, {0xF8})), ErrorCode::kBadSymbol);
+  w->invalid("invalid_quad_last_announces_class_a", with_conn(quad_conn(8, 1, 0, 1, {}, {0x00})), ErrorCode::kBadSymbol);
+  w->invalid("invalid_quad_count_unjustified", with_conn(quad_conn(8, 40, 0, 0, {1})), ErrorCode::kLimitExceeded);
+  w->invalid("invalid_quad_truncated_codes", with_conn(quad_conn(8, 3, 0, 0, {6, 1})), ErrorCode::kTruncated);
+  w->invalid("invalid_quad_trailing_byte", with_conn(quad_conn(8, 1, 0, 0, {}, {0x00, 0x00})), ErrorCode::kBadChunkPayload);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -434,6 +546,8 @@ int main(int argc, char** argv) {
   write_order_errors(&w);
   write_connectivity_errors(&w);
   write_position_errors(&w);
+  write_quad_valid(&w);
+  write_quad_errors(&w);
   w.finish();
   return 0;
 }

@@ -22,6 +22,9 @@ enum class ConnectivityChoice : uint8_t {
 struct EncodeOptions {
   int position_bits = kDefaultPositionBits;  // 1..30, section 6.1
   ConnectivityChoice connectivity = ConnectivityChoice::kAuto;
+  // Quad coder only: force a coding (0..4, section 5.3.5); -1 picks the
+  // smallest. A forced coding that cannot express the mesh is an error.
+  int quad_coding = -1;
   std::vector<std::string> texts;            // written as teXt chunks ("key=value")
 };
 

@@ -77,6 +77,28 @@ class SpiraleReversi {
   Loop current_;
 };
 
+// Spec 5.3.6: every directed edge at most once. Q13 links g0 -> g1, which a
+// stream can ask for where the decoded part already joins g0 and g1 by an
+// interior edge; the face list would then not be a manifold mesh. Linear:
+// outgoing edges grouped per vertex, duplicates found with a marker array.
+Status check_edges_unique(const Mesh& mesh, uint32_t vertices) {
+  std::vector<uint32_t> start(size_t(vertices) + 1, 0);
+  for (uint32_t v : mesh.corners) ++start[v + 1];
+  for (uint32_t v = 0; v < vertices; ++v) start[v + 1] += start[v];
+  std::vector<uint32_t> target(mesh.corners.size()), fill(start.begin(), start.end() - 1);
+  for (size_t f = 0; f < mesh.face_count(); ++f)
+    for (int i = 0; i < 4; ++i) target[fill[mesh.corners[4 * f + i]]++] = mesh.corners[4 * f + (i + 1) % 4];
+  std::vector<uint32_t> mark(vertices, UINT32_MAX);
+  for (uint32_t v = 0; v < vertices; ++v)
+    for (uint32_t k = start[v]; k < start[v + 1]; ++k) {
+      if (mark[target[k]] == v)
+        return Status(ErrorCode::kBadSymbol, "CONN: the quads use edge " + std::to_string(v) + "-" +
+                                                 std::to_string(target[k]) + " twice in one direction");
+      mark[target[k]] = v;
+    }
+  return Status::Ok();
+}
+
 Status invalid(int type, const std::string& why) {
   return Status(ErrorCode::kBadSymbol, "CONN: Q" + std::to_string(type) + " " + why);
 }
@@ -279,7 +301,7 @@ Status SpiraleReversi::finish(bool closed, uint32_t vertex_count, Mesh* mesh) {
       if (l == kNone) return Status(ErrorCode::kBadSymbol, "CONN: a quad corner never reached the boundary");
       mesh->corners.push_back(l);
     }
-  return Status::Ok();
+  return check_edges_unique(*mesh, next_label);
 }
 
 }  // namespace

@@ -45,6 +45,8 @@ Status validate(const Mesh& mesh, const EncodeOptions& options) {
                      " of " + std::to_string(mesh.vertex_count()));
   for (const std::string& text : options.texts)
     if (text.size() > kMaxChunkLength) return invalid("text too long for one chunk");
+  if (options.quad_coding < -1 || options.quad_coding >= kQuadCodingCount)
+    return invalid("quad coding must be -1 (smallest) or 0.." + std::to_string(kQuadCodingCount - 1));
   return Status::Ok();
 }
 
@@ -83,12 +85,14 @@ FileConnectivity indexed_connectivity(const Mesh& mesh) {
 
 // The quad coder (section 5.3), checked by decoding its own output: a mesh
 // it would get wrong goes to the indexed coding instead, with the reason.
-std::string quad_connectivity(const Mesh& mesh, FileConnectivity* c, QuadCoderStats* stats) {
+std::string quad_connectivity(const Mesh& mesh, int forced_coding, FileConnectivity* c, QuadCoderStats* stats) {
   QuadTraversal traversal;
   if (std::string why = encode_quad_traversal(mesh, &traversal); !why.empty()) return why;
   QuadCodingChoice choice;
   c->method = ConnectivityMethod::kQuad;
-  c->payload = encode_quad_connectivity(traversal, uint32_t(mesh.vertex_count()), &choice);
+  c->payload = encode_quad_connectivity(traversal, uint32_t(mesh.vertex_count()), forced_coding, &choice);
+  if (c->payload.empty())
+    return std::string(quad_coding_name(QuadCoding(forced_coding))) + " cannot code this mesh's interaction types";
   c->mesh.face_sizes.assign(traversal.faces.size() / 4, 4);
   c->mesh.corners = traversal.faces;
   c->mesh.positions = permuted_positions(mesh, traversal.file_vertex);
@@ -118,7 +122,7 @@ Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_
   FileConnectivity conn;
   bool quad = false;
   if (options.connectivity != ConnectivityChoice::kIndexed) {
-    const std::string why = quad_connectivity(mesh, &conn, &st.quad);
+    const std::string why = quad_connectivity(mesh, options.quad_coding, &conn, &st.quad);
     quad = why.empty();
     if (!quad && options.connectivity == ConnectivityChoice::kQuad)
       return invalid("the quad coder cannot take this mesh: " + why);

@@ -10,13 +10,17 @@
 
 namespace qmc {
 
-std::vector<uint8_t> encode_quad_connectivity(const QuadTraversal& traversal, uint32_t vertex_count,
+std::vector<uint8_t> encode_quad_connectivity(const QuadTraversal& traversal, uint32_t vertex_count, int forced,
                                               QuadCodingChoice* choice) {
   *choice = QuadCodingChoice{};
   for (int c = 0; c < kQuadCodingCount; ++c) {
     choice->stream_bits[c] = quad_stream_bits(QuadCoding(c), traversal.types);
     const int64_t best = choice->stream_bits[choice->coding];
     if (choice->stream_bits[c] >= 0 && (best < 0 || choice->stream_bits[c] < best)) choice->coding = uint8_t(c);
+  }
+  if (forced >= 0) {
+    if (forced >= kQuadCodingCount || choice->stream_bits[forced] < 0) return {};
+    choice->coding = uint8_t(forced);
   }
   std::vector<uint8_t> payload;
   put_u8(&payload, uint8_t(ConnectivityMethod::kQuad));

@@ -16,8 +16,10 @@ struct QuadCodingChoice {
 };
 
 // CONN payload (method 1) for a traversal of a mesh with `vertex_count`
-// vertices; reports the size under every coding and the one chosen.
-std::vector<uint8_t> encode_quad_connectivity(const QuadTraversal& traversal, uint32_t vertex_count,
+// vertices; reports the size under every coding and the one chosen: the
+// smallest, or `forced` (0..4) if it is not -1. Returns an empty payload if
+// the forced coding cannot express the sequence.
+std::vector<uint8_t> encode_quad_connectivity(const QuadTraversal& traversal, uint32_t vertex_count, int forced,
                                               QuadCodingChoice* choice);
 
 }  // namespace qmc
