@@ -51,7 +51,11 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
     sep = ", ";
   }
   std::printf("%s\n", f.mesh.face_count() ? ")" : "");
-  std::printf("connectivity %s\n", connectivity_method_name(f.method));
+  if (f.method == ConnectivityMethod::kQuad)
+    std::printf("connectivity quad coder (spec 5.3), %s, %s\n", quad_coding_name(QuadCoding(f.quad_coding)),
+                f.quad_closed ? "closed (one quad cut open)" : "one boundary");
+  else
+    std::printf("connectivity %s\n", connectivity_method_name(f.method));
   if (f.quantization.bits)
     std::printf("positions    %d bits/axis, box (%g %g %g) - (%g %g %g)\n", f.quantization.bits,
                 f.quantization.min[0], f.quantization.min[1], f.quantization.min[2], f.quantization.max[0],
@@ -71,8 +75,8 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
   std::printf("{\"file\":\"%s\",\"bytes\":%llu,\"version\":\"%u.%u\",\"vertices\":%zu,\"faces\":%zu,",
               json_escape(path).c_str(), static_cast<unsigned long long>(size), f.version_major, f.version_minor,
               f.mesh.vertex_count(), f.mesh.face_count());
-  std::printf("\"connectivity\":\"%s\",\"position_bits\":%d,", connectivity_method_name(f.method),
-              f.quantization.bits);
+  std::printf("\"connectivity\":\"%s\",\"quad_coding\":%d,\"position_bits\":%d,", connectivity_method_name(f.method),
+              f.quad_coding, f.quantization.bits);
   std::printf("\"bits_per_vertex\":%.4f,\"chunks\":[",
               f.mesh.vertex_count() ? 8.0 * double(size) / double(f.mesh.vertex_count()) : 0.0);
   for (size_t i = 0; i < f.chunks.size(); ++i) {

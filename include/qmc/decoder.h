@@ -38,6 +38,8 @@ struct DecodedFile {
   std::vector<uint32_t> quantized;    // the integers q of section 6.1, 3 per vertex
   QuantizationInfo quantization;
   ConnectivityMethod method = ConnectivityMethod::kIndexed;
+  int quad_coding = -1;      // method 1: the coding of section 5.3.5 (QuadCoding)
+  bool quad_closed = false;  // method 1: a quad was cut open (closed mesh)
   uint8_t version_major = 0, version_minor = 0;
   std::vector<ChunkInfo> chunks;
   std::vector<std::string> texts;     // payloads of teXt chunks, "key=value"

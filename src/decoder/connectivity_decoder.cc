@@ -10,7 +10,7 @@
 namespace qmc {
 
 Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex_count,
-                           ConnectivityMethod* method, Mesh* mesh) {
+                           ConnectivityMethod* method, Mesh* mesh, QuadConnectivityInfo* quad_info) {
   ByteReader in(payload, size);
   uint8_t method_id = 0;
   uint64_t vertices = 0, faces = 0;
@@ -28,6 +28,7 @@ Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex
   } else {
     QuadConnectivityInfo quad;
     s = decode_quad_connectivity(in.cursor(), in.remaining(), uint32_t(vertices), uint32_t(faces), mesh, &quad);
+    if (quad_info) *quad_info = quad;
   }
   if (!s.ok()) return s;
   *vertex_count = uint32_t(vertices);

@@ -6,12 +6,14 @@
 
 #include "qmc/format.h"
 #include "qmc/mesh.h"
+#include "decoder/quad_connectivity_decoder.h"
 #include "qmc/status.h"
 
 namespace qmc {
 
-// Decodes a CONN payload into mesh->face_sizes / mesh->corners.
+// Decodes a CONN payload into mesh->face_sizes / mesh->corners. For method
+// 1, `quad` (if given) receives the flags and coding.
 Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex_count,
-                           ConnectivityMethod* method, Mesh* mesh);
+                           ConnectivityMethod* method, Mesh* mesh, QuadConnectivityInfo* quad = nullptr);
 
 }  // namespace qmc

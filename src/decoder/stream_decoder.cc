@@ -157,7 +157,13 @@ Status StreamDecoder::State::handle_header(const uint8_t* payload, uint32_t leng
 
 Status StreamDecoder::State::handle_connectivity(const uint8_t* payload, uint32_t length) {
   if (connectivity_seen) return order_error("a second CONN");
-  if (Status s = decode_connectivity(payload, length, &vertex_count, &file.method, &file.mesh); !s.ok()) return s;
+  QuadConnectivityInfo quad;
+  if (Status s = decode_connectivity(payload, length, &vertex_count, &file.method, &file.mesh, &quad); !s.ok())
+    return s;
+  if (file.method == ConnectivityMethod::kQuad) {
+    file.quad_coding = quad.coding;
+    file.quad_closed = quad.closed;
+  }
   connectivity_seen = true;
   return Status::Ok();
 }
