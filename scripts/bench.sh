@@ -1,22 +1,59 @@
 #!/usr/bin/env bash
-# Regenerates docs/results/baseline.md: qmc against Draco on every corpus mesh
-# (../shared/corpus) and the bundled demo mesh. RUNS (default 7) runs per
-# measurement; medians are reported. Run on an otherwise idle machine.
+# Regenerates the benchmark results in docs/results/:
+#   baseline.md      qmc against Draco on every corpus mesh (../shared/corpus)
+#                    and the bundled demo mesh;
+#   seed001.md       seed 001's chapter 5 tables (spheres, cow) rerun with qmc,
+#                    beside the thesis's figures;
+#   quad_vs_draco.md qmc's quad coder against Draco with polygons preserved.
+# RUNS (default 7) runs per measurement, LARGE_RUNS (default 3) for the
+# ~1M-quad sphere; medians are reported. Run on an otherwise idle machine.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 corpus=${QMC_CORPUS_DIR:-../shared/corpus}
 [ -d "$corpus" ] || { echo "bench: corpus not found at $corpus (set QMC_CORPUS_DIR)" >&2; exit 1; }
+runs=${RUNS:-7}
+large_runs=${LARGE_RUNS:-3}
 scripts/install-deps.sh >/dev/null
 scripts/build.sh >/dev/null
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
 out=docs/results/baseline.md
-tmp=$(mktemp)
-build/bench/qmc_baseline --runs "${RUNS:-7}" --bits 12 --out "$tmp" data/demo/torus.obj "$corpus"/quad/* "$corpus"/tri/*
+build/bench/qmc_baseline --runs "$runs" --bits 12 --out "$work/baseline" data/demo/torus.obj "$corpus"/quad/* "$corpus"/tri/*
 {
-  echo "# Baseline: qmc 0.1 (format 1.0) against Draco"
+  echo "# Baseline: qmc 0.1 (format 1.1) against Draco"
   echo
-  echo "Made by \`scripts/bench.sh\` (\`build/bench/qmc_baseline --runs ${RUNS:-7} --bits 12 ...\`)."
+  echo "Made by \`scripts/bench.sh\` (\`build/bench/qmc_baseline --runs $runs --bits 12 ...\`)."
   echo
-  cat "$tmp"
+  cat "$work/baseline"
 } >"$out"
-rm -f "$tmp"
 echo "bench: wrote $out"
+
+machine() {
+  local cpu
+  cpu=$(grep -m1 '^model name' /proc/cpuinfo | cut -d: -f2- | sed 's/^ *//')
+  echo "${cpu:-unknown CPU}, $(nproc) cores"
+}
+
+# write_result FILE TITLE COMMAND...: runs COMMAND, which prints Markdown, and
+# writes FILE: the title, the command itself, machine and date, then its output.
+write_result() {
+  local file=$1 title=$2
+  shift 2
+  "$@" >"$work/result"
+  {
+    echo "# $title"
+    echo
+    echo "Made by \`scripts/bench.sh\`, which ran: \`$*\`"
+    echo
+    echo "Machine: $(machine). Date: $(date -u '+%Y-%m-%d %H:%M UTC')."
+    echo
+    cat "$work/result"
+  } >"$file"
+  echo "bench: wrote $file"
+}
+
+write_result docs/results/seed001.md "Seed 001 (Q. Jing's thesis), chapter 5, rerun with qmc" \
+  build/bench/qmc_seed001 --runs "$runs" --bits 8 "$corpus"/tri/cow.obj
+write_result docs/results/quad_vs_draco.md "Quad meshes: qmc's quad coder against Draco with polygons preserved" \
+  build/bench/qmc_quad_bench --runs "$runs" --large-runs "$large_runs" --bits 12 --sphere-levels 7 "$corpus"/quad/*

@@ -1,9 +1,7 @@
-// Opposite-edge table of seed 001 §3.1, built in linear time by sorting the
-// directed edges, with the manifold and orientation checks the quad coder
-// relies on.
+// Opposite-edge table of seed 001 §3.1, built in linear time, with the
+// manifold and orientation checks the quad coder relies on.
 #include "encoder/opposite_edge_table.h"
 
-#include <algorithm>
 
 namespace qmc {
 namespace {
@@ -11,23 +9,47 @@ namespace {
 uint32_t origin(const Mesh& mesh, uint32_t edge) { return mesh.corners[edge]; }
 uint32_t destination(const Mesh& mesh, uint32_t edge) { return mesh.corners[OppositeEdgeTable::next(edge)]; }
 
+// Edges grouped by a vertex (counting sort): the edges of vertex v are
+// items[begin[v] .. begin[v + 1]).
+struct EdgeBuckets {
+  std::vector<uint32_t> begin, items;
+};
+
+template <typename KeyOf>
+EdgeBuckets bucket_edges(uint32_t vertices, uint32_t edges, KeyOf key) {
+  EdgeBuckets b;
+  b.begin.assign(size_t(vertices) + 1, 0);
+  for (uint32_t e = 0; e < edges; ++e) ++b.begin[key(e) + 1];
+  for (uint32_t v = 0; v < vertices; ++v) b.begin[v + 1] += b.begin[v];
+  b.items.resize(edges);
+  std::vector<uint32_t> fill(b.begin.begin(), b.begin.end() - 1);
+  for (uint32_t e = 0; e < edges; ++e) b.items[fill[key(e)]++] = e;
+  return b;
+}
+
+// Linear time (seed 001 §3.5): for each vertex v, its outgoing edges are
+// entered in a marker table keyed by destination; each edge arriving at v
+// from u then finds its twin v -> u in one look-up, and a second outgoing
+// edge to the same destination is a duplicate.
 std::string pair_edges(const Mesh& mesh, OppositeEdgeTable* t) {
-  const uint32_t edges = uint32_t(mesh.corners.size());
-  std::vector<uint64_t> keys(edges);
-  for (uint32_t e = 0; e < edges; ++e) keys[e] = (uint64_t(origin(mesh, e)) << 32) | destination(mesh, e);
-  std::vector<uint32_t> order(edges);
-  for (uint32_t e = 0; e < edges; ++e) order[e] = e;
-  std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return keys[a] < keys[b]; });
-  for (uint32_t i = 1; i < edges; ++i)
-    if (keys[order[i]] == keys[order[i - 1]])
-      return "edge " + std::to_string(origin(mesh, order[i])) + "-" + std::to_string(destination(mesh, order[i])) +
-             " is used twice in the same direction (non-manifold edge or inconsistent orientation)";
+  const uint32_t edges = uint32_t(mesh.corners.size()), vertices = uint32_t(mesh.vertex_count());
+  const EdgeBuckets out = bucket_edges(vertices, edges, [&](uint32_t e) { return origin(mesh, e); });
+  const EdgeBuckets in = bucket_edges(vertices, edges, [&](uint32_t e) { return destination(mesh, e); });
+  std::vector<uint32_t> mark(vertices, kNoEdge), edge_to(vertices, kNoEdge);
   t->across.assign(edges, kNoEdge);
-  for (uint32_t e = 0; e < edges; ++e) {
-    const uint64_t reverse = (uint64_t(destination(mesh, e)) << 32) | origin(mesh, e);
-    auto it = std::lower_bound(order.begin(), order.end(), reverse,
-                               [&](uint32_t a, uint64_t key) { return keys[a] < key; });
-    if (it != order.end() && keys[*it] == reverse) t->across[e] = *it;
+  for (uint32_t v = 0; v < vertices; ++v) {
+    for (uint32_t k = out.begin[v]; k < out.begin[v + 1]; ++k) {
+      const uint32_t e = out.items[k], w = destination(mesh, e);
+      if (mark[w] == v)
+        return "edge " + std::to_string(v) + "-" + std::to_string(w) +
+               " is used twice in the same direction (non-manifold edge or inconsistent orientation)";
+      mark[w] = v;
+      edge_to[w] = e;
+    }
+    for (uint32_t k = in.begin[v]; k < in.begin[v + 1]; ++k) {
+      const uint32_t e = in.items[k], u = origin(mesh, e);
+      if (mark[u] == v) t->across[e] = edge_to[u];
+    }
   }
   return {};
 }
