@@ -3,39 +3,12 @@
 
 namespace qmc {
 
-uint32_t BitReader::peek_bits(int count) const {
-  if (count <= 0) return 0;
-  // Gather the (at most 5) bytes covering the request; bytes past the end read as zero.
-  const uint64_t first = pos_ >> 3;
-  const uint64_t last = (pos_ + uint64_t(count) - 1) >> 3;
-  const uint64_t size_bytes = size_bits_ >> 3;
-  uint64_t acc = 0;
-  for (uint64_t b = first; b <= last; ++b) acc = (acc << 8) | (b < size_bytes ? data_[b] : 0u);
-  const int drop = int(((last + 1) * 8) - (pos_ + uint64_t(count)));
-  const uint64_t mask = (count == 32) ? 0xFFFFFFFFull : ((1ull << count) - 1);
-  return uint32_t((acc >> drop) & mask);
-}
-
-uint32_t BitReader::read_bits(int count) {
-  if (count <= 0) return 0;
-  const uint32_t value = peek_bits(count);
-  if (pos_ + uint64_t(count) <= size_bits_) {
-    pos_ += uint64_t(count);
-  } else {
-    overrun_ = true;
-    pos_ = size_bits_;
-  }
-  return value;
-}
-
-void BitReader::skip_bits(int count) {
-  if (count <= 0) return;
-  if (pos_ + uint64_t(count) > size_bits_) {
-    overrun_ = true;
-    pos_ = size_bits_;
-    return;
-  }
-  pos_ += uint64_t(count);
+void BitReader::refill() const {
+  window_pos_ = pos_ & ~uint64_t(7);
+  const uint64_t first = window_pos_ >> 3, size_bytes = size_bits_ >> 3;
+  uint64_t w = 0;
+  for (uint64_t b = first; b < first + 8; ++b) w = (w << 8) | (b < size_bytes ? data_[b] : 0u);
+  window_ = w;
 }
 
 uint32_t BitReader::read_exp_golomb() {

@@ -82,9 +82,19 @@ Status decode_positions(const uint8_t* payload, size_t size, uint32_t vertex_cou
     (*quantized)[i] = uint32_t(q);
   }
   if (!bits.at_clean_end()) return bad_payload("bits left over after the last vertex");
+  // Section 6.4 with the step of each axis computed once: the same binary64
+  // operations as dequantize(), hence the same results.
+  double step[3], lo[3];
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = double(info->min[a]);
+    step[a] = (double(info->max[a]) - lo[a]) / double((uint64_t(1) << info->bits) - 1);
+  }
   positions->resize(quantized->size());
-  for (size_t i = 0; i < quantized->size(); ++i)
-    (*positions)[i] = dequantize((*quantized)[i], info->min[i % 3], info->max[i % 3], info->bits);
+  for (size_t i = 0; i < quantized->size(); i += 3)
+    for (int a = 0; a < 3; ++a) {
+      const double scaled = double((*quantized)[i + a]) * step[a];
+      (*positions)[i + a] = float(lo[a] + scaled);
+    }
   return Status::Ok();
 }
 
