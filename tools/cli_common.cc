@@ -7,6 +7,8 @@
 #include <cstring>
 #include <fstream>
 
+#include <unistd.h>
+
 #include "mesh_io.h"
 
 namespace qmc::cli {
@@ -120,6 +122,16 @@ std::string human_bytes(uint64_t bytes) {
   else
     std::snprintf(buf, sizeof buf, "%.1f MiB", double(bytes) / (1024 * 1024));
   return buf;
+}
+
+Progress::Progress(bool enabled) : enabled_(enabled && isatty(STDERR_FILENO)) {}
+
+void Progress::stage(const std::string& what) {
+  if (enabled_) std::fprintf(stderr, "\r\033[K%s ...", what.c_str());
+}
+
+void Progress::done() {
+  if (enabled_) std::fprintf(stderr, "\r\033[K");
 }
 
 }  // namespace qmc::cli

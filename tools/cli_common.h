@@ -53,4 +53,16 @@ double max_quantization_step(const QuantizationInfo& q);
 
 std::string human_bytes(uint64_t bytes);
 
+// Stage messages for long runs on big inputs: shown on stderr only when it
+// is a terminal, each replacing the previous one, cleared by done().
+class Progress {
+ public:
+  explicit Progress(bool enabled);
+  void stage(const std::string& what);
+  void done();
+
+ private:
+  bool enabled_;
+};
+
 }  // namespace qmc::cli
