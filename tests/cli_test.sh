@@ -30,6 +30,15 @@ check decode-off 0 "$qmc" decode "$work/torus.qmc" "$work/back.off"
 check verify 0 "$qmc" verify "$work/torus.obj" "$work/torus.qmc"
 contains verify-ok "$work/out" "verify: OK"
 check verify-decoded-copy 0 "$qmc" encode "$work/back.ply" "$work/again.qmc" --bits 20
+check compare 0 "$qmc" compare "$work/torus.obj" "$work/back.obj" --samples 20000
+contains compare-hausdorff "$work/out" "Hausdorff"
+contains compare-psnr "$work/out" "PSNR"
+check compare-json 0 "$qmc" compare --json "$work/torus.obj" "$work/back.ply"
+contains compare-json-psnr "$work/out" '"psnr_db":'
+check compare-same 0 "$qmc" compare "$work/torus.obj" "$work/torus.obj"
+contains compare-same-inf "$work/out" "PSNR *inf"
+check compare-bad-samples 2 "$qmc" compare "$work/torus.obj" "$work/back.obj" --samples 0
+check compare-missing 3 "$qmc" compare "$work/torus.obj" "$work/nope.obj"
 check info 0 "$qmc" info "$work/torus.qmc"
 contains info-chunks "$work/out" "CONN"
 contains info-method "$work/out" "indexed"

@@ -111,6 +111,20 @@ TEST(RandomSequences, EveryValidSequenceDecodesAndReencodesExactly) {
   for (int t = 1; t <= 13; ++t) EXPECT_GT(seen[t], 100u) << "Q" << t;
 }
 
+TEST(RandomSequences, ClaimRespectingSequencesFitCodingsOneToThree) {
+  for (uint64_t seed = 1; seed <= 500; ++seed) {
+    const std::vector<uint8_t> types = tools::random_quad_sequence(seed, uint32_t(1 + seed % 211), true);
+    for (QuadCoding c : {QuadCoding::kCodingI, QuadCoding::kCodingII, QuadCoding::kCodingIII})
+      ASSERT_GT(quad_stream_bits(c, types), 0) << "seed " << seed;
+    Mesh m;
+    ASSERT_TRUE(spirale_reversi_decode(types, false, UINT32_MAX, &m).ok());
+    QuadTraversal t;
+    ASSERT_EQ(encode_quad_traversal(with_positions(m), &t), "");
+    EXPECT_EQ(t.types, types);
+    EXPECT_EQ(t.claim_violations, 0u);
+  }
+}
+
 TEST(RandomSequences, RoundTripThroughTheFileWithEveryCoding) {
   for (uint64_t seed = 1; seed <= 300; ++seed) {
     const Mesh m = tools::make_random_quad_disk(seed, uint32_t(1 + seed % 97));

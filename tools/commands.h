@@ -8,5 +8,6 @@ int run_decode(int argc, char** argv);
 int run_info(int argc, char** argv);
 int run_verify(int argc, char** argv);
 int run_conform(int argc, char** argv);
+int run_compare(int argc, char** argv);
 
 }  // namespace qmc::cli

@@ -17,6 +17,7 @@
 #include "bitio/bit_writer.h"
 #include "bitio/byte_io.h"
 #include "bitio/huffman.h"
+#include "bitio/quad_codings.h"
 #include "encoder/chunk_writer.h"
 #include "mesh_generators.h"
 #include "quad_disk_generator.h"
@@ -457,6 +458,22 @@ Mesh all_types_disk() {
   }
 }
 
+// A disk whose sequence keeps the seed's claim and uses every code word of
+// Codings I-III: all 22 pairs (type, class of the next type) they define.
+Mesh every_code_word_disk() {
+  for (uint64_t seed = 1;; ++seed) {
+    const std::vector<uint8_t> types = qmc::tools::random_quad_sequence(seed, 300, true);
+    bool pair[14][2] = {};
+    for (size_t i = 0; i < types.size(); ++i)
+      pair[types[i]][i + 1 < types.size() ? (types[i + 1] >= 6) : 1] = true;
+    int covered = 0;
+    for (int t = 1; t <= 13; ++t)
+      for (int n = 0; n < 2; ++n)
+        covered += pair[t][n] && qmc::fixed_code_word(qmc::QuadCoding::kCodingI, t, qmc::QuadClass(n)).length > 0;
+    if (covered == 22) return decoded_disk(types);
+  }
+}
+
 void write_quad_valid(VectorWriter* w) {
   using namespace qmc::tools;
   const Mesh sphere = make_refined_sphere(1);  // 240 quads, closed
@@ -477,6 +494,10 @@ void write_quad_valid(VectorWriter* w) {
   doublet.face_sizes.push_back(4);
   doublet.corners.insert(doublet.corners.end(), {a, v, c2, d});
   w->valid("valid_quad_valence_two_vertex", encode_quads(doublet), &doublet);
+  const Mesh every = every_code_word_disk();
+  w->valid("valid_quad_every_code_word_coding_i", encode_quads(every, 1), &every);
+  w->valid("valid_quad_every_code_word_coding_ii", encode_quads(every, 2), &every);
+  w->valid("valid_quad_every_code_word_coding_iii", encode_quads(every, 3), &every);
   Mesh cube = make_cube();
   cube.positions.insert(cube.positions.end(), {9, 9, 9, -9, 9, 9, 9, -9, 9});
   w->valid("valid_quad_cube_unreferenced_vertices", encode_quads(cube), &cube);

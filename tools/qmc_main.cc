@@ -19,6 +19,7 @@ const char kUsage[] =
     "  info IN.qmc [--json]          chunks, bytes per component, bits per vertex\n"
     "  verify IN OUT.qmc             decode OUT.qmc and compare it with IN\n"
     "  conform DIR                   check the conformance vectors listed in DIR/MANIFEST\n"
+    "  compare A B [--json]          surface distances: Hausdorff, L2 (RMS), mean, PSNR\n"
     "\n"
     "Positions are quantized to 12 bits per axis by default, which keeps every\n"
     "vertex within 1/4096 of the largest bounding-box side (-q to change).\n"
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
   if (command == "info") return qmc::cli::run_info(argc - 1, argv + 1);
   if (command == "verify") return qmc::cli::run_verify(argc - 1, argv + 1);
   if (command == "conform") return qmc::cli::run_conform(argc - 1, argv + 1);
+  if (command == "compare") return qmc::cli::run_compare(argc - 1, argv + 1);
   std::fprintf(stderr, "qmc: unknown command '%s'\n\n%s", command.c_str(), kUsage);
   return qmc::cli::kExitUsage;
 }

@@ -39,12 +39,18 @@ struct DecoderShape {
 };
 
 // Weights roughly as in real meshes: mostly Q13, Q12, Q6; splits now and then.
-int pick(Rng& rng, const DecoderShape& shape, uint32_t remaining) {
+bool claimed(int type) { return type == 5 || type == 10 || type == 12 || type == 13; }
+
+// `previous` is the type generated just before: it follows the new one in
+// the encoder's order.
+int pick(Rng& rng, const DecoderShape& shape, uint32_t remaining, int previous, bool respect_claim) {
   if (!shape.current) return 1;
+  const bool avoid_claimed = respect_claim && previous >= 1 && previous <= 5;
   const size_t depth = shape.stack.size();
   if (remaining == depth) {  // every remaining step must rejoin one loop
     static const int kJoins[] = {3, 7, 9, 10, 11};
-    return kJoins[rng.below(5)];
+    static const int kUnclaimedJoins[] = {3, 7, 9, 11};
+    return avoid_claimed ? kUnclaimedJoins[rng.below(4)] : kJoins[rng.below(5)];
   }
   struct Option { int type; uint32_t weight; };
   std::vector<Option> options = {{2, 3}, {4, 3}, {5, 4}, {6, 8}, {12, 10}};
@@ -52,6 +58,9 @@ int pick(Rng& rng, const DecoderShape& shape, uint32_t remaining) {
   if (remaining >= depth + 2) options.push_back({1, 3});
   if (depth >= 1) for (int t : {3, 7, 9, 10, 11}) options.push_back({t, 2});
   if (depth >= 2) options.push_back({8, 2});
+  if (avoid_claimed)
+    options.erase(std::remove_if(options.begin(), options.end(), [](const Option& o) { return claimed(o.type); }),
+                  options.end());
   uint32_t total = 0;
   for (const Option& o : options) total += o.weight;
   uint32_t r = rng.below(total);
@@ -63,11 +72,12 @@ int pick(Rng& rng, const DecoderShape& shape, uint32_t remaining) {
 }
 
 // One attempt; the decoder may reject it (a Q13 closing an edge that exists).
-std::vector<uint8_t> attempt(Rng& rng, uint32_t operations) {
+std::vector<uint8_t> attempt(Rng& rng, uint32_t operations, bool respect_claim) {
   DecoderShape shape;
   std::vector<uint8_t> decoding_order;
   for (uint32_t done = 0; done < operations; ++done) {
-    const int type = pick(rng, shape, operations - done);
+    const int previous = decoding_order.empty() ? 0 : decoding_order.back();
+    const int type = pick(rng, shape, operations - done, previous, respect_claim);
     shape.apply(type);
     decoding_order.push_back(uint8_t(type));
   }
@@ -77,10 +87,10 @@ std::vector<uint8_t> attempt(Rng& rng, uint32_t operations) {
 
 }  // namespace
 
-std::vector<uint8_t> random_quad_sequence(uint64_t seed, uint32_t operations) {
+std::vector<uint8_t> random_quad_sequence(uint64_t seed, uint32_t operations, bool respect_claim) {
   Rng rng{seed};
   for (;;) {
-    std::vector<uint8_t> types = attempt(rng, operations);
+    std::vector<uint8_t> types = attempt(rng, operations, respect_claim);
     Mesh mesh;
     if (spirale_reversi_decode(types, false, UINT32_MAX, &mesh).ok()) return types;
   }
