@@ -163,8 +163,9 @@ double point_triangle_distance_squared(const Vec3d& p, const Triangle& t, Vec3d*
     const double b_ab = dot(ab, bp), b_ac = dot(ac, bp);
     const Vec3d cp = p - t.c;
     const double c_ab = dot(ab, cp), c_ac = dot(ac, cp);
-    // Unnormalised barycentric weights of the projection of p: each is the
-    // signed area (times |n|^2) of the sub-triangle opposite that vertex.
+    // Unnormalised barycentric weights of the projection of p: each is
+    // proportional to the signed area of the sub-triangle opposite that
+    // vertex, negative when p lies beyond the edge opposite it.
     const double weight_c = a_ab * b_ac - b_ab * a_ac;
     const double weight_b = c_ab * a_ac - a_ab * c_ac;
     const double weight_a = b_ab * c_ac - c_ab * b_ac;
@@ -300,9 +301,17 @@ TriangleBvh::TriangleBvh(const std::vector<Triangle>& triangles) {
   build(triangles, centroids, 0, uint32_t(triangles.size()));
   triangles_.resize(triangles.size());
   position_.resize(triangles.size());
+  planes_.assign(4 * triangles.size(), 0.0);
   for (size_t i = 0; i < original_.size(); ++i) {
-    triangles_[i] = triangles[original_[i]];
+    const Triangle& t = triangles_[i] = triangles[original_[i]];
     position_[original_[i]] = uint32_t(i);
+    const Vec3d n = cross(t.b - t.a, t.c - t.a);
+    const double length = std::sqrt(dot(n, n));
+    if (length > 0) {  // a zero-area triangle keeps the useless bound 0
+      const Vec3d u = n * (1 / length);
+      planes_[4 * i] = u.x, planes_[4 * i + 1] = u.y, planes_[4 * i + 2] = u.z;
+      planes_[4 * i + 3] = dot(u, t.a);
+    }
   }
 }
 
@@ -369,6 +378,14 @@ double TriangleBvh::distance_squared(const Vec3d& p, uint32_t hint, uint32_t* ne
       const Node& n = nodes_[e.node];
       if (n.count > 0) {
         for (uint32_t k = n.first; k < n.first + n.count; ++k) {
+          // The distance to the triangle's plane is a lower bound that costs
+          // one dot product. Boxes of tilted triangles are loose, so far from
+          // a curved surface many leaves survive the box test and fail this
+          // one. The margin keeps rounding in the bound from skipping a
+          // triangle that is nearer by an ulp.
+          const double* plane = &planes_[4 * size_t(k)];
+          const double h = plane[0] * p.x + plane[1] * p.y + plane[2] * p.z - plane[3];
+          if (h * h > best * (1 + 1e-9)) continue;
           const double d2 = point_triangle_distance_squared(p, triangles_[k]);
           if (d2 < best) best = d2, best_index = k;
         }

@@ -128,6 +128,7 @@ class TriangleBvh {
 
   std::vector<Node> nodes_;
   std::vector<Triangle> triangles_;  // in leaf order
+  std::vector<double> planes_;       // leaf order: unit normal and offset, 4 values per triangle
   std::vector<uint32_t> original_;   // leaf order -> constructor order
   std::vector<uint32_t> position_;   // constructor order -> leaf order
 };
