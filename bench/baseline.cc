@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_common.h"
 #include "draco_runner.h"
 #include "mesh_io.h"
 #include "mesh_metrics.h"
@@ -27,13 +28,8 @@
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using qmc::bench::cpu_model;
+using qmc::bench::median;
 
 struct CodecRow {
   std::string codec;
@@ -119,14 +115,6 @@ CodecRow run_draco_row(const qmc::Mesh& mesh, int bits, int runs, bool polygons)
 
 bool has_polygons(const qmc::Mesh& mesh) {
   return std::any_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](uint32_t d) { return d != 3; });
-}
-
-std::string cpu_model() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
-  return "unknown CPU";
 }
 
 std::string format_row(const std::string& mesh, size_t vertices, const CodecRow& row, size_t qmc_bytes) {

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_common.h"
 #include "draco_runner.h"
 #include "mesh_generators.h"
 #include "mesh_io.h"
@@ -35,40 +36,10 @@ constexpr double kThroughputTarget = 2.0;    // qmc decode at least 2x Draco's v
 constexpr double kConnectivityTarget = 0.5;  // qmc connectivity at most 1/2 of Draco's
 constexpr size_t kLargeVertices = 250000;    // meshes above this get --large-runs runs
 
-[[noreturn]] void fail(const std::string& message) {
-  std::fprintf(stderr, "qmc_quad_bench: %s\n", message.c_str());
-  std::exit(3);
-}
-
-std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
-std::string format(const char* fmt, ...) {
-  char buf[1024];
-  va_list args;
-  va_start(args, fmt);
-  std::vsnprintf(buf, sizeof buf, fmt, args);
-  va_end(args);
-  return buf;
-}
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
-template <class F>
-double median_seconds(int runs, F&& f) {
-  std::vector<double> s;
-  for (int r = 0; r < runs; ++r) {
-    const auto t0 = Clock::now();
-    f();
-    s.push_back(std::chrono::duration<double>(Clock::now() - t0).count());
-  }
-  return median(s);
-}
-
-double bpv(double bytes, size_t vertices) { return 8.0 * bytes / double(vertices); }
+[[noreturn]] void fail(const std::string& message) { qmc::bench::fail("qmc_quad_bench", message); }
+using qmc::bench::format;
+using qmc::bench::median_seconds;
+double bpv(double bytes, size_t vertices) { return qmc::bench::bits_per_vertex(bytes, vertices); }
 
 // ---------------------------------------------------------------------------
 // qmc side
@@ -77,26 +48,6 @@ struct QmcSide {
   uint64_t file_bytes = 0, conn_bytes = 0;
   double decode_s = 0, conn_decode_s = 0;
 };
-
-// File offset just past CONN: the signature, then the chunks in write order.
-size_t end_of_connectivity(const qmc::EncodeStats& stats) {
-  size_t offset = sizeof qmc::kSignature;
-  for (const qmc::ChunkStats& c : stats.chunks) {
-    offset += c.bytes;
-    if (c.type == qmc::kChunkConnectivity) return offset;
-  }
-  fail("no CONN chunk in the encoder's statistics");
-}
-
-// The streaming decoder decodes a chunk as soon as its last byte arrives:
-// given the file up to the end of CONN it does all the connectivity work
-// and none of POSN's.
-void decode_prefix(const std::vector<uint8_t>& file, size_t end, size_t faces) {
-  qmc::StreamDecoder decoder;
-  if (qmc::Status s = decoder.feed(file.data(), end); !s.ok()) fail(s.to_string());
-  if (!decoder.has_connectivity() || decoder.file().mesh.face_count() != faces)
-    fail("connectivity-only decode did not produce the mesh's faces");
-}
 
 QmcSide measure_qmc(const qmc::Mesh& mesh, const std::vector<uint8_t>& file, const qmc::EncodeStats& stats,
                     int runs) {
@@ -110,8 +61,12 @@ QmcSide measure_qmc(const qmc::Mesh& mesh, const std::vector<uint8_t>& file, con
   });
   if (decoded.mesh.face_count() != mesh.face_count() || decoded.mesh.vertex_count() != mesh.vertex_count())
     fail("qmc decoded a mesh of the wrong size");
-  const size_t end = end_of_connectivity(stats);
-  q.conn_decode_s = median_seconds(runs, [&] { decode_prefix(file, end, mesh.face_count()); });
+  const size_t end = qmc::bench::end_of_connectivity(stats);
+  if (end == 0) fail("no CONN chunk in the encoder's statistics");
+  q.conn_decode_s = median_seconds(runs, [&] {
+    if (!qmc::bench::decode_connectivity_only(file, end, mesh.face_count()))
+      fail("connectivity-only decode did not produce the mesh's faces");
+  });
   return q;
 }
 
@@ -154,7 +109,7 @@ DracoSide draco_side(const qmc::Mesh& mesh, int bits, bool polygons, int runs) {
   }
   d.ok = true;
   d.bytes = r.bytes;
-  d.decode_s = median(r.decode_seconds);
+  d.decode_s = qmc::bench::median(r.decode_seconds);
   d.note = losses(r, mesh, polygons);
   return d;
 }

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_common.h"
 #include "mesh_generators.h"
 #include "mesh_io.h"
 #include "qmc/decoder.h"
@@ -88,41 +89,17 @@ int table53_index(int thesis_row) { return thesis_row < kCowRow ? thesis_row : t
 // ---------------------------------------------------------------------------
 // Small utilities
 
-[[noreturn]] void fail(const std::string& message) {
-  std::fprintf(stderr, "qmc_seed001: %s\n", message.c_str());
-  std::exit(3);
-}
-
-std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
-std::string format(const char* fmt, ...) {
-  char buf[1024];
-  va_list args;
-  va_start(args, fmt);
-  std::vsnprintf(buf, sizeof buf, fmt, args);
-  va_end(args);
-  return buf;
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+[[noreturn]] void fail(const std::string& message) { qmc::bench::fail("qmc_seed001", message); }
+using qmc::bench::format;
 
 // Median wall time in milliseconds of `runs` calls of f.
 template <class F>
 double median_ms(int runs, F&& f) {
-  std::vector<double> ms;
-  for (int r = 0; r < runs; ++r) {
-    const auto t0 = Clock::now();
-    f();
-    ms.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
-  }
-  return median(ms);
+  return 1e3 * qmc::bench::median_seconds(runs, f);
 }
 
 uint64_t ceil_bytes(int64_t bits) { return uint64_t(bits + 7) / 8; }
-double bpv(double bytes, size_t vertices) { return 8.0 * bytes / double(vertices); }
+double bpv(double bytes, size_t vertices) { return qmc::bench::bits_per_vertex(bytes, vertices); }
 
 // ---------------------------------------------------------------------------
 // Meshes
@@ -177,26 +154,6 @@ uint64_t chunk_bytes(const qmc::EncodeStats& stats, uint32_t type) {
   return 0;
 }
 
-// File offset just past the CONN chunk: the signature, then the chunks in
-// the order the encoder reports them.
-size_t end_of_connectivity(const qmc::EncodeStats& stats) {
-  size_t offset = sizeof qmc::kSignature;
-  for (const qmc::ChunkStats& c : stats.chunks) {
-    offset += c.bytes;
-    if (c.type == qmc::kChunkConnectivity) return offset;
-  }
-  fail("no CONN chunk in the encoder's statistics");
-}
-
-// The streaming decoder decodes each chunk the moment its last byte
-// arrives, so feeding it the file up to the end of CONN times exactly the
-// container checks and the connectivity decode, without POSN.
-void decode_connectivity_only(const std::vector<uint8_t>& file, size_t conn_end, size_t quads) {
-  qmc::StreamDecoder decoder;
-  if (qmc::Status s = decoder.feed(file.data(), conn_end); !s.ok()) fail(s.to_string());
-  if (!decoder.has_connectivity() || decoder.file().mesh.face_count() != quads)
-    fail("connectivity-only decode did not produce the mesh's quads");
-}
 
 Measurement measure(const TestMesh& test, int bits, int runs) {
   Measurement m;
@@ -220,8 +177,12 @@ Measurement measure(const TestMesh& test, int bits, int runs) {
   });
   if (decoded.mesh.face_count() != m.quads || decoded.mesh.vertex_count() != m.vertices)
     fail(test.name + ": decoded mesh has the wrong size");
-  const size_t conn_end = end_of_connectivity(m.stats);
-  m.conn_decode_ms = median_ms(runs, [&] { decode_connectivity_only(file, conn_end, m.quads); });
+  const size_t conn_end = qmc::bench::end_of_connectivity(m.stats);
+  if (conn_end == 0) fail("no CONN chunk in the encoder's statistics");
+  m.conn_decode_ms = median_ms(runs, [&] {
+    if (!qmc::bench::decode_connectivity_only(file, conn_end, m.quads))
+      fail("connectivity-only decode did not produce the mesh's quads");
+  });
   return m;
 }
 

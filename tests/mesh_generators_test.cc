@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh_test_support.h"
+
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -17,41 +19,8 @@ namespace {
 
 using qmc::Mesh;
 
-using Edge = std::pair<uint32_t, uint32_t>;
+using namespace qmc::testing;
 
-// Directed edges with multiplicity, walking each face cycle.
-std::map<Edge, int> directed_edges(const Mesh& mesh) {
-  std::map<Edge, int> edges;
-  size_t first = 0;
-  for (uint32_t size : mesh.face_sizes) {
-    for (uint32_t i = 0; i < size; ++i) ++edges[{mesh.corners[first + i], mesh.corners[first + (i + 1) % size]}];
-    first += size;
-  }
-  return edges;
-}
-
-size_t undirected_edge_count(const Mesh& mesh) {
-  std::set<Edge> edges;
-  for (const auto& [edge, count] : directed_edges(mesh)) edges.insert({std::min(edge.first, edge.second), std::max(edge.first, edge.second)});
-  return edges.size();
-}
-
-int64_t euler_characteristic(const Mesh& mesh) {
-  return static_cast<int64_t>(mesh.vertex_count()) - static_cast<int64_t>(undirected_edge_count(mesh)) +
-         static_cast<int64_t>(mesh.face_count());
-}
-
-// Closed and consistently oriented: every edge is used exactly twice, once
-// in each direction.
-void expect_closed_and_oriented(const Mesh& mesh) {
-  const auto edges = directed_edges(mesh);
-  for (const auto& [edge, count] : edges) {
-    EXPECT_EQ(count, 1) << "edge " << edge.first << "->" << edge.second;
-    EXPECT_NE(edge.first, edge.second);
-    EXPECT_EQ(edges.count({edge.second, edge.first}), 1u)
-        << "edge " << edge.first << "->" << edge.second << " has no opposite";
-  }
-}
 
 // Six times the signed volume, fanning each face from its first corner:
 // positive when faces are oriented outward.

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh_test_support.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -28,39 +30,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using qmc::Mesh;
-using Edge = std::pair<uint32_t, uint32_t>;
-
-std::map<Edge, int> directed_edges(const Mesh& mesh) {
-  std::map<Edge, int> edges;
-  size_t first = 0;
-  for (uint32_t size : mesh.face_sizes) {
-    for (uint32_t i = 0; i < size; ++i) ++edges[{mesh.corners[first + i], mesh.corners[first + (i + 1) % size]}];
-    first += size;
-  }
-  return edges;
-}
-
-std::set<Edge> undirected_edges(const Mesh& mesh) {
-  std::set<Edge> edges;
-  for (const auto& [e, count] : directed_edges(mesh)) edges.insert({std::min(e.first, e.second), std::max(e.first, e.second)});
-  return edges;
-}
-
-int64_t euler_characteristic(const Mesh& mesh) {
-  return static_cast<int64_t>(mesh.vertex_count()) - static_cast<int64_t>(undirected_edges(mesh).size()) +
-         static_cast<int64_t>(mesh.face_count());
-}
-
-// Every directed edge once, and its reverse present exactly once.
-void expect_closed_and_oriented(const Mesh& mesh) {
-  const auto edges = directed_edges(mesh);
-  for (const auto& [e, count] : edges) {
-    EXPECT_EQ(count, 1) << "edge " << e.first << "->" << e.second;
-    auto reverse = edges.find({e.second, e.first});
-    ASSERT_NE(reverse, edges.end()) << "edge " << e.first << "->" << e.second << " has no opposite";
-    EXPECT_EQ(reverse->second, 1);
-  }
-}
+using namespace qmc::testing;
 
 // Directed edges whose reverse is absent: the boundary.
 size_t boundary_edge_count(const Mesh& mesh) {

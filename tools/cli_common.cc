@@ -124,6 +124,23 @@ std::string human_bytes(uint64_t bytes) {
   return buf;
 }
 
+std::string json_escape(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += char(c);
+    } else if (c < 0x20) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\u%04x", c);
+      out += buf;
+    } else {
+      out += char(c);
+    }
+  }
+  return out;
+}
+
 Progress::Progress(bool enabled) : enabled_(enabled && isatty(STDERR_FILENO)) {}
 
 void Progress::stage(const std::string& what) {

@@ -53,6 +53,9 @@ double max_quantization_step(const QuantizationInfo& q);
 
 std::string human_bytes(uint64_t bytes);
 
+// `s` as the inside of a JSON string literal.
+std::string json_escape(const std::string& s);
+
 // Stage messages for long runs on big inputs: shown on stderr only when it
 // is a terminal, each replacing the previous one, cleared by done().
 class Progress {

@@ -32,22 +32,6 @@ const char kHelp[] =
     "distances were measured, 2 on bad usage, 3 if a mesh cannot be read or has no\n"
     "face of non-zero area.\n";
 
-std::string json_escape(const std::string& s) {
-  std::string out;
-  for (unsigned char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += char(c);
-    } else if (c < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += char(c);
-    }
-  }
-  return out;
-}
 
 void print_text(const std::string& path_a, const Mesh& a, const std::string& path_b, const Mesh& b,
                 const tools::MeshDistanceOptions& options, const tools::MeshDistance& d) {

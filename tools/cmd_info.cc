@@ -17,22 +17,6 @@ const char kHelp[] =
     "version, the connectivity coding and the quantization. A file that fails to\n"
     "decode is listed up to the failing chunk, then the error (exit code 3).\n";
 
-std::string json_escape(const std::string& s) {
-  std::string out;
-  for (unsigned char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += char(c);
-    } else if (c < 0x20) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\u%04x", c);
-      out += buf;
-    } else {
-      out += char(c);
-    }
-  }
-  return out;
-}
 
 std::map<uint32_t, size_t> degree_histogram(const Mesh& mesh) {
   std::map<uint32_t, size_t> h;

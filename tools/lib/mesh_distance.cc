@@ -2,6 +2,8 @@
 // definitions are in mesh_distance.h.
 #include "mesh_distance.h"
 
+#include "splitmix64.h"
+
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -22,24 +24,6 @@ Vec3d cross(const Vec3d& u, const Vec3d& v) {
   return {u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x};
 }
 double component(const Vec3d& v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
-
-// splitmix64: tiny, and its output is the same on every platform, unlike the
-// std:: distributions.
-class SplitMix64 {
- public:
-  explicit SplitMix64(uint64_t seed) : state_(seed) {}
-  uint64_t next() {
-    uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  // Uniform in [0, 1) on the 2^-53 grid.
-  double unit() { return double(next() >> 11) * (1.0 / 9007199254740992.0); }
-
- private:
-  uint64_t state_;
-};
 
 Vec3d position(const qmc::Mesh& mesh, uint32_t v) {
   return {mesh.positions[3 * size_t(v)], mesh.positions[3 * size_t(v) + 1], mesh.positions[3 * size_t(v) + 2]};

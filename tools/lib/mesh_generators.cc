@@ -2,6 +2,8 @@
 // rules every function here follows.
 #include "mesh_generators.h"
 
+#include "splitmix64.h"
+
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -140,31 +142,6 @@ void project_to_unit_sphere(Mesh* mesh) {
     for (int axis = 0; axis < 3; ++axis) p[axis] = static_cast<float>(static_cast<double>(p[axis]) / length);
   }
 }
-
-// ---------------------------------------------------------------------------
-// Random numbers: splitmix64, integer-only, identical on every platform.
-
-class SplitMix64 {
- public:
-  explicit SplitMix64(uint64_t seed) : state_(seed) {}
-
-  uint64_t next() {
-    uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  // Uniform enough in [0, n) for test data (multiply-shift, no rejection).
-  uint32_t below(uint32_t n) { return static_cast<uint32_t>(((next() >> 32) * n) >> 32); }
-  // A multiple of 2^-23 in [-1, 1): exact in float.
-  float coordinate() {
-    int32_t steps = static_cast<int32_t>(next() >> 40) - (1 << 23);
-    return static_cast<float>(steps) * (1.0f / static_cast<float>(1 << 23));
-  }
-
- private:
-  uint64_t state_;
-};
 
 template <class T>
 void shuffle(std::vector<T>* items, SplitMix64* rng) {

@@ -3,20 +3,14 @@
 #include <algorithm>
 
 #include "decoder/spirale_reversi_decoder.h"
+#include "splitmix64.h"
 
 namespace qmc::tools {
 namespace {
 
-struct Rng {
-  uint64_t state;
-  uint64_t next() {
-    uint64_t z = (state += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
-  uint32_t below(uint32_t n) { return uint32_t(next() % n); }
-};
+// The choices draw `next() % n`: the published conformance vectors made
+// from these disks depend on exactly this sequence.
+uint32_t draw(SplitMix64& rng, uint32_t n) { return uint32_t(rng.next() % n); }
 
 // Loop lengths after each decoding operation (spec 5.3.6), tracked so that
 // only operations valid in the current state are chosen.
@@ -43,14 +37,14 @@ bool claimed(int type) { return type == 5 || type == 10 || type == 12 || type ==
 
 // `previous` is the type generated just before: it follows the new one in
 // the encoder's order.
-int pick(Rng& rng, const DecoderShape& shape, uint32_t remaining, int previous, bool respect_claim) {
+int pick(SplitMix64& rng, const DecoderShape& shape, uint32_t remaining, int previous, bool respect_claim) {
   if (!shape.current) return 1;
   const bool avoid_claimed = respect_claim && previous >= 1 && previous <= 5;
   const size_t depth = shape.stack.size();
   if (remaining == depth) {  // every remaining step must rejoin one loop
     static const int kJoins[] = {3, 7, 9, 10, 11};
     static const int kUnclaimedJoins[] = {3, 7, 9, 11};
-    return avoid_claimed ? kUnclaimedJoins[rng.below(4)] : kJoins[rng.below(5)];
+    return avoid_claimed ? kUnclaimedJoins[draw(rng, 4)] : kJoins[draw(rng, 5)];
   }
   struct Option { int type; uint32_t weight; };
   std::vector<Option> options = {{2, 3}, {4, 3}, {5, 4}, {6, 8}, {12, 10}};
@@ -63,7 +57,7 @@ int pick(Rng& rng, const DecoderShape& shape, uint32_t remaining, int previous, 
                   options.end());
   uint32_t total = 0;
   for (const Option& o : options) total += o.weight;
-  uint32_t r = rng.below(total);
+  uint32_t r = draw(rng, total);
   for (const Option& o : options) {
     if (r < o.weight) return o.type;
     r -= o.weight;
@@ -72,7 +66,7 @@ int pick(Rng& rng, const DecoderShape& shape, uint32_t remaining, int previous, 
 }
 
 // One attempt; the decoder may reject it (a Q13 closing an edge that exists).
-std::vector<uint8_t> attempt(Rng& rng, uint32_t operations, bool respect_claim) {
+std::vector<uint8_t> attempt(SplitMix64& rng, uint32_t operations, bool respect_claim) {
   DecoderShape shape;
   std::vector<uint8_t> decoding_order;
   for (uint32_t done = 0; done < operations; ++done) {
@@ -88,7 +82,7 @@ std::vector<uint8_t> attempt(Rng& rng, uint32_t operations, bool respect_claim) 
 }  // namespace
 
 std::vector<uint8_t> random_quad_sequence(uint64_t seed, uint32_t operations, bool respect_claim) {
-  Rng rng{seed};
+  SplitMix64 rng(seed);
   for (;;) {
     std::vector<uint8_t> types = attempt(rng, operations, respect_claim);
     Mesh mesh;
@@ -102,8 +96,8 @@ Mesh make_random_quad_disk(uint64_t seed, uint32_t operations) {
   if (!spirale_reversi_decode(types, false, UINT32_MAX, &mesh).ok()) return {};
   uint32_t vertices = 0;
   for (uint32_t v : mesh.corners) vertices = std::max(vertices, v + 1);
-  Rng rng{seed ^ 0x5EEDull};
-  for (uint32_t i = 0; i < 3 * vertices; ++i) mesh.positions.push_back(float(rng.below(1 << 16)) / 65536.f);
+  SplitMix64 rng(seed ^ 0x5EEDull);
+  for (uint32_t i = 0; i < 3 * vertices; ++i) mesh.positions.push_back(float(draw(rng, 1 << 16)) / 65536.f);
   return mesh;
 }
 

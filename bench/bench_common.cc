@@ -1,0 +1,57 @@
+#include "bench_common.h"
+
+#include <algorithm>
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+
+#include "qmc/decoder.h"
+
+namespace qmc::bench {
+
+void fail(const char* program, const std::string& message) {
+  std::fprintf(stderr, "%s: %s\n", program, message.c_str());
+  std::exit(3);
+}
+
+std::string format(const char* fmt, ...) {
+  char buf[1024];
+  va_list args;
+  va_start(args, fmt);
+  std::vsnprintf(buf, sizeof buf, fmt, args);
+  va_end(args);
+  return buf;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string cpu_model() {
+  std::ifstream in("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("model name", 0) == 0) return line.substr(line.find(':') + 2);
+  return "unknown CPU";
+}
+
+size_t end_of_connectivity(const EncodeStats& stats) {
+  size_t offset = sizeof kSignature;
+  for (const ChunkStats& c : stats.chunks) {
+    offset += c.bytes;
+    if (c.type == kChunkConnectivity) return offset;
+  }
+  return 0;
+}
+
+bool decode_connectivity_only(const std::vector<uint8_t>& file, size_t conn_end, size_t faces) {
+  StreamDecoder decoder;
+  if (!decoder.feed(file.data(), conn_end).ok()) return false;
+  return decoder.has_connectivity() && decoder.file().mesh.face_count() == faces;
+}
+
+}  // namespace qmc::bench

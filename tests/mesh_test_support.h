@@ -1,0 +1,54 @@
+// Edge bookkeeping shared by the mesh tests: counts by brute force (maps and
+// sets), deliberately unlike the codec's linear-time structures.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <map>
+#include <set>
+#include <utility>
+
+#include "qmc/mesh.h"
+
+namespace qmc::testing {
+
+using Edge = std::pair<uint32_t, uint32_t>;
+
+// Directed edges with multiplicity, walking each face cycle.
+inline std::map<Edge, int> directed_edges(const Mesh& mesh) {
+  std::map<Edge, int> edges;
+  size_t first = 0;
+  for (uint32_t size : mesh.face_sizes) {
+    for (uint32_t i = 0; i < size; ++i) ++edges[{mesh.corners[first + i], mesh.corners[first + (i + 1) % size]}];
+    first += size;
+  }
+  return edges;
+}
+
+inline std::set<Edge> undirected_edges(const Mesh& mesh) {
+  std::set<Edge> edges;
+  for (const auto& [e, count] : directed_edges(mesh)) edges.insert({std::min(e.first, e.second), std::max(e.first, e.second)});
+  return edges;
+}
+
+inline int64_t euler_characteristic(const Mesh& mesh) {
+  return static_cast<int64_t>(mesh.vertex_count()) - static_cast<int64_t>(undirected_edges(mesh).size()) +
+         static_cast<int64_t>(mesh.face_count());
+}
+
+// Closed and consistently oriented: every directed edge once, its reverse
+// present exactly once.
+inline void expect_closed_and_oriented(const Mesh& mesh) {
+  const auto edges = directed_edges(mesh);
+  for (const auto& [e, count] : edges) {
+    EXPECT_EQ(count, 1) << "edge " << e.first << "->" << e.second;
+    EXPECT_NE(e.first, e.second);
+    auto reverse = edges.find({e.second, e.first});
+    ASSERT_NE(reverse, edges.end()) << "edge " << e.first << "->" << e.second << " has no opposite";
+    EXPECT_EQ(reverse->second, 1);
+  }
+}
+
+}  // namespace qmc::testing
