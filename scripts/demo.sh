@@ -8,15 +8,20 @@ scripts/build.sh >/dev/null
 qmc=build/tools/qmc
 out=build/demo
 mkdir -p "$out"
-mesh=data/demo/torus.obj
-echo "== qmc encode $mesh $out/torus.qmc"
-$qmc encode "$mesh" "$out/torus.qmc"
+# The sphere (genus 0, all quads: qmc-meshgen sphere-series 3) goes through
+# the quad coder; the torus (genus 1) through the indexed coding, and encode
+# says why.
+for mesh in data/demo/sphere.obj data/demo/torus.obj; do
+  name=$(basename "$mesh" .obj)
+  echo "== qmc encode $mesh $out/$name.qmc"
+  $qmc encode "$mesh" "$out/$name.qmc"
+  echo
+done
+echo "== qmc info $out/sphere.qmc"
+$qmc info "$out/sphere.qmc"
 echo
-echo "== qmc info $out/torus.qmc"
-$qmc info "$out/torus.qmc"
+echo "== qmc decode $out/sphere.qmc $out/sphere_decoded.obj"
+$qmc decode "$out/sphere.qmc" "$out/sphere_decoded.obj"
 echo
-echo "== qmc decode $out/torus.qmc $out/torus_decoded.obj"
-$qmc decode "$out/torus.qmc" "$out/torus_decoded.obj"
-echo
-echo "== qmc verify $mesh $out/torus.qmc"
-$qmc verify "$mesh" "$out/torus.qmc"
+echo "== qmc verify data/demo/sphere.obj $out/sphere.qmc"
+$qmc verify data/demo/sphere.obj "$out/sphere.qmc"
