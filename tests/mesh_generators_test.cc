@@ -22,24 +22,6 @@ using qmc::Mesh;
 using namespace qmc::testing;
 
 
-// Six times the signed volume, fanning each face from its first corner:
-// positive when faces are oriented outward.
-double signed_volume6(const Mesh& mesh) {
-  double volume = 0;
-  size_t first = 0;
-  auto p = [&mesh](uint32_t v, int axis) { return static_cast<double>(mesh.positions[3 * v + axis]); };
-  for (uint32_t size : mesh.face_sizes) {
-    const uint32_t a = mesh.corners[first];
-    for (uint32_t i = 1; i + 1 < size; ++i) {
-      const uint32_t b = mesh.corners[first + i];
-      const uint32_t c = mesh.corners[first + i + 1];
-      volume += p(a, 0) * (p(b, 1) * p(c, 2) - p(b, 2) * p(c, 1)) - p(a, 1) * (p(b, 0) * p(c, 2) - p(b, 2) * p(c, 0)) +
-                p(a, 2) * (p(b, 0) * p(c, 1) - p(b, 1) * p(c, 0));
-    }
-    first += size;
-  }
-  return volume;
-}
 
 void expect_valid(const Mesh& mesh) {
   ASSERT_EQ(mesh.positions.size() % 3, 0u);

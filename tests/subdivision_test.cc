@@ -44,22 +44,6 @@ bool all_quads(const Mesh& mesh) {
   return std::all_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](uint32_t s) { return s == 4; });
 }
 
-double signed_volume6(const Mesh& mesh) {
-  double volume = 0;
-  size_t first = 0;
-  auto p = [&](uint32_t v, int a) { return static_cast<double>(mesh.positions[3 * size_t{v} + a]); };
-  for (uint32_t size : mesh.face_sizes) {
-    const uint32_t a = mesh.corners[first];
-    for (uint32_t i = 1; i + 1 < size; ++i) {
-      const uint32_t b = mesh.corners[first + i];
-      const uint32_t c = mesh.corners[first + i + 1];
-      volume += p(a, 0) * (p(b, 1) * p(c, 2) - p(b, 2) * p(c, 1)) - p(a, 1) * (p(b, 0) * p(c, 2) - p(b, 2) * p(c, 0)) +
-                p(a, 2) * (p(b, 0) * p(c, 1) - p(b, 1) * p(c, 0));
-    }
-    first += size;
-  }
-  return volume;
-}
 
 std::vector<double> position(const Mesh& mesh, size_t v) {
   return {mesh.positions[3 * v], mesh.positions[3 * v + 1], mesh.positions[3 * v + 2]};
