@@ -152,20 +152,9 @@ TEST(RandomSequences, RoundTripThroughTheFileWithEveryCoding) {
   }
 }
 
-// A grid in which one quad is split into two that share two edges, leaving a
-// vertex of valence 2 inside: the seed's §4.1 claim fails around it.
-Mesh grid_with_doublet(int n) {
-  Mesh m = tools::make_grid(n, n);
-  const size_t f = (size_t(n / 2) * n + n / 2);
-  const uint32_t a = m.corners[4 * f], c = m.corners[4 * f + 2], d = m.corners[4 * f + 3];
-  const uint32_t v = uint32_t(m.vertex_count());
-  for (int k = 0; k < 3; ++k)
-    m.positions.push_back(0.5f * (m.positions[3 * a + k] + m.positions[3 * c + k]));
-  m.corners[4 * f + 3] = v;  // (a, b, c, v)
-  m.face_sizes.push_back(4);
-  m.corners.insert(m.corners.end(), {a, v, c, d});
-  return m;
-}
+// A grid in which the middle quad is split into two that share two edges,
+// leaving a vertex of valence 2 inside: the seed's §4.1 claim fails around it.
+Mesh grid_with_doublet(int n) { return tools::split_quad_with_doublet(tools::make_grid(n, n), size_t(n / 2) * n + n / 2); }
 
 TEST(SeedClaim, HoldsOnGeneratedSpheresAndGrids) {
   for (const Mesh& m : {tools::make_refined_sphere(3), tools::make_quad_sphere(12), tools::make_grid(30, 20),

@@ -486,13 +486,7 @@ void write_quad_valid(VectorWriter* w) {
   w->valid("valid_quad_all_thirteen_types", encode_quads(all), &all);
   const Mesh grid = make_grid(6, 4);
   w->valid("valid_quad_grid_one_boundary", encode_quads(grid), &grid);
-  Mesh doublet = make_grid(4, 4);  // quad 5 split in two around a valence-2 vertex
-  const uint32_t a = doublet.corners[20], c2 = doublet.corners[22], d = doublet.corners[23];
-  const uint32_t v = uint32_t(doublet.vertex_count());
-  for (int k = 0; k < 3; ++k) doublet.positions.push_back(0.5f * (doublet.positions[3 * a + k] + doublet.positions[3 * c2 + k]));
-  doublet.corners[23] = v;
-  doublet.face_sizes.push_back(4);
-  doublet.corners.insert(doublet.corners.end(), {a, v, c2, d});
+  const Mesh doublet = split_quad_with_doublet(make_grid(4, 4), 5);
   w->valid("valid_quad_valence_two_vertex", encode_quads(doublet), &doublet);
   const Mesh every = every_code_word_disk();
   w->valid("valid_quad_every_code_word_coding_i", encode_quads(every, 1), &every);

@@ -63,6 +63,17 @@ class SpiraleReversi {
   Status need_current(int type) const;
   Status pop(int type, Loop* loop);
 
+  // Q3 and Q9: a new node joins c to b, and a takes the place of d (d's
+  // vertex merges into a's). Returns the new node.
+  uint32_t splice_through_new_vertex(uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+    const uint32_t n = new_node(new_vertex()), after = next_[d];
+    link(c, n);
+    link(n, b);
+    link(a, after);
+    merge(a, d);
+    return n;
+  }
+
   Status q1();
   Status grow(int type);       // Q2, Q4, Q6: two new vertices along the gate
   Status swap_corner(int type);  // Q5, Q12: one new vertex, one leaves
@@ -135,9 +146,16 @@ Status SpiraleReversi::grow(int type) {
   link(m, n);
   link(n, b);
   current_.length += 2;
-  if (type == 2) emit(n, b, a, m), current_.gate = n;       // (g0, g1, x, y) = (n, b, a, m)
-  else if (type == 4) emit(m, n, b, a), current_.gate = m;  // (m, n, b, a)
-  else emit(a, m, n, b), current_.gate = a;                 // Q6: (a, m, n, b)
+  if (type == 2) {  // (g0, g1, x, y) = (n, b, a, m)
+    emit(n, b, a, m);
+    current_.gate = n;
+  } else if (type == 4) {  // (m, n, b, a)
+    emit(m, n, b, a);
+    current_.gate = m;
+  } else {  // Q6: (a, m, n, b)
+    emit(a, m, n, b);
+    current_.gate = a;
+  }
   return Status::Ok();
 }
 
@@ -150,8 +168,13 @@ Status SpiraleReversi::swap_corner(int type) {
   link(c, n);
   link(n, b);
   inner_.push_back(vertex_[a]);
-  if (type == 5) emit(n, b, a, c), current_.gate = n;  // (g0, g1, x, y) = (n, b, a, c)
-  else emit(c, n, b, a), current_.gate = c;            // Q12: (c, n, b, a)
+  if (type == 5) {  // (g0, g1, x, y) = (n, b, a, c)
+    emit(n, b, a, c);
+    current_.gate = n;
+  } else {  // Q12: (c, n, b, a)
+    emit(c, n, b, a);
+    current_.gate = c;
+  }
   return Status::Ok();
 }
 
@@ -182,23 +205,13 @@ Status SpiraleReversi::join_two(int type) {
   uint64_t length = current_.length + other.length;
   switch (type) {
     case 3: {  // a = x, b = g1, c = y, d = x'
-      const uint32_t g0 = new_node(new_vertex());
-      const uint32_t after = next_[d];
-      link(c, g0);
-      link(g0, b);
-      link(a, after);
-      merge(a, d);
+      const uint32_t g0 = splice_through_new_vertex(a, b, c, d);
       emit(g0, b, a, c);
       current_.gate = g0;
       break;
     }
     case 9: {  // a = y, b = x, c = g0, d = y'
-      const uint32_t g1 = new_node(new_vertex());
-      const uint32_t after = next_[d];
-      link(c, g1);
-      link(g1, b);
-      link(a, after);
-      merge(a, d);
+      const uint32_t g1 = splice_through_new_vertex(a, b, c, d);
       emit(c, g1, b, a);
       current_.gate = c;
       break;

@@ -445,4 +445,14 @@ Mesh make_random_soup(uint64_t seed, const RandomSoupOptions& options) {
   return mesh;
 }
 
+Mesh split_quad_with_doublet(Mesh mesh, size_t quad) {
+  const uint32_t a = mesh.corners[4 * quad], c = mesh.corners[4 * quad + 2], d = mesh.corners[4 * quad + 3];
+  const uint32_t v = static_cast<uint32_t>(mesh.vertex_count());
+  for (int k = 0; k < 3; ++k) mesh.positions.push_back(0.5f * (mesh.positions[3 * a + k] + mesh.positions[3 * c + k]));
+  mesh.corners[4 * quad + 3] = v;
+  mesh.face_sizes.push_back(4);
+  mesh.corners.insert(mesh.corners.end(), {a, v, c, d});
+  return mesh;
+}
+
 }  // namespace qmc::tools

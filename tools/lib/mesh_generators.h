@@ -53,6 +53,12 @@ qmc::Mesh make_refined_sphere(int levels);
 // n < 3 is treated as 3.
 qmc::Mesh make_prism(int n);
 
+// Splits quad `quad` of `mesh` along its diagonal corner 0 - corner 2 into
+// two quads that share two edges, around a new vertex of valence 2 at the
+// diagonal's midpoint (appended last): (c0, c1, c2, v) in place and
+// (c0, v, c2, c3) appended. Seed 001's §4.1 claim fails next to it.
+qmc::Mesh split_quad_with_doublet(qmc::Mesh mesh, size_t quad);
+
 struct RandomSoupOptions {
   uint32_t vertices = 100;  // total vertex count
   uint32_t faces = 150;
