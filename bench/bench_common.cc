@@ -54,4 +54,11 @@ bool decode_connectivity_only(const std::vector<uint8_t>& file, size_t conn_end,
   return decoder.has_connectivity() && decoder.file().mesh.face_count() == faces;
 }
 
+std::string display_name(const std::string& path) {
+  const size_t slash = path.find_last_of('/');
+  if (slash == std::string::npos || slash == 0) return path;
+  const size_t parent = path.find_last_of('/', slash - 1);
+  return parent == std::string::npos ? path : path.substr(parent + 1);
+}
+
 }  // namespace qmc::bench

@@ -34,6 +34,8 @@ double median_seconds(int runs, F&& f) {
 inline double bits_per_vertex(double bytes, size_t vertices) { return 8.0 * bytes / double(vertices); }
 
 std::string cpu_model();
+// Folder and file name of a corpus path, as in the result tables: "quad/suzanne.obj".
+std::string display_name(const std::string& path);
 
 // File offset just past CONN: the signature, then the chunks in the order
 // the encoder reports them. 0 if there is no CONN.

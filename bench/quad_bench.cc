@@ -287,13 +287,6 @@ std::string document(const std::vector<Row>& rows, const std::vector<Fallback>& 
   return doc;
 }
 
-std::string display_name(const std::string& path) {
-  // Folder and file name, as in baseline.md: "quad/suzanne.obj".
-  const size_t slash = path.find_last_of('/');
-  if (slash == std::string::npos || slash == 0) return path;
-  const size_t parent = path.find_last_of('/', slash - 1);
-  return parent == std::string::npos ? path : path.substr(parent + 1);
-}
 
 [[noreturn]] void usage() {
   std::fprintf(stderr,
@@ -334,7 +327,7 @@ int main(int argc, char** argv) {
   for (const std::string& path : opt.meshes) {
     qmc::Mesh mesh;
     if (qmc::Status s = qmc::tools::read_mesh(path, &mesh, nullptr); !s.ok()) fail(s.to_string());
-    bench(display_name(path), mesh);
+    bench(qmc::bench::display_name(path), mesh);
   }
   if (opt.sphere_levels >= 0) {
     const std::string name = format("sphere %d (make_refined_sphere)", opt.sphere_levels);

@@ -30,14 +30,28 @@ static void write_quad_seed(const fs::path& path, const uint8_t* payload, size_t
   write(path, seed.data(), seed.size());
 }
 
+// polygon_connectivity input: vertex and face counts as u16, then the
+// method-2 data.
+static void write_polygon_seed(const fs::path& path, const uint8_t* payload, size_t size) {
+  qmc::ByteReader in(payload, size);
+  uint8_t method = 0;
+  uint64_t vertices = 0, faces = 0;
+  if (!in.get_u8(&method) || method != 2 || !in.get_varint(&vertices) || !in.get_varint(&faces) ||
+      vertices > 0xFFFF || faces > 0xFFFF)
+    return;
+  std::vector<uint8_t> seed{uint8_t(vertices), uint8_t(vertices >> 8), uint8_t(faces), uint8_t(faces >> 8)};
+  seed.insert(seed.end(), in.cursor(), in.cursor() + in.remaining());
+  write(path, seed.data(), seed.size());
+}
+
 int main(int argc, char** argv) {
   if (argc != 3) {
     std::fprintf(stderr, "usage: make_seeds VECTORS_DIR OUT_DIR\n");
     return 2;
   }
   const fs::path out = argv[2];
-  for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "positions", "huffman",
-                        "roundtrip"})
+  for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "polygon_connectivity", "positions",
+                        "huffman", "roundtrip", "order"})
     fs::create_directories(out / t);
   int n = 0;
   for (const auto& entry : fs::directory_iterator(argv[1])) {
@@ -50,6 +64,7 @@ int main(int argc, char** argv) {
     write(out / "stream_decoder" / name, streamed.data(), streamed.size());
     write(out / "roundtrip" / name, bytes.data(), bytes.size());
     // Walk the chunks as far as the framing allows; invalid vectors stop early.
+    std::vector<uint8_t> conn;  // order input: CONN length as u16, CONN payload, oRDR payload
     for (size_t pos = 8; pos + 12 <= bytes.size();) {
       const uint32_t type = qmc::load_u32be(&bytes[pos]);
       const uint32_t length = qmc::load_u32le(&bytes[pos + 4]);
@@ -58,6 +73,7 @@ int main(int argc, char** argv) {
       if (type == qmc::kChunkConnectivity) {
         write(out / "connectivity" / name, payload, length);
         write_quad_seed(out / "quad_connectivity" / name, payload, length);
+        write_polygon_seed(out / "polygon_connectivity" / name, payload, length);
         if (length > 3) {  // the bit stream starts with the degree table
           std::vector<uint8_t> h{33};
           h.insert(h.end(), payload + 3, payload + length);
@@ -65,6 +81,13 @@ int main(int argc, char** argv) {
         }
       }
       if (type == qmc::kChunkPositions) write(out / "positions" / name, payload, length);
+      if (type == qmc::kChunkConnectivity && length <= 0xFFFF) conn.assign(payload, payload + length);
+      if (type == qmc::kChunkOrder && !conn.empty()) {
+        std::vector<uint8_t> seed{uint8_t(conn.size()), uint8_t(conn.size() >> 8)};
+        seed.insert(seed.end(), conn.begin(), conn.end());
+        seed.insert(seed.end(), payload, payload + length);
+        write(out / "order" / name, seed.data(), seed.size());
+      }
       pos += 12 + size_t(length);
     }
     ++n;

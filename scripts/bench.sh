@@ -4,7 +4,11 @@
 #                    and the bundled demo mesh;
 #   seed001.md       seed 001's chapter 5 tables (spheres, cow) rerun with qmc,
 #                    beside the thesis's figures;
-#   quad_vs_draco.md qmc's quad coder against Draco with polygons preserved.
+#   quad_vs_draco.md qmc's quad coder against Draco with polygons preserved;
+#   topology.md      connectivity bits per vertex of qmc's structured coders
+#                    (auto, polygon coder forced) against Draco and against
+#                    qmc's indexed fallback on every corpus mesh, with the
+#                    topology the polygon coder records.
 # RUNS (default 7) runs per measurement, LARGE_RUNS (default 3) for the
 # ~1M-quad sphere; medians are reported. Run on an otherwise idle machine.
 set -euo pipefail
@@ -57,3 +61,5 @@ write_result docs/results/seed001.md "Seed 001 (Q. Jing's thesis), chapter 5, re
   build/bench/qmc_seed001 --runs "$runs" --bits 8 "$corpus"/tri/cow.obj
 write_result docs/results/quad_vs_draco.md "Quad meshes: qmc's quad coder against Draco with polygons preserved" \
   build/bench/qmc_quad_bench --runs "$runs" --large-runs "$large_runs" --bits 12 --sphere-levels 7 "$corpus"/quad/*
+write_result docs/results/topology.md "Connectivity: qmc's structured coders against Draco and the indexed fallback" \
+  build/bench/qmc_topology_bench --runs "$runs" --large-runs "$large_runs" --bits 12 "$corpus"/quad/* "$corpus"/tri/*

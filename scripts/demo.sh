@@ -9,8 +9,8 @@ qmc=build/tools/qmc
 out=build/demo
 mkdir -p "$out"
 # The sphere (genus 0, all quads: qmc-meshgen sphere-series 3) goes through
-# the quad coder; the torus (genus 1) through the indexed coding, and encode
-# says why.
+# the quad coder; the torus (genus 1) through the polygon coder, and encode
+# says why the quad coder could not take it.
 for mesh in data/demo/sphere.obj data/demo/torus.obj; do
   name=$(basename "$mesh" .obj)
   echo "== qmc encode $mesh $out/$name.qmc"

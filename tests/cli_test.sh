@@ -23,7 +23,8 @@ contains() {  # contains NAME FILE PATTERN
 check encode 0 "$qmc" encode "$work/torus.obj" "$work/torus.qmc"
 contains encode-reports-error "$work/out" "max error"
 contains encode-reports-bpv "$work/out" "bits/vertex"
-contains encode-names-coding "$work/out" "indexed coding"
+contains encode-names-coding "$work/out" "polygon coder (spec 5.4)"
+contains encode-names-quad-reason "$work/out" "quad coder not used: the mesh has genus 1"
 check decode-obj 0 "$qmc" decode "$work/torus.qmc" "$work/back.obj"
 check decode-ply 0 "$qmc" decode "$work/torus.qmc" "$work/back.ply"
 check decode-off 0 "$qmc" decode "$work/torus.qmc" "$work/back.off"
@@ -41,9 +42,9 @@ check compare-bad-samples 2 "$qmc" compare "$work/torus.obj" "$work/back.obj" --
 check compare-missing 3 "$qmc" compare "$work/torus.obj" "$work/nope.obj"
 check info 0 "$qmc" info "$work/torus.qmc"
 contains info-chunks "$work/out" "CONN"
-contains info-method "$work/out" "indexed"
+contains info-method "$work/out" "polygon coder (spec 5.4)"
 check info-json 0 "$qmc" info --json "$work/torus.qmc"
-contains info-json-valid "$work/out" '"connectivity":"indexed"'
+contains info-json-valid "$work/out" '"connectivity":"polygon"'
 check soup-encode 0 "$qmc" encode "$work/soup.off" "$work/soup.qmc" -q 16 --text note=soup --quiet
 check soup-verify 0 "$qmc" verify "$work/soup.off" "$work/soup.qmc"
 check verify-wrong-mesh 1 "$qmc" verify "$work/soup.off" "$work/torus.qmc"
@@ -63,5 +64,26 @@ check info-truncated 3 "$qmc" info "$work/cut.qmc"
 printf 'v 0 0 0\nv 1 0 0\nf 1 2 7\n' >"$work/bad.obj"
 check bad-index 3 "$qmc" encode "$work/bad.obj" "$work/x.qmc"
 check bad-output-ext 3 "$qmc" decode "$work/torus.qmc" "$work/x.xyz"
+# --keep-order (spec 4.5): the decoded file lists vertices and faces exactly as the input did.
+"$meshgen" sphere 6 "$work/qsphere.obj" >/dev/null
+check keep-order-encode 0 "$qmc" encode "$work/qsphere.obj" "$work/ordered.qmc" --keep-order
+contains keep-order-chunk "$work/out" "oRDR"
+contains keep-order-reported "$work/out" "restored by the oRDR chunk"
+check keep-order-info 0 "$qmc" info "$work/ordered.qmc"
+contains keep-order-info-chunk "$work/out" "oRDR .*ancillary"
+contains keep-order-info-restored "$work/out" "input order restored"
+check keep-order-info-json 0 "$qmc" info --json "$work/ordered.qmc"
+contains keep-order-info-json-flag "$work/out" '"order_restored":true'
+check keep-order-verify 0 "$qmc" verify "$work/qsphere.obj" "$work/ordered.qmc"
+contains keep-order-verify-exact "$work/out" "input's order"
+check keep-order-decode 0 "$qmc" decode "$work/ordered.qmc" "$work/ordered.obj"
+grep '^f ' "$work/qsphere.obj" >"$work/faces_in"; grep '^f ' "$work/ordered.obj" >"$work/faces_out"
+check keep-order-same-faces 0 cmp "$work/faces_in" "$work/faces_out"
+check coder-order-info 0 "$qmc" encode "$work/qsphere.obj" "$work/coder.qmc" --quiet
+check coder-order-not-restored 0 "$qmc" info "$work/coder.qmc"
+contains coder-order-line "$work/out" "coder order"
+grep '^f ' "$work/qsphere.obj" | tac >"$work/faces_rev"
+{ grep '^v ' "$work/qsphere.obj"; cat "$work/faces_rev"; } >"$work/qsphere_rev.obj"
+check keep-order-verify-other-order 1 "$qmc" verify "$work/qsphere_rev.obj" "$work/ordered.qmc"
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -35,22 +35,6 @@ void expect_valid(const Mesh& mesh) {
   for (float value : mesh.positions) EXPECT_TRUE(std::isfinite(value));
 }
 
-// FNV-1a over the values' bits in little-endian byte order, to pin the exact
-// output on every platform.
-uint64_t fingerprint(const Mesh& mesh) {
-  uint64_t hash = 0xcbf29ce484222325ull;
-  auto mix = [&hash](uint32_t value) {
-    for (int i = 0; i < 4; ++i) hash = (hash ^ ((value >> (8 * i)) & 0xff)) * 0x100000001b3ull;
-  };
-  for (float value : mesh.positions) {
-    uint32_t bits = 0;
-    std::memcpy(&bits, &value, sizeof bits);
-    mix(bits);
-  }
-  for (uint32_t size : mesh.face_sizes) mix(size);
-  for (uint32_t index : mesh.corners) mix(index);
-  return hash;
-}
 
 bool same_bits(const Mesh& a, const Mesh& b) {
   return a.positions.size() == b.positions.size() &&

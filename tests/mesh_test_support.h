@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <map>
 #include <set>
 #include <utility>
@@ -68,6 +69,23 @@ inline double signed_volume6(const Mesh& mesh) {
     first += size;
   }
   return volume;
+}
+
+// FNV-1a over the values' bits in little-endian byte order, to pin the exact
+// output of a generator on every platform.
+inline uint64_t fingerprint(const Mesh& mesh) {
+  uint64_t hash = 0xcbf29ce484222325ull;
+  auto mix = [&hash](uint32_t value) {
+    for (int i = 0; i < 4; ++i) hash = (hash ^ ((value >> (8 * i)) & 0xff)) * 0x100000001b3ull;
+  };
+  for (float value : mesh.positions) {
+    uint32_t bits = 0;
+    std::memcpy(&bits, &value, sizeof bits);
+    mix(bits);
+  }
+  for (uint32_t size : mesh.face_sizes) mix(size);
+  for (uint32_t index : mesh.corners) mix(index);
+  return hash;
 }
 
 }  // namespace qmc::testing

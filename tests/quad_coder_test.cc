@@ -205,7 +205,7 @@ TEST(QuadCoder, TinyClosedMeshesAndStrips) {
   }
 }
 
-TEST(QuadCoder, OutOfScopeMeshesFallBackWithAReason) {
+TEST(QuadCoder, OutOfScopeMeshesGoToThePolygonCoderWithAReason) {
   struct Case {
     Mesh mesh;
     const char* reason;
@@ -220,7 +220,7 @@ TEST(QuadCoder, OutOfScopeMeshesFallBackWithAReason) {
     std::vector<uint8_t> bytes;
     EncodeStats stats;
     ASSERT_TRUE(encode(c.mesh, EncodeOptions{}, &bytes, &stats).ok());
-    EXPECT_EQ(stats.method, ConnectivityMethod::kIndexed);
+    EXPECT_EQ(stats.method, ConnectivityMethod::kPolygon);
     EXPECT_NE(stats.fallback_reason.find(c.reason), std::string::npos) << stats.fallback_reason;
     EncodeOptions strict;
     strict.connectivity = ConnectivityChoice::kQuad;

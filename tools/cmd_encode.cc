@@ -24,9 +24,13 @@ const char kHelp[] =
     "                      bounding-box side; see spec section 6.2)\n"
     "  --connectivity M    auto (default): the quad coder of seed 001 for closed\n"
     "                      genus-0 or one-boundary pure-quad manifold meshes, the\n"
-    "                      indexed coding otherwise (the reason is printed);\n"
-    "                      indexed: always indexed; quad: quad coder or an error\n"
+    "                      polygon coder (spec 5.4) for every other mesh (the\n"
+    "                      reason is printed); indexed: always indexed; quad: quad\n"
+    "                      coder or an error; polygon: always the polygon coder\n"
     "  --text KEY=VALUE    store a teXt chunk (repeatable)\n"
+    "  --keep-order        store an oRDR chunk (spec 4.5) so that decoding restores\n"
+    "                      the input's order of vertices, faces and face corners\n"
+    "                      exactly (by default they come out in the coder's order)\n"
     "  --quiet             print nothing on success\n";
 
 struct EncodeArgs {
@@ -35,7 +39,7 @@ struct EncodeArgs {
   bool quiet = false;
 };
 
-const CommandSpec kSpec{"encode", kHelp, {"--quiet"}, {{"--bits", "-q"}, {"--text"}, {"--connectivity"}}, 2, 2};
+const CommandSpec kSpec{"encode", kHelp, {"--quiet", "--keep-order"}, {{"--bits", "-q"}, {"--text"}, {"--connectivity"}}, 2, 2};
 
 int parse(int argc, char** argv, EncodeArgs* args) {
   CommandLine cl;
@@ -43,6 +47,7 @@ int parse(int argc, char** argv, EncodeArgs* args) {
   args->input = cl.positional[0];
   args->output = cl.positional[1];
   args->quiet = cl.has("--quiet");
+  args->options.keep_order = cl.has("--keep-order");
   for (const auto& [name, value] : cl.options) {
     if (name == "--text") {
       args->options.texts.push_back(value);
@@ -52,7 +57,8 @@ int parse(int argc, char** argv, EncodeArgs* args) {
       if (value == "auto") args->options.connectivity = ConnectivityChoice::kAuto;
       else if (value == "indexed") args->options.connectivity = ConnectivityChoice::kIndexed;
       else if (value == "quad") args->options.connectivity = ConnectivityChoice::kQuad;
-      else return usage_error("encode", "--connectivity takes auto, indexed or quad, got '" + value + "'");
+      else if (value == "polygon") args->options.connectivity = ConnectivityChoice::kPolygon;
+      else return usage_error("encode", "--connectivity takes auto, indexed, quad or polygon, got '" + value + "'");
       continue;
     }
     long bits = 0;
@@ -80,13 +86,34 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
     if (q.claim_violations)
       std::printf("             %u times a Q5/Q10/Q12/Q13 was followed by Q1-Q5 (seed 001 4.1 claim fails)\n",
                   q.claim_violations);
+  } else if (stats.method == ConnectivityMethod::kPolygon) {
+    const PolygonCoderStats& p = stats.polygon;
+    if (!stats.fallback_reason.empty()) std::printf("connectivity quad coder not used: %s\n", stats.fallback_reason.c_str());
+    std::printf("connectivity polygon coder (spec 5.4), coding %u:", p.coding);
+    for (int c = 0; c < kPolygonCodingCount; ++c) {
+      if (p.coding_bits[c] < 0) std::printf(" %d n/a", c);
+      else std::printf(" %d %.3f", c, double(p.coding_bits[c]) / v);
+    }
+    std::printf(" bits/vertex\n");
+    std::printf("             %u components, %u holes closed, %u handles cut, %u vertex identifications, %u loose "
+                "faces, %u faces not quads; records %.3f bits/vertex\n",
+                p.components, p.holes, p.handles, p.identifications, p.loose_faces, p.non_quad_faces,
+                double(p.record_bits) / v);
   } else {
     std::printf("connectivity indexed coding%s%s\n", stats.fallback_reason.empty() ? "" : "; quad coder not used: ",
                 stats.fallback_reason.c_str());
+    if (!stats.polygon_fallback_reason.empty())
+      std::printf("             polygon coder not used: %s\n", stats.polygon_fallback_reason.c_str());
   }
   for (const ChunkStats& c : stats.chunks)
     std::printf("  %-4s %10llu bytes  %8.2f bits/vertex\n", chunk_type_name(c.type).c_str(),
                 static_cast<unsigned long long>(c.bytes), 8.0 * double(c.bytes) / v);
+  if (args.options.keep_order) {
+    bool written = false;
+    for (const ChunkStats& c : stats.chunks) written = written || c.type == kChunkOrder;
+    std::printf("order       %s\n", written ? "the input's order, restored by the oRDR chunk"
+                                            : "the coder's order already is the input's: no oRDR chunk needed");
+  }
   std::printf("output      %s: %llu bytes, %.2f bits/vertex, %.1fx smaller than the input file\n",
               args.output.c_str(), static_cast<unsigned long long>(stats.total_bytes),
               8.0 * double(stats.total_bytes) / v, double(input_bytes) / double(stats.total_bytes));
@@ -115,8 +142,12 @@ int run_encode(int argc, char** argv) {
   DecodedFile decoded;
   if (Status s = decode(bytes.data(), bytes.size(), &decoded); !s.ok())
     return fail("encode", Status(s.code(), "internal error, own output does not decode: " + s.message()));
-  const tools::RoundTripReport check = tools::check_round_trip(mesh, decoded,
-                                                               tools::Correspondence{stats.file_vertex, stats.face_source});
+  // --keep-order: the decoder must return the input's order exactly (with or
+  // without an oRDR chunk); otherwise the encoder's correspondence.
+  const tools::RoundTripReport check = tools::check_round_trip(
+      mesh, decoded,
+      args.options.keep_order ? tools::identity_correspondence(mesh)
+                             : tools::Correspondence{stats.file_vertex, stats.face_source});
   progress.done();
   if (!check.ok())
     return fail("encode", Status(ErrorCode::kInvalidArgument, "internal error, round trip mismatch: " +

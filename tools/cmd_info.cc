@@ -24,6 +24,20 @@ std::map<uint32_t, size_t> degree_histogram(const Mesh& mesh) {
   return h;
 }
 
+// Spec 4.5: which of the oRDR maps the file carries.
+std::string order_description(uint8_t flags) {
+  std::string s = "input order restored by oRDR (";
+  const char* sep = "";
+  const char* names[] = {"faces", "vertices", "corners"};
+  for (int b = 0; b < 3; ++b)
+    if (flags & (1u << b)) {
+      s += sep;
+      s += names[b];
+      sep = ", ";
+    }
+  return s + (*sep ? " reordered)" : "identity)");
+}
+
 void print_text(const std::string& path, const DecodedFile& f, uint64_t size, const Status& status) {
   const double v = f.mesh.vertex_count() ? double(f.mesh.vertex_count()) : 1.0;
   std::printf("file         %s, %llu bytes, format %u.%u\n", path.c_str(), static_cast<unsigned long long>(size),
@@ -38,12 +52,19 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
   if (f.method == ConnectivityMethod::kQuad)
     std::printf("connectivity quad coder (spec 5.3), %s, %s\n", quad_coding_name(QuadCoding(f.quad_coding)),
                 f.quad_closed ? "closed (one quad cut open)" : "one boundary");
+  else if (f.method == ConnectivityMethod::kPolygon)
+    std::printf("connectivity polygon coder (spec 5.4), coding %d; %u components, %u virtual faces "
+                "(%u seams for handles, the rest close holes), %u vertex identifications, %u loose faces\n",
+                f.polygon_coding, f.polygon_components, f.polygon_virtual_faces, f.polygon_seams,
+                f.polygon_identifications, f.polygon_loose_faces);
   else
     std::printf("connectivity %s\n", connectivity_method_name(f.method));
   if (f.quantization.bits)
     std::printf("positions    %d bits/axis, box (%g %g %g) - (%g %g %g)\n", f.quantization.bits,
                 f.quantization.min[0], f.quantization.min[1], f.quantization.min[2], f.quantization.max[0],
                 f.quantization.max[1], f.quantization.max[2]);
+  std::printf("order        %s\n", f.order_restored ? order_description(f.order_flags).c_str()
+                                                     : "coder order (no oRDR chunk)");
   std::printf("chunks       type  offset      bytes  bits/vertex\n");
   for (const ChunkInfo& c : f.chunks)
     std::printf("             %-4s %7llu %10llu %12.2f  %s%s\n", chunk_type_name(c.type).c_str(),
@@ -61,6 +82,7 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
               f.mesh.vertex_count(), f.mesh.face_count());
   std::printf("\"connectivity\":\"%s\",\"quad_coding\":%d,\"position_bits\":%d,", connectivity_method_name(f.method),
               f.quad_coding, f.quantization.bits);
+  std::printf("\"order_restored\":%s,\"order_flags\":%u,", f.order_restored ? "true" : "false", f.order_flags);
   std::printf("\"bits_per_vertex\":%.4f,\"chunks\":[",
               f.mesh.vertex_count() ? 8.0 * double(size) / double(f.mesh.vertex_count()) : 0.0);
   for (size_t i = 0; i < f.chunks.size(); ++i) {

@@ -14,7 +14,9 @@ static const char kVerifyHelp[] =
     "\n"
     "Decodes OUT.qmc and checks it against IN: the same faces after the vertex\n"
     "relabelling of spec section 5.2.1, and every coordinate within half a\n"
-    "quantization step. Exit 0 if both hold, 1 if not, 3 on unreadable input.\n";
+    "quantization step. A file with an oRDR chunk (qmc encode --keep-order,\n"
+    "spec 4.5) must match IN exactly in IN's order: vertex order, face order and\n"
+    "each face's first corner. Exit 0 if both hold, 1 if not, 3 on unreadable input.\n";
 
 int run_verify(int argc, char** argv) {
   CommandLine cl;
@@ -30,7 +32,8 @@ int run_verify(int argc, char** argv) {
   if (Status s = decode(bytes.data(), bytes.size(), &decoded); !s.ok())
     return fail("verify", Status(s.code(), qmc_path + ": " + s.message()));
   const tools::RoundTripReport r = tools::check_round_trip(original, decoded);
-  std::printf("faces     %s\n", r.faces_equal ? "identical after relabelling" : r.face_mismatch.c_str());
+  const char* same = decoded.order_restored ? "identical in the input's order (oRDR)" : "identical after relabelling";
+  std::printf("faces     %s\n", r.faces_equal ? same : r.face_mismatch.c_str());
   std::printf("positions %s; max error %.6g, rms %.6g\n",
               r.positions_within_bound ? "within half a quantization step" : r.position_mismatch.c_str(),
               r.max_error, r.rms_error);

@@ -17,6 +17,8 @@
 #include "bitio/bit_writer.h"
 #include "bitio/byte_io.h"
 #include "bitio/huffman.h"
+#include "bitio/magnitude_code.h"
+#include "bitio/polygon_symbols.h"
 #include "bitio/quad_codings.h"
 #include "encoder/chunk_writer.h"
 #include "mesh_generators.h"
@@ -26,6 +28,7 @@
 #include "qmc/encoder.h"
 #include "roundtrip_check.h"
 #include "sha256.h"
+#include "splitmix64.h"
 
 namespace {
 
@@ -424,17 +427,23 @@ void write_position_errors(VectorWriter* w) {
              ErrorCode::kLimitExceeded);
 }
 
-// Format 1.1: connectivity method 1, the quad coder (spec 5.3).
-std::vector<uint8_t> encode_quads(const Mesh& mesh, int coding = -1) {
+// Structured connectivity (methods 1 and 2) with a forced coding or -1.
+std::vector<uint8_t> encode_structured(const Mesh& mesh, qmc::ConnectivityChoice choice, int coding) {
   qmc::EncodeOptions options;
-  options.connectivity = qmc::ConnectivityChoice::kQuad;
-  options.quad_coding = coding;
+  options.connectivity = choice;
+  options.quad_coding = choice == qmc::ConnectivityChoice::kQuad ? coding : -1;
+  options.polygon_coding = choice == qmc::ConnectivityChoice::kPolygon ? coding : -1;
   std::vector<uint8_t> out;
   if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
     std::fprintf(stderr, "qmc-make-vectors: %s\n", s.to_string().c_str());
     std::exit(3);
   }
   return out;
+}
+
+// Format 1.1: connectivity method 1, the quad coder (spec 5.3).
+std::vector<uint8_t> encode_quads(const Mesh& mesh, int coding = -1) {
+  return encode_structured(mesh, qmc::ConnectivityChoice::kQuad, coding);
 }
 
 Mesh decoded_disk(const std::vector<uint8_t>& types) {
@@ -548,6 +557,355 @@ void write_quad_errors(VectorWriter* w) {
   w->invalid("invalid_quad_trailing_byte", with_conn(quad_conn(8, 1, 0, 0, {}, {0x00, 0x00})), ErrorCode::kBadChunkPayload);
 }
 
+// Format 1.2: connectivity method 2, the polygon coder (spec 5.4).
+std::vector<uint8_t> encode_polygons(const Mesh& mesh, int coding = -1) {
+  return encode_structured(mesh, qmc::ConnectivityChoice::kPolygon, coding);
+}
+
+// Appends `b`'s faces and vertices to `a` (vertex indices shifted), then
+// optionally identifies vertex `glue_b` of b with vertex `glue_a` of a.
+Mesh combined(Mesh a, const Mesh& b, int glue_a = -1, int glue_b = -1) {
+  const uint32_t shift = uint32_t(a.vertex_count());
+  a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
+  a.face_sizes.insert(a.face_sizes.end(), b.face_sizes.begin(), b.face_sizes.end());
+  for (uint32_t v : b.corners) a.corners.push_back(glue_b >= 0 && v == uint32_t(glue_b) ? uint32_t(glue_a) : v + shift);
+  return a;
+}
+
+Mesh shifted(Mesh m, float dx) {
+  for (size_t i = 0; i < m.positions.size(); i += 3) m.positions[i] += dx;
+  return m;
+}
+
+void write_polygon_valid(VectorWriter* w) {
+  using namespace qmc::tools;
+  const Mesh tet = make_tetrahedron();
+  w->valid("polygon_tetrahedron", encode_polygons(tet), &tet);
+  const Mesh torus = make_torus(6, 4);
+  w->valid("polygon_torus_handle", encode_polygons(torus), &torus);
+  w->valid("polygon_torus_mixed_huffman", encode_polygons(torus, qmc::kPolygonMixedHuffman), &torus);
+  w->valid("polygon_torus_coding_plain", encode_polygons(torus, 0), &torus);
+  const Mesh prism = make_prism(7);
+  w->valid("polygon_prism_heptagons", encode_polygons(prism), &prism);
+  const Mesh grid = make_grid(3, 2);
+  w->valid("polygon_grid_hole", encode_polygons(grid), &grid);
+  Mesh two = combined(tet, shifted(make_cube(), 3.f));
+  two.positions.insert(two.positions.end(), {9.f, 9.f, 9.f});  // an isolated vertex
+  w->valid("polygon_two_components_isolated_vertex", encode_polygons(two), &two);
+  const Mesh pinched = combined(tet, shifted(tet, 2.f), 0, 0);  // two tetrahedra sharing vertex 0
+  w->valid("polygon_pinched_vertex", encode_polygons(pinched), &pinched);
+  Mesh book = tet;  // a fourth face on edge 0-1 makes it non-manifold
+  book.positions.insert(book.positions.end(), {0.5f, -1.f, 0.5f});
+  book.face_sizes.push_back(3);
+  book.corners.insert(book.corners.end(), {0, 1, 4});
+  w->valid("polygon_book_edge", encode_polygons(book), &book);
+  Mesh loose = tet;  // a face that repeats a vertex
+  loose.face_sizes.push_back(4);
+  loose.corners.insert(loose.corners.end(), {0, 1, 0, 2});
+  w->valid("polygon_loose_face", encode_polygons(loose), &loose);
+  Mesh flipped = make_cube();  // one face turned over: its four edges disagree with their neighbours
+  std::swap(flipped.corners[1], flipped.corners[3]);
+  w->valid("polygon_flipped_face", encode_polygons(flipped), &flipped);
+}
+
+// A method-2 CONN payload written field by field.
+std::vector<uint8_t> polygon_conn(uint32_t vertices, uint32_t faces, uint8_t flags, uint8_t coding,
+                                  const std::function<void(qmc::BitWriter*)>& stream) {
+  std::vector<uint8_t> p{uint8_t(qmc::ConnectivityMethod::kPolygon)};
+  qmc::put_varint(&p, vertices);
+  qmc::put_varint(&p, faces);
+  p.push_back(flags);
+  p.push_back(coding);
+  qmc::BitWriter bits;
+  stream(&bits);
+  const std::vector<uint8_t> raw = bits.finish();
+  p.insert(p.end(), raw.begin(), raw.end());
+  return p;
+}
+
+// The pillow: two quads on the same four vertices, one component whose
+// first face is cut open and whose other face is Q1. Records are appended
+// by `tail` (default: none).
+void pillow(qmc::BitWriter* b, int first_degree_minus_3 = 1, int type = 1,
+            const std::function<void(qmc::BitWriter*)>& tail = nullptr) {
+  b->write_exp_golomb(1);  // C
+  b->write_exp_golomb(0);  // n - 2
+  b->write_exp_golomb(uint32_t(first_degree_minus_3));
+  b->write_bits(uint32_t(type - 1), 4);  // plain 4-bit coding
+  if (tail) {
+    tail(b);
+  } else {
+    for (int i = 0; i < 4; ++i) b->write_exp_golomb(0);  // H, S, I, L
+  }
+}
+
+void write_polygon_errors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  const Chunks base = split(encode_polygons(qmc::tools::make_cube()));
+  const size_t conn = find(base, qmc::kChunkConnectivity);
+  auto with_conn = [&](std::vector<uint8_t> payload) {
+    Chunks c = base;
+    c[conn].payload = std::move(payload);
+    return join(c);
+  };
+  auto ok = [](qmc::BitWriter* b) { pillow(b); };
+  // The pillow itself decodes (vertex_count 8: four of the cube's vertices are used by no face).
+  w->valid("polygon_pillow_plain", with_conn(polygon_conn(8, 2, 0, 0, ok)), nullptr);
+  w->invalid("invalid_polygon_reserved_flags", with_conn(polygon_conn(8, 2, 1, 0, ok)), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_polygon_unknown_coding", with_conn(polygon_conn(8, 2, 0, 6, ok)), ErrorCode::kUnsupportedFeature);
+  w->invalid("invalid_polygon_components_unjustified", with_conn(polygon_conn(8, 2, 0, 0, [](qmc::BitWriter* b) {
+               b->write_exp_golomb(5000);
+             })), ErrorCode::kLimitExceeded);
+  w->invalid("invalid_polygon_exp_golomb_32_zeros", with_conn(polygon_conn(8, 2, 0, 0, [](qmc::BitWriter* b) {
+               for (int i = 0; i < 4; ++i) b->write_bits(0, 8);
+               b->write_bits(0xFF, 8);
+             })), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_polygon_quad_coding_no_symbols", with_conn(polygon_conn(8, 0, 0, 0, [](qmc::BitWriter* b) {
+               b->write_exp_golomb(0);
+             })), ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_first_face_not_closed",
+             with_conn(polygon_conn(8, 2, 0, 0, [](qmc::BitWriter* b) { pillow(b, 2); })), ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_detour_without_loop",
+             with_conn(polygon_conn(8, 2, 0, 0, [](qmc::BitWriter* b) { pillow(b, 1, 5); })), ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_edge_used_twice", with_conn(polygon_conn(8, 4, 0, 0, [](qmc::BitWriter* b) {
+               b->write_exp_golomb(1);
+               b->write_exp_golomb(2);  // four faces: the first and Q13 Q2 Q1
+               b->write_exp_golomb(1);
+               for (int t : {13, 2, 1}) b->write_bits(uint32_t(t - 1), 4);
+               for (int i = 0; i < 4; ++i) b->write_exp_golomb(0);
+             })), ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_virtual_index_past_end",
+             with_conn(polygon_conn(8, 1, 0, 0, [](qmc::BitWriter* b) {
+               pillow(b, 1, 1, [](qmc::BitWriter* t) {
+                 t->write_exp_golomb(1);
+                 t->write_exp_golomb(2);
+                 for (int i = 0; i < 3; ++i) t->write_exp_golomb(0);
+               });
+             })), ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_seam_rotation", with_conn(polygon_conn(8, 0, 0, 0, [](qmc::BitWriter* b) {
+               pillow(b, 1, 1, [](qmc::BitWriter* t) {
+                 t->write_exp_golomb(2);  // faces 0 and 1 virtual
+                 t->write_exp_golomb(0);
+                 t->write_exp_golomb(0);
+                 t->write_exp_golomb(1);  // one seam (0, 1) with rotation 4 of degree 4
+                 t->write_exp_golomb(0);
+                 t->write_exp_golomb(0);
+                 t->write_exp_golomb(4);
+                 t->write_exp_golomb(0);
+                 t->write_exp_golomb(0);
+               });
+             })), ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_seam_face_not_virtual", with_conn(polygon_conn(8, 2, 0, 0, [](qmc::BitWriter* b) {
+               pillow(b, 1, 1, [](qmc::BitWriter* t) {
+                 t->write_exp_golomb(0);
+                 t->write_exp_golomb(1);  // a seam although no face is virtual
+                 for (int i = 0; i < 5; ++i) t->write_exp_golomb(0);
+               });
+             })), ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_identification_same_vertex", with_conn(polygon_conn(8, 2, 0, 0, [](qmc::BitWriter* b) {
+               pillow(b, 1, 1, [](qmc::BitWriter* t) {
+                 t->write_exp_golomb(0);
+                 t->write_exp_golomb(0);
+                 t->write_exp_golomb(1);
+                 t->write_bits(3, 2);  // N = 4 surface labels: 2 bits each
+                 t->write_bits(3, 2);
+                 t->write_exp_golomb(0);
+               });
+             })), ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_loose_label_past_vertex_count", with_conn(polygon_conn(6, 3, 0, 0, [](qmc::BitWriter* b) {
+               pillow(b, 1, 1, [](qmc::BitWriter* t) {
+                 for (int i = 0; i < 3; ++i) t->write_exp_golomb(0);
+                 t->write_exp_golomb(1);  // one loose triangle naming vertex 7 of 6
+                 t->write_exp_golomb(0);
+                 for (uint32_t v : {0u, 1u, 7u}) t->write_bits(v, 3);
+               });
+             })), ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_face_count_mismatch", with_conn(polygon_conn(8, 3, 0, 0, ok)), ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_vertex_count_too_small", with_conn(polygon_conn(3, 2, 0, 0, ok)), ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_absent_context_table", with_conn(polygon_conn(8, 2, 0, 5, [](qmc::BitWriter* b) {
+               b->write_exp_golomb(1);
+               b->write_exp_golomb(0);
+               b->write_exp_golomb(1);
+               b->write_bit(false);  // no table for class A
+               b->write_bit(false);  // nor for class B, where the first symbol is read
+               for (int i = 0; i < 4; ++i) b->write_exp_golomb(0);
+             })), ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_other_degree_unjustified", with_conn(polygon_conn(8, 2, 0, 5, [](qmc::BitWriter* b) {
+               b->write_exp_golomb(1);
+               b->write_exp_golomb(0);
+               b->write_exp_golomb(1);
+               b->write_bit(false);
+               b->write_bit(true);  // class B table: only symbol 18, length 1
+               std::vector<uint8_t> lengths(qmc::kPolygonSymbolCount, 0);
+               lengths[qmc::kPolygonOtherSymbol] = 1;
+               qmc::write_code_lengths(b, lengths);
+               b->write_bit(false);             // symbol 18
+               b->write_exp_golomb(1000000);    // degree 1000005 with a handful of bits left
+             })), ErrorCode::kLimitExceeded);
+  w->invalid("invalid_polygon_truncated", with_conn(polygon_conn(8, 2, 0, 0, [](qmc::BitWriter* b) {
+               b->write_exp_golomb(1);
+               b->write_exp_golomb(0);
+               b->write_exp_golomb(1);
+               b->write_bits(0, 4);
+               b->write_exp_golomb(0);  // H, then the stream ends
+             })), ErrorCode::kTruncated);
+  std::vector<uint8_t> trailing = polygon_conn(8, 2, 0, 0, ok);
+  trailing.push_back(0);
+  w->invalid("invalid_polygon_trailing_byte", with_conn(trailing), ErrorCode::kBadChunkPayload);
+}
+
+// Spec 4.5: the ancillary oRDR chunk, the input's order of vertices, faces
+// and corners. Valid vectors decode to the input in its own order.
+std::vector<uint8_t> encode_keeping_order(const Mesh& mesh, qmc::ConnectivityChoice connectivity) {
+  qmc::EncodeOptions options;
+  options.connectivity = connectivity;
+  options.keep_order = true;
+  std::vector<uint8_t> out;
+  if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: %s\n", s.to_string().c_str());
+    std::exit(3);
+  }
+  return out;
+}
+
+// `mesh` with vertices renumbered, faces shuffled and each face starting at
+// another corner (splitmix64, the same everywhere): an order no coder keeps.
+Mesh scrambled(const Mesh& mesh, uint64_t seed) {
+  qmc::tools::SplitMix64 rng(seed);
+  const uint32_t n = uint32_t(mesh.vertex_count()), faces = uint32_t(mesh.face_count());
+  std::vector<uint32_t> label(n), order(faces);
+  for (uint32_t i = 0; i < n; ++i) label[i] = i;
+  for (uint32_t i = n; i > 1; --i) std::swap(label[i - 1], label[rng.below(i)]);
+  for (uint32_t i = 0; i < faces; ++i) order[i] = i;
+  for (uint32_t i = faces; i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
+  std::vector<size_t> offset(faces + 1, 0);
+  for (uint32_t f = 0; f < faces; ++f) offset[f + 1] = offset[f] + mesh.face_sizes[f];
+  Mesh out;
+  out.positions.resize(mesh.positions.size());
+  for (uint32_t v = 0; v < n; ++v)
+    for (int a = 0; a < 3; ++a) out.positions[3 * size_t(label[v]) + a] = mesh.positions[3 * size_t(v) + a];
+  for (uint32_t f : order) {
+    const uint32_t d = mesh.face_sizes[f], r = rng.below(d);
+    out.face_sizes.push_back(d);
+    for (uint32_t k = 0; k < d; ++k) out.corners.push_back(label[mesh.corners[offset[f] + (k + r) % d]]);
+  }
+  return out;
+}
+
+std::vector<uint8_t> order_header(uint64_t vertices, uint64_t faces, uint8_t flags) {
+  std::vector<uint8_t> p;
+  qmc::put_varint(&p, vertices);
+  qmc::put_varint(&p, faces);
+  p.push_back(flags);
+  return p;
+}
+
+// A map part of spec 4.5: its table, then each value as the difference from
+// the previous value plus one (any values, to make invalid maps too).
+void write_order_values(qmc::BitWriter* b, const std::vector<int64_t>& values) {
+  auto magnitude = [](int64_t e) { return uint32_t(e < 0 ? -e : e); };
+  std::vector<uint64_t> freq(33, 0);
+  int64_t previous = -1;
+  for (int64_t v : values) {
+    ++freq[qmc::magnitude_class(magnitude(v - previous - 1))];
+    previous = v;
+  }
+  const std::vector<uint8_t> lengths = qmc::huffman_code_lengths(freq);
+  qmc::write_code_lengths(b, lengths);
+  const qmc::HuffmanEncoder code(lengths);
+  previous = -1;
+  for (int64_t v : values) {
+    const int64_t e = v - previous - 1;
+    const int c = qmc::magnitude_class(magnitude(e));
+    code.write(b, uint32_t(c));
+    if (c > 0) b->write_bit(e < 0);
+    qmc::write_magnitude_extra(b, magnitude(e), c);
+    previous = v;
+  }
+}
+
+void write_order_rotations(qmc::BitWriter* b, const std::vector<uint32_t>& offsets) {
+  std::vector<uint64_t> freq(33, 0);
+  for (uint32_t s : offsets) ++freq[qmc::magnitude_class(s)];
+  const std::vector<uint8_t> lengths = qmc::huffman_code_lengths(freq);
+  qmc::write_code_lengths(b, lengths);
+  const qmc::HuffmanEncoder code(lengths);
+  for (uint32_t s : offsets) {
+    code.write(b, uint32_t(qmc::magnitude_class(s)));
+    qmc::write_magnitude_extra(b, s, qmc::magnitude_class(s));
+  }
+}
+
+std::vector<uint8_t> order_payload(std::vector<uint8_t> header, const std::function<void(qmc::BitWriter*)>& body) {
+  qmc::BitWriter bits;
+  body(&bits);
+  const std::vector<uint8_t> stream = bits.finish();
+  header.insert(header.end(), stream.begin(), stream.end());
+  return header;
+}
+
+void write_input_order_vectors(VectorWriter* w) {
+  using namespace qmc::tools;
+  using qmc::ErrorCode;
+  const Mesh sphere = scrambled(make_quad_sphere(3), 1);  // all three maps
+  w->valid("valid_ordr_quad_sphere_scrambled", encode_keeping_order(sphere, qmc::ConnectivityChoice::kQuad), &sphere);
+  const Mesh grid = make_grid(5, 3);  // faces starting at their lowest vertex: rotation offsets 0
+  w->valid("valid_ordr_quad_grid", encode_keeping_order(grid, qmc::ConnectivityChoice::kQuad), &grid);
+  RandomSoupOptions soup_options;
+  soup_options.vertices = 60;
+  soup_options.faces = 40;
+  const Mesh soup = make_random_soup(3, soup_options);  // indexed: the vertex map only
+  w->valid("valid_ordr_indexed_soup", encode_keeping_order(soup, qmc::ConnectivityChoice::kIndexed), &soup);
+  const Mesh tetra = make_tetrahedron();  // in first-reference order already: flags 0 is the identity
+  Chunks c = split(encode(tetra, 12));
+  c.insert(c.end() - 1, Chunk{qmc::kChunkOrder, order_header(4, 4, 0)});
+  w->valid("valid_ordr_flags_zero", join(c), &tetra);
+
+  // Invalid oRDR chunks in the quad-coded cube (8 vertices, 6 quads).
+  const Chunks base = split(encode_quads(make_cube()));  // QHDR CONN POSN QEND
+  auto with_order = [&](const std::vector<uint8_t>& payload) {
+    Chunks chunks = base;
+    chunks.insert(chunks.end() - 1, Chunk{qmc::kChunkOrder, payload});
+    return join(chunks);
+  };
+  const uint8_t kFaces = 1, kVertices = 2, kRotations = 4;
+  const std::vector<uint8_t> faces_reversed =
+      order_payload(order_header(8, 6, kFaces), [](qmc::BitWriter* b) { write_order_values(b, {5, 4, 3, 2, 1, 0}); });
+  w->invalid("invalid_ordr_not_permutation",
+             with_order(order_payload(order_header(8, 6, kFaces),
+                                      [](qmc::BitWriter* b) { write_order_values(b, {0, 1, 2, 2, 4, 5}); })),
+             ErrorCode::kBadSymbol);
+  w->invalid("invalid_ordr_vertex_out_of_range",
+             with_order(order_payload(order_header(8, 6, kVertices),
+                                      [](qmc::BitWriter* b) { write_order_values(b, {0, 1, 2, 3, 4, 5, 6, 8}); })),
+             ErrorCode::kBadSymbol);
+  w->invalid("invalid_ordr_rotation_out_of_range",
+             with_order(order_payload(order_header(8, 6, kRotations),
+                                      [](qmc::BitWriter* b) { write_order_rotations(b, {0, 1, 4, 0, 0, 0}); })),
+             ErrorCode::kBadSymbol);
+  w->invalid("invalid_ordr_face_count_mismatch", with_order(order_header(8, 7, 0)), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_ordr_reserved_flags", with_order(order_header(8, 6, 8)), ErrorCode::kBadChunkPayload);
+  std::vector<uint8_t> p = faces_reversed;
+  p.push_back(0);
+  w->invalid("invalid_ordr_trailing_byte", with_order(p), ErrorCode::kBadChunkPayload);
+  p = order_header(8, 6, kFaces | kRotations);
+  p.push_back(0xFF);  // 12 values cannot fit in 8 bits
+  w->invalid("invalid_ordr_count_unjustified", with_order(p), ErrorCode::kLimitExceeded);
+  w->invalid("invalid_ordr_truncated", with_order(order_payload(order_header(8, 6, kFaces), [](qmc::BitWriter* b) {
+               qmc::write_code_lengths(b, lengths_of({{0, 1}, {3, 1}}, 4));  // class 0: '0', class 3: '1'
+               while ((b->bit_count() + 3) % 8 != 0) b->write_bit(false);   // values 0, 1, ... (fewer than 6)
+               b->write_bits(0b100, 3);  // class 3, '+', and one of its two extra bits: the stream ends
+             })),
+             ErrorCode::kTruncated);
+  Chunks early = base;
+  early.insert(early.begin() + 2, Chunk{qmc::kChunkOrder, faces_reversed});  // before POSN
+  w->invalid("invalid_ordr_before_posn", join(early), ErrorCode::kChunkOrder);
+  Chunks twice = base;
+  twice.insert(twice.end() - 1, Chunk{qmc::kChunkOrder, faces_reversed});
+  twice.insert(twice.end() - 1, Chunk{qmc::kChunkOrder, faces_reversed});
+  w->invalid("invalid_ordr_twice", join(twice), ErrorCode::kChunkOrder);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -563,6 +921,9 @@ int main(int argc, char** argv) {
   write_position_errors(&w);
   write_quad_valid(&w);
   write_quad_errors(&w);
+  write_polygon_valid(&w);
+  write_polygon_errors(&w);
+  write_input_order_vectors(&w);
   w.finish();
   return 0;
 }

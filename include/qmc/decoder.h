@@ -40,9 +40,19 @@ struct DecodedFile {
   ConnectivityMethod method = ConnectivityMethod::kIndexed;
   int quad_coding = -1;      // method 1: the coding of section 5.3.5 (QuadCoding)
   bool quad_closed = false;  // method 1: a quad was cut open (closed mesh)
+  // Method 2 (section 5.4): coding (5.4.4) and what the records carried.
+  int polygon_coding = -1;
+  uint32_t polygon_components = 0, polygon_virtual_faces = 0, polygon_seams = 0, polygon_identifications = 0,
+           polygon_loose_faces = 0;
   uint8_t version_major = 0, version_minor = 0;
   std::vector<ChunkInfo> chunks;
   std::vector<std::string> texts;     // payloads of teXt chunks, "key=value"
+  // Section 4.5: an oRDR chunk was decoded and applied, so vertices, faces
+  // and each face's first corner are in the encoder input's order, not the
+  // coder's; order_flags says which maps it carried (bit 0 faces, bit 1
+  // vertices, bit 2 rotations; a clear bit is the identity).
+  bool order_restored = false;
+  uint8_t order_flags = 0;
 };
 
 struct DecoderLimits {
@@ -56,7 +66,8 @@ Status decode(const uint8_t* data, size_t size, DecodedFile* out, const DecoderL
 
 // Decodes a file whose bytes arrive in pieces (section 3.5). Each complete
 // chunk is validated and decoded the moment its last byte arrives; a viewer
-// can poll `file()` as chunks land.
+// can poll `file()` as chunks land. An oRDR chunk (section 4.5), after POSN,
+// reorders the mesh in `file()` into the input's order when it arrives.
 class StreamDecoder {
  public:
   explicit StreamDecoder(const DecoderLimits& limits = {});

@@ -14,9 +14,10 @@ namespace qmc {
 
 // Which connectivity coding to use (section 5.1).
 enum class ConnectivityChoice : uint8_t {
-  kAuto,     // the quad coder where the mesh is in its scope, else indexed
+  kAuto,     // the quad coder where the mesh is in its scope, else the polygon coder
   kIndexed,  // always the indexed coding
   kQuad,     // the quad coder or an error naming why it cannot be used
+  kPolygon,  // always the polygon coder (section 5.4)
 };
 
 struct EncodeOptions {
@@ -25,7 +26,13 @@ struct EncodeOptions {
   // Quad coder only: force a coding (0..4, section 5.3.5); -1 picks the
   // smallest. A forced coding that cannot express the mesh is an error.
   int quad_coding = -1;
+  // Polygon coder only: force a coding (0..5, section 5.4.4); -1 picks the smallest.
+  int polygon_coding = -1;
   std::vector<std::string> texts;            // written as teXt chunks ("key=value")
+  // Write an oRDR chunk (section 4.5) so that the decoder restores the
+  // input's order of vertices, faces and corners exactly; nothing is
+  // written when the coder order already is the input's order.
+  bool keep_order = false;
 };
 
 struct ChunkStats {
@@ -41,14 +48,25 @@ struct QuadCoderStats {
   std::array<uint32_t, 14> type_counts{};  // index 1..13
 };
 
+struct PolygonCoderStats {
+  uint8_t coding = 0;                    // chosen coding, spec 5.4.4
+  std::array<int64_t, 6> coding_bits{};  // face-symbol bits per coding; -1 = not applicable
+  uint32_t components = 0, holes = 0, handles = 0, identifications = 0, loose_faces = 0;
+  uint32_t non_quad_faces = 0;
+  uint64_t record_bits = 0;              // bits of the records of 5.4.7 and 5.4.8
+};
+
 struct EncodeStats {
   ConnectivityMethod method = ConnectivityMethod::kIndexed;
   std::string fallback_reason;  // why the quad coder was not used (kAuto), empty if it was
+  std::string polygon_fallback_reason;  // why the polygon coder was not used either (never expected)
   QuadCoderStats quad;          // filled when method == kQuad
+  PolygonCoderStats polygon;    // filled when method == kPolygon
   std::vector<ChunkStats> chunks;
   uint64_t total_bytes = 0;
   // Vertex order of the file: file_vertex[i] is the input index of the
-  // vertex the decoder will output as vertex i (sections 5.2.1, 5.3.4).
+  // vertex the decoder will output as vertex i (sections 5.2.1, 5.3.4) in
+  // coder order, i.e. before an oRDR chunk (keep_order) is applied.
   std::vector<uint32_t> file_vertex;
   // Face order of the file: face_source[i] is the input index of the face
   // the decoder will output as face i.

@@ -11,9 +11,10 @@ namespace qmc {
 inline constexpr uint8_t kSignature[8] = {0x89, 'Q', 'M', 'C', '\r', '\n', 0x1A, '\n'};
 
 // Section 4.1: the format version this library writes and reads. Minor 1
-// added connectivity method 1; files using only method 0 still say 1.0.
+// added connectivity method 1, minor 2 method 2; a file says the lowest
+// minor version that defines the method it uses.
 inline constexpr uint8_t kFormatMajor = 1;
-inline constexpr uint8_t kFormatMinor = 1;
+inline constexpr uint8_t kFormatMinor = 2;
 
 // Section 3.2: a chunk payload is at most 2^31 - 1 bytes.
 inline constexpr uint32_t kMaxChunkLength = 0x7FFFFFFFu;
@@ -28,6 +29,8 @@ inline constexpr uint32_t kChunkConnectivity = chunk_type('C', 'O', 'N', 'N');
 inline constexpr uint32_t kChunkPositions = chunk_type('P', 'O', 'S', 'N');
 inline constexpr uint32_t kChunkEnd = chunk_type('Q', 'E', 'N', 'D');
 inline constexpr uint32_t kChunkText = chunk_type('t', 'e', 'X', 't');
+// Section 4.5: the input's order of vertices, faces and corners (ancillary).
+inline constexpr uint32_t kChunkOrder = chunk_type('o', 'R', 'D', 'R');
 
 // Section 3.3: bit 5 of the first type byte clear (upper-case letter) = critical.
 constexpr bool chunk_is_critical(uint32_t type) { return ((type >> 24) & 0x20u) == 0; }
@@ -36,6 +39,7 @@ constexpr bool chunk_is_critical(uint32_t type) { return ((type >> 24) & 0x20u) 
 enum class ConnectivityMethod : uint8_t {
   kIndexed = 0,  // universal fallback: any polygon soup (section 5.2)
   kQuad = 1,     // seed 001 quad coder: Q1..Q13, Spirale Reversi (section 5.3)
+  kPolygon = 2,  // any polygon mesh: holes, handles, components, n-gons (section 5.4)
 };
 const char* connectivity_method_name(ConnectivityMethod method);
 
@@ -49,6 +53,11 @@ enum class QuadCoding : uint8_t {
 };
 inline constexpr int kQuadCodingCount = 5;
 const char* quad_coding_name(QuadCoding coding);
+
+// Section 5.4.4: method 2 uses the quad codings 0..4 when every coded face
+// is a quad, or 5, a Huffman code over all face symbols.
+inline constexpr int kPolygonMixedHuffman = 5;
+inline constexpr int kPolygonCodingCount = 6;
 
 // Section 6.1: position quantization bits.
 inline constexpr int kMinPositionBits = 1;

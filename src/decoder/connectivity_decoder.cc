@@ -5,18 +5,20 @@
 
 #include "bitio/byte_io.h"
 #include "decoder/indexed_connectivity_decoder.h"
+#include "decoder/polygon_connectivity_decoder.h"
 #include "decoder/quad_connectivity_decoder.h"
 
 namespace qmc {
 
 Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex_count,
-                           ConnectivityMethod* method, Mesh* mesh, QuadConnectivityInfo* quad_info) {
+                           ConnectivityMethod* method, Mesh* mesh, QuadConnectivityInfo* quad_info,
+                           PolygonConnectivityInfo* polygon_info) {
   ByteReader in(payload, size);
   uint8_t method_id = 0;
   uint64_t vertices = 0, faces = 0;
   // Fields are checked in the order of section 5.1.
   if (!in.get_u8(&method_id)) return Status(ErrorCode::kBadChunkPayload, "CONN payload is empty");
-  if (method_id > uint8_t(ConnectivityMethod::kQuad))
+  if (method_id > uint8_t(ConnectivityMethod::kPolygon))
     return Status(ErrorCode::kUnsupportedFeature, "connectivity method " + std::to_string(method_id));
   if (!in.get_varint(&vertices) || vertices > UINT32_MAX)
     return Status(ErrorCode::kBadChunkPayload, "CONN vertex_count missing, malformed or above 2^32 - 1");
@@ -25,6 +27,10 @@ Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex
   Status s;
   if (method_id == uint8_t(ConnectivityMethod::kIndexed)) {
     s = decode_indexed_connectivity(in.cursor(), in.remaining(), uint32_t(vertices), uint32_t(faces), mesh);
+  } else if (method_id == uint8_t(ConnectivityMethod::kPolygon)) {
+    PolygonConnectivityInfo polygon;
+    s = decode_polygon_connectivity(in.cursor(), in.remaining(), uint32_t(vertices), uint32_t(faces), mesh, &polygon);
+    if (polygon_info) *polygon_info = polygon;
   } else {
     QuadConnectivityInfo quad;
     s = decode_quad_connectivity(in.cursor(), in.remaining(), uint32_t(vertices), uint32_t(faces), mesh, &quad);

@@ -6,14 +6,17 @@
 
 #include "qmc/format.h"
 #include "qmc/mesh.h"
+#include "decoder/polygon_connectivity_decoder.h"
 #include "decoder/quad_connectivity_decoder.h"
 #include "qmc/status.h"
 
 namespace qmc {
 
 // Decodes a CONN payload into mesh->face_sizes / mesh->corners. For method
-// 1, `quad` (if given) receives the flags and coding.
+// 1, `quad` (if given) receives the flags and coding; for method 2,
+// `polygon` its coding and record counts.
 Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex_count,
-                           ConnectivityMethod* method, Mesh* mesh, QuadConnectivityInfo* quad = nullptr);
+                           ConnectivityMethod* method, Mesh* mesh, QuadConnectivityInfo* quad = nullptr,
+                           PolygonConnectivityInfo* polygon = nullptr);
 
 }  // namespace qmc

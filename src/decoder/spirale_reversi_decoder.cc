@@ -11,6 +11,8 @@
 
 #include <string>
 
+#include "decoder/loop_nodes.h"
+
 namespace qmc {
 namespace {
 
@@ -24,10 +26,7 @@ struct Loop {
 class SpiraleReversi {
  public:
   explicit SpiraleReversi(size_t operations) {
-    prev_.reserve(4 * operations);
-    next_.reserve(4 * operations);
-    vertex_.reserve(4 * operations);
-    parent_.reserve(4 * operations);
+    nodes_.reserve(4 * operations);
     quads_.reserve(4 * operations);
   }
 
@@ -35,27 +34,12 @@ class SpiraleReversi {
   Status finish(bool closed, uint32_t vertex_count, Mesh* mesh);
 
  private:
-  // Nodes and temporary vertices.
-  uint32_t new_vertex() {
-    parent_.push_back(uint32_t(parent_.size()));
-    return uint32_t(parent_.size() - 1);
-  }
-  uint32_t new_node(uint32_t vertex) {
-    prev_.push_back(kNone);
-    next_.push_back(kNone);
-    vertex_.push_back(vertex);
-    return uint32_t(vertex_.size() - 1);
-  }
-  void link(uint32_t a, uint32_t b) {
-    next_[a] = b;
-    prev_[b] = a;
-  }
-  uint32_t find(uint32_t v) {
-    while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
-    return v;
-  }
-  // The vertex of node `gone` is the vertex of node `kept` (spec 5.3.6 merge).
-  void merge(uint32_t kept, uint32_t gone) { parent_[find(vertex_[gone])] = find(vertex_[kept]); }
+  // Nodes and temporary vertices (loop_nodes.h); merge is spec 5.3.6's.
+  uint32_t new_vertex() { return nodes_.new_vertex(); }
+  uint32_t new_node(uint32_t vertex) { return nodes_.new_node(vertex); }
+  void link(uint32_t a, uint32_t b) { nodes_.link(a, b); }
+  uint32_t find(uint32_t v) { return nodes_.find(v); }
+  void merge(uint32_t kept, uint32_t gone) { nodes_.merge(kept, gone); }
   void emit(uint32_t g0, uint32_t g1, uint32_t x, uint32_t y) {
     quads_.insert(quads_.end(), {vertex_[g0], vertex_[g1], vertex_[x], vertex_[y]});
   }
@@ -81,7 +65,8 @@ class SpiraleReversi {
   Status join_two(int type);   // Q3, Q7, Q9, Q10, Q11
   Status q8();
 
-  std::vector<uint32_t> prev_, next_, vertex_, parent_;
+  LoopNodes nodes_;
+  std::vector<uint32_t>&prev_ = nodes_.prev, &next_ = nodes_.next, &vertex_ = nodes_.vertex, &parent_ = nodes_.parent;
   std::vector<uint32_t> quads_;  // temporary vertices, 4 per quad, decoding order
   std::vector<uint32_t> inner_;  // inner-vertex stack
   std::vector<Loop> loops_;      // loop stack

@@ -7,6 +7,7 @@
 #include "bitio/byte_io.h"
 #include "bitio/crc32.h"
 #include "decoder/connectivity_decoder.h"
+#include "decoder/order_decoder.h"
 #include "decoder/position_decoder.h"
 #include "qmc/decoder.h"
 
@@ -18,6 +19,7 @@ struct StreamDecoder::State {
   uint64_t offset = 0;           // file offset of the first byte not yet consumed
   bool signature_seen = false, header_seen = false, connectivity_seen = false, positions_seen = false;
   bool complete = false;
+  bool order_seen = false;  // oRDR (section 4.5)
   uint32_t vertex_count = 0;
   DecodedFile file;
   Status error;
@@ -28,6 +30,7 @@ struct StreamDecoder::State {
   Status handle_header(const uint8_t* payload, uint32_t length);
   Status handle_connectivity(const uint8_t* payload, uint32_t length);
   Status handle_positions(const uint8_t* payload, uint32_t length);
+  Status handle_order(const uint8_t* payload, uint32_t length);
   Status handle_end(uint32_t length);
 };
 
@@ -59,6 +62,7 @@ const char* connectivity_method_name(ConnectivityMethod method) {
   switch (method) {
     case ConnectivityMethod::kIndexed: return "indexed";
     case ConnectivityMethod::kQuad: return "quad";
+    case ConnectivityMethod::kPolygon: return "polygon";
   }
   return "unknown";
 }
@@ -132,6 +136,7 @@ Status StreamDecoder::State::handle_chunk(uint32_t type, const uint8_t* payload,
     case kChunkPositions: s = handle_positions(payload, length); break;
     case kChunkEnd: s = handle_end(length); break;
     case kChunkText: file.texts.emplace_back(reinterpret_cast<const char*>(payload), length); break;
+    case kChunkOrder: s = handle_order(payload, length); break;
     default:
       if (info.critical)
         return Status(ErrorCode::kUnknownCriticalChunk, "unknown critical chunk " + chunk_type_name(type));
@@ -158,8 +163,18 @@ Status StreamDecoder::State::handle_header(const uint8_t* payload, uint32_t leng
 Status StreamDecoder::State::handle_connectivity(const uint8_t* payload, uint32_t length) {
   if (connectivity_seen) return order_error("a second CONN");
   QuadConnectivityInfo quad;
-  if (Status s = decode_connectivity(payload, length, &vertex_count, &file.method, &file.mesh, &quad); !s.ok())
+  PolygonConnectivityInfo polygon;
+  if (Status s = decode_connectivity(payload, length, &vertex_count, &file.method, &file.mesh, &quad, &polygon);
+      !s.ok())
     return s;
+  if (file.method == ConnectivityMethod::kPolygon) {
+    file.polygon_coding = polygon.coding;
+    file.polygon_components = polygon.components;
+    file.polygon_virtual_faces = polygon.virtual_faces;
+    file.polygon_seams = polygon.seams;
+    file.polygon_identifications = polygon.identifications;
+    file.polygon_loose_faces = polygon.loose_faces;
+  }
   if (file.method == ConnectivityMethod::kQuad) {
     file.quad_coding = quad.coding;
     file.quad_closed = quad.closed;
@@ -175,6 +190,19 @@ Status StreamDecoder::State::handle_positions(const uint8_t* payload, uint32_t l
                               &file.mesh.positions);
   if (!s.ok()) return s;
   positions_seen = true;
+  return Status::Ok();
+}
+
+// Section 4.5: applied as soon as it arrives; until then file() is in coder order.
+Status StreamDecoder::State::handle_order(const uint8_t* payload, uint32_t length) {
+  if (!positions_seen) return order_error("oRDR before POSN");
+  if (order_seen) return order_error("a second oRDR");
+  OrderMaps maps;
+  if (Status s = decode_order(payload, length, vertex_count, file.mesh, &maps); !s.ok()) return s;
+  apply_order(maps, &file.mesh, &file.quantized);
+  file.order_restored = true;
+  file.order_flags = maps.flags;
+  order_seen = true;
   return Status::Ok();
 }
 

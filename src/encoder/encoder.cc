@@ -8,7 +8,9 @@
 #include "bitio/byte_io.h"
 #include "encoder/chunk_writer.h"
 #include "encoder/indexed_connectivity_encoder.h"
+#include "encoder/order_encoder.h"
 #include "decoder/connectivity_decoder.h"
+#include "encoder/polygon_connectivity_encoder.h"
 #include "encoder/position_encoder.h"
 #include "encoder/quad_connectivity_encoder.h"
 #include "encoder/quad_traversal_encoder.h"
@@ -45,6 +47,8 @@ Status validate(const Mesh& mesh, const EncodeOptions& options) {
                      " of " + std::to_string(mesh.vertex_count()));
   for (const std::string& text : options.texts)
     if (text.size() > kMaxChunkLength) return invalid("text too long for one chunk");
+  if (options.polygon_coding < -1 || options.polygon_coding >= kPolygonCodingCount)
+    return invalid("polygon coding must be -1 (smallest) or 0.." + std::to_string(kPolygonCodingCount - 1));
   if (options.quad_coding < -1 || options.quad_coding >= kQuadCodingCount)
     return invalid("quad coding must be -1 (smallest) or 0.." + std::to_string(kQuadCodingCount - 1));
   return Status::Ok();
@@ -83,6 +87,18 @@ FileConnectivity indexed_connectivity(const Mesh& mesh) {
   return c;
 }
 
+// Decodes the coder's own CONN payload; "" if it gives back the file mesh.
+std::string self_check(const FileConnectivity& c, size_t vertex_count, const char* coder) {
+  Mesh check;
+  uint32_t vertices = 0;
+  ConnectivityMethod method;
+  const Status decoded = decode_connectivity(c.payload.data(), c.payload.size(), &vertices, &method, &check);
+  if (decoded.ok() && check.corners == c.mesh.corners && check.face_sizes == c.mesh.face_sizes &&
+      vertices == vertex_count)
+    return {};
+  return std::string("internal: the ") + coder + "'s output did not decode to the input (" + decoded.to_string() + ")";
+}
+
 // The quad coder (section 5.3), checked by decoding its own output: a mesh
 // it would get wrong goes to the indexed coding instead, with the reason.
 std::string quad_connectivity(const Mesh& mesh, int forced_coding, FileConnectivity* c, QuadCoderStats* stats) {
@@ -98,17 +114,35 @@ std::string quad_connectivity(const Mesh& mesh, int forced_coding, FileConnectiv
   c->mesh.positions = permuted_positions(mesh, traversal.file_vertex);
   c->file_vertex = std::move(traversal.file_vertex);
   c->face_source = std::move(traversal.face_source);
-  Mesh check;
-  uint32_t vertices = 0;
-  ConnectivityMethod method;
-  const Status decoded = decode_connectivity(c->payload.data(), c->payload.size(), &vertices, &method, &check);
-  if (!decoded.ok() || check.corners != c->mesh.corners || vertices != mesh.vertex_count())
-    return "internal: the quad coder's output did not decode to the input (" + decoded.to_string() + ")";
+  if (std::string why = self_check(*c, mesh.vertex_count(), "quad coder"); !why.empty()) return why;
   stats->closed = traversal.closed;
   stats->coding = choice.coding;
   stats->coding_bits = choice.stream_bits;
   stats->claim_violations = traversal.claim_violations;
   for (uint8_t t : traversal.types) ++stats->type_counts[t];
+  return {};
+}
+
+// The polygon coder (section 5.4), also checked by decoding its own output.
+std::string polygon_connectivity(const Mesh& mesh, int forced_coding, FileConnectivity* c, PolygonCoderStats* stats) {
+  PolygonEncoding enc;
+  if (std::string why = encode_polygon_connectivity(mesh, forced_coding, &enc); !why.empty()) return why;
+  c->method = ConnectivityMethod::kPolygon;
+  c->payload = std::move(enc.payload);
+  c->mesh = std::move(enc.file_mesh);
+  c->mesh.positions = permuted_positions(mesh, enc.file_vertex);
+  c->file_vertex = std::move(enc.file_vertex);
+  c->face_source = std::move(enc.face_source);
+  if (std::string why = self_check(*c, mesh.vertex_count(), "polygon coder"); !why.empty()) return why;
+  stats->coding = enc.coding;
+  stats->coding_bits = enc.coding_bits;
+  stats->components = enc.components;
+  stats->holes = enc.holes;
+  stats->handles = enc.handles;
+  stats->identifications = enc.identifications;
+  stats->loose_faces = enc.loose_faces;
+  stats->non_quad_faces = enc.non_quad_faces;
+  stats->record_bits = enc.record_bits;
   return {};
 }
 
@@ -120,25 +154,38 @@ Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_
   EncodeStats& st = stats ? *stats : local;
   st = EncodeStats{};
   FileConnectivity conn;
-  bool quad = false;
-  if (options.connectivity != ConnectivityChoice::kIndexed) {
+  bool structured = false;
+  if (options.connectivity == ConnectivityChoice::kAuto || options.connectivity == ConnectivityChoice::kQuad) {
     const std::string why = quad_connectivity(mesh, options.quad_coding, &conn, &st.quad);
-    quad = why.empty();
-    if (!quad && options.connectivity == ConnectivityChoice::kQuad)
+    structured = why.empty();
+    if (!structured && options.connectivity == ConnectivityChoice::kQuad)
       return invalid("the quad coder cannot take this mesh: " + why);
     st.fallback_reason = why;
   }
-  if (!quad) conn = indexed_connectivity(mesh);
+  if (!structured && options.connectivity != ConnectivityChoice::kIndexed) {
+    conn = FileConnectivity{};
+    const std::string why = polygon_connectivity(mesh, options.polygon_coding, &conn, &st.polygon);
+    structured = why.empty();
+    if (!structured && options.connectivity == ConnectivityChoice::kPolygon)
+      return invalid("the polygon coder cannot take this mesh: " + why);
+    st.polygon_fallback_reason = why;
+  }
+  if (!structured) conn = indexed_connectivity(mesh);
 
   out->clear();
   write_signature(out);
   // The lowest minor version that defines everything in the file (4.1).
-  const uint8_t minor = quad ? 1 : 0;
+  const uint8_t minor = conn.method == ConnectivityMethod::kPolygon ? 2 : conn.method == ConnectivityMethod::kQuad ? 1 : 0;
   add_chunk(out, &st, kChunkHeader, {kFormatMajor, minor});
   for (const std::string& text : options.texts)
     add_chunk(out, &st, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));
   add_chunk(out, &st, kChunkConnectivity, conn.payload);
   add_chunk(out, &st, kChunkPositions, encode_positions(quantize_positions(conn.mesh.positions, options.position_bits)));
+  if (options.keep_order) {  // section 4.5: right after POSN, only if the coder order differs
+    std::vector<uint8_t> order;
+    if (Status s = encode_order(mesh, conn.mesh, conn.file_vertex, conn.face_source, &order); !s.ok()) return s;
+    if (!order.empty()) add_chunk(out, &st, kChunkOrder, order);
+  }
   add_chunk(out, &st, kChunkEnd, {});
   st.method = conn.method;
   st.total_bytes = out->size();

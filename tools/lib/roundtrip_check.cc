@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "encoder/polygon_connectivity_encoder.h"
 #include "encoder/quad_traversal_encoder.h"
 
 namespace qmc::tools {
@@ -31,17 +32,38 @@ bool spec_correspondence(const Mesh& original, ConnectivityMethod method, Corres
     c->face_source = std::move(traversal.face_source);
     return true;
   }
+  if (method == ConnectivityMethod::kPolygon) {
+    // The encoder's correspondence is a witness: check_round_trip still
+    // checks every face and coordinate against it.
+    PolygonEncoding encoding;
+    *why = encode_polygon_connectivity(original, -1, &encoding);
+    if (!why->empty()) return false;
+    c->file_vertex = std::move(encoding.file_vertex);
+    c->face_source = std::move(encoding.face_source);
+    return true;
+  }
   c->file_vertex = spec_vertex_order(original);
   c->face_source.resize(original.face_count());
   for (uint32_t f = 0; f < c->face_source.size(); ++f) c->face_source[f] = f;
   return true;
 }
 
+Correspondence identity_correspondence(const Mesh& original) {
+  Correspondence c;
+  c.file_vertex.resize(original.vertex_count());
+  for (uint32_t v = 0; v < c.file_vertex.size(); ++v) c.file_vertex[v] = v;
+  c.face_source.resize(original.face_count());
+  for (uint32_t f = 0; f < c.face_source.size(); ++f) c.face_source[f] = f;
+  c.exact_corners = true;
+  return c;
+}
+
 namespace {
 
 // Rotation (never reversal) of `source` relabelled that equals `decoded`.
-bool same_cycle(const uint32_t* source, const uint32_t* decoded, uint32_t n, const std::vector<uint32_t>& label) {
-  for (uint32_t r = 0; r < n; ++r) {
+bool same_cycle(const uint32_t* source, const uint32_t* decoded, uint32_t n, const std::vector<uint32_t>& label,
+                bool exact) {
+  for (uint32_t r = 0; r < (exact ? 1u : n); ++r) {
     uint32_t i = 0;
     while (i < n && label[source[(i + r) % n]] == decoded[i]) ++i;
     if (i == n) return true;
@@ -64,7 +86,7 @@ std::string compare_faces(const Mesh& original, const Mesh& decoded, const Corre
     used[src] = true;
     const uint32_t n = decoded.face_sizes[f];
     if (original.face_sizes[src] != n) return "face " + std::to_string(f) + " degree differs";
-    if (!same_cycle(&original.corners[offset[src]], &decoded.corners[k], n, label))
+    if (!same_cycle(&original.corners[offset[src]], &decoded.corners[k], n, label, c.exact_corners))
       return "face " + std::to_string(f) + " (input face " + std::to_string(src) + ") differs";
     k += n;
   }
@@ -80,11 +102,12 @@ double float_ulp(double x) {
 }  // namespace
 
 RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decoded) {
+  if (decoded.order_restored) return check_round_trip(original, decoded, identity_correspondence(original));
   Correspondence c;
   std::string why;
   if (!spec_correspondence(original, decoded.method, &c, &why)) {
     RoundTripReport report;
-    report.face_mismatch = "the file uses the quad coder but the input is outside its scope: " + why;
+    report.face_mismatch = "the file's coder cannot take the input: " + why;
     return report;
   }
   return check_round_trip(original, decoded, c);

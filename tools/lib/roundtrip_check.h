@@ -21,7 +21,12 @@ std::vector<uint32_t> spec_vertex_order(const Mesh& mesh);
 struct Correspondence {
   std::vector<uint32_t> file_vertex;  // decoded vertex -> input vertex
   std::vector<uint32_t> face_source;  // decoded face -> input face
+  bool exact_corners = false;         // each face must start at its source's first corner
 };
+
+// The input's own order (a file whose oRDR chunk was applied, spec 4.5):
+// identity maps, faces compared corner by corner without rotation.
+Correspondence identity_correspondence(const Mesh& original);
 
 // The correspondence the spec defines for `method`: section 5.2.1 for the
 // indexed coding, the traversal of section 5.3.3-5.3.4 for the quad coder.
@@ -38,11 +43,13 @@ struct RoundTripReport {
 };
 
 // Every decoded face must be its source face relabelled (for the quad coder
-// possibly starting at another corner, never reversed); every coordinate
+// possibly starting at another corner unless c.exact_corners, never
+// reversed); every coordinate
 // must lie within half a quantization step (plus binary32 rounding) of the
 // input.
 RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decoded, const Correspondence& c);
-// The same with the spec's correspondence for the file's method.
+// The same with the spec's correspondence for the file's method, or the
+// identity_correspondence when the decoder applied an oRDR chunk.
 RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decoded);
 
 }  // namespace qmc::tools

@@ -1,0 +1,268 @@
+// Spirale Reversi for polygons, spec/qmc-format.md 5.4.5.
+//
+// The state is that of method 1 (5.3.6): loops as doubly linked lists of
+// nodes naming temporary vertices, a loop stack, an inner-vertex stack and a
+// union-find that merges the two nodes of an anchor split between two
+// loops. One operation handles every face shape: pop one loop per detour
+// beyond the first, cut the free vertices out of each detour's loop, and
+// join the remaining paths with the edge gaps into the loop the encoder saw
+// before the face. Every count used to index is checked first.
+#include "decoder/polygon_spirale_reversi.h"
+
+#include <string>
+
+#include "decoder/loop_nodes.h"
+
+namespace qmc {
+namespace {
+
+constexpr uint32_t kNone = UINT32_MAX;
+
+Status invalid(size_t face, const std::string& why) {
+  return Status(ErrorCode::kBadSymbol, "CONN: polygon face symbol " + std::to_string(face) + " " + why);
+}
+
+struct Loop {
+  uint32_t gate = kNone;
+  uint64_t length = 0;
+};
+
+// One detour gap of the face being undone (5.4.5).
+struct Detour {
+  uint32_t start = kNone, end = kNone;  // s and t
+  uint32_t free_first = 0;              // index into free_nodes_
+  uint64_t path_edges = 0;              // n - f - 1
+};
+
+class PolygonSpiraleReversi {
+ public:
+  explicit PolygonSpiraleReversi(size_t node_capacity) { nodes_.reserve(node_capacity); }
+
+  // Undoes coded face `f` of `shapes` (global index, for messages).
+  Status apply(const FaceShapes& shapes, size_t f);
+  // Ends a component whose first face has degree d: labels its vertices
+  // from `first_label` and appends its faces to the surface.
+  Status finish_component(uint32_t d, size_t first_coded, size_t coded, PolygonSurface* surface);
+
+ private:
+  uint32_t new_node() { return nodes_.new_node(); }
+  void link(uint32_t a, uint32_t b) { nodes_.link(a, b); }
+  uint32_t find(uint32_t v) { return nodes_.find(v); }
+  void merge(uint32_t kept, uint32_t gone) { nodes_.merge(kept, gone); }
+
+  Status whole_loop(const FaceShapes& shapes, size_t f);
+  Status open_detour(size_t f, const Loop& loop, uint32_t free_count, Detour* detour);
+
+  LoopNodes nodes_;
+  std::vector<uint32_t>&prev_ = nodes_.prev, &next_ = nodes_.next, &vertex_ = nodes_.vertex, &parent_ = nodes_.parent;
+  Loop current_;
+  std::vector<Loop> loops_;
+  std::vector<uint32_t> inner_;  // inner-vertex stack
+  // Faces in the order they are undone: vertices (temporary ids), degrees.
+  std::vector<uint32_t> face_vertices_, face_degrees_;
+  // Scratch, reused across faces.
+  std::vector<uint32_t> free_count_, free_nodes_, anchor_;
+  std::vector<Detour> detours_;
+};
+
+Status PolygonSpiraleReversi::whole_loop(const FaceShapes& shapes, size_t f) {
+  const uint32_t d = shapes.degree[f];
+  if (current_.gate != kNone) loops_.push_back(current_);
+  const uint32_t first = new_node();
+  uint32_t last = first;
+  face_vertices_.push_back(vertex_[first]);
+  for (uint32_t i = 1; i < d; ++i) {
+    const uint32_t n = new_node();
+    link(last, n);
+    face_vertices_.push_back(vertex_[n]);
+    last = n;
+  }
+  link(last, first);
+  current_ = {first, d};
+  face_degrees_.push_back(d);
+  return Status::Ok();
+}
+
+Status PolygonSpiraleReversi::open_detour(size_t f, const Loop& loop, uint32_t free_count, Detour* detour) {
+  if (loop.length < uint64_t(free_count) + 2)
+    return invalid(f, "has a detour of " + std::to_string(free_count) + " free vertices on a loop of only " +
+                          std::to_string(loop.length) + " edges");
+  detour->free_first = uint32_t(free_nodes_.size());
+  uint32_t node = loop.gate;
+  for (uint32_t i = 0; i < free_count; ++i) {
+    free_nodes_.push_back(node);
+    node = prev_[node];
+  }
+  detour->end = node;
+  detour->start = next_[loop.gate];
+  detour->path_edges = loop.length - free_count - 1;
+  return Status::Ok();
+}
+
+Status PolygonSpiraleReversi::apply(const FaceShapes& shapes, size_t f) {
+  const uint32_t d = shapes.degree[f], m = d - 2, gaps = shapes.gap_count(f);
+  const uint8_t* status = &shapes.status[shapes.status_begin[f]];
+  const uint8_t* edge = &shapes.gap_is_edge[shapes.gap_begin[f]];
+  free_count_.assign(gaps, 0);
+  for (uint32_t i = 0, g = 0; i < m; ++i) status[i] ? ++g : ++free_count_[g];
+  uint32_t detour_count = 0;
+  for (uint32_t g = 0; g < gaps; ++g) detour_count += edge[g] ? 0 : 1;
+  if (detour_count == 0) return whole_loop(shapes, f);
+  if (current_.gate == kNone) return invalid(f, "has a detour but there is no boundary to attach to");
+  if (loops_.size() < detour_count - 1)
+    return invalid(f, "needs " + std::to_string(detour_count - 1) + " loops from a stack of " +
+                          std::to_string(loops_.size()));
+
+  // Open every detour's loop: the current one for the first, pops after.
+  detours_.assign(gaps, Detour{});
+  free_nodes_.clear();
+  bool first = true;
+  for (uint32_t g = 0; g < gaps; ++g) {
+    if (edge[g]) continue;
+    Loop loop = current_;
+    if (!first) {
+      loop = loops_.back();
+      loops_.pop_back();
+    }
+    first = false;
+    if (Status s = open_detour(f, loop, free_count_[g], &detours_[g]); !s.ok()) return s;
+  }
+
+  // Anchor nodes a_0 = g1 .. a_(k+1) = g0 (5.4.5).
+  anchor_.assign(gaps + 1, kNone);
+  for (uint32_t i = 0; i <= gaps; ++i) {
+    if (i >= 1 && !edge[i - 1]) anchor_[i] = detours_[i - 1].end;
+    else if (i < gaps && !edge[i]) anchor_[i] = detours_[i].start;
+    else anchor_[i] = new_node();
+  }
+  uint64_t length = 1;
+  for (uint32_t g = 0; g < gaps; ++g) {
+    if (edge[g]) {
+      link(anchor_[g], anchor_[g + 1]);
+      ++length;
+      continue;
+    }
+    const Detour& det = detours_[g];
+    if (det.start != anchor_[g]) {  // the previous gap was a detour too: s leaves
+      link(anchor_[g], next_[det.start]);
+      merge(anchor_[g], det.start);
+    }
+    length += det.path_edges;
+  }
+  const uint32_t g0 = anchor_[gaps], g1 = anchor_[0];
+  link(g0, g1);
+  current_ = {g0, length};
+
+  // The face (g0, g1, w1 .. wm), then its free vertices on the inner stack,
+  // last first so that they come off in cycle order.
+  face_vertices_.push_back(vertex_[g0]);
+  face_vertices_.push_back(vertex_[g1]);
+  const size_t w_begin = face_vertices_.size();
+  for (uint32_t i = 0, g = 0, k = 0; i < m; ++i) {
+    if (status[i]) {
+      face_vertices_.push_back(vertex_[anchor_[++g]]);
+      k = 0;
+    } else {
+      face_vertices_.push_back(vertex_[free_nodes_[detours_[g].free_first + k++]]);
+    }
+  }
+  for (uint32_t i = m; i-- > 0;)
+    if (!status[i]) inner_.push_back(face_vertices_[w_begin + i]);
+  face_degrees_.push_back(d);
+  return Status::Ok();
+}
+
+Status PolygonSpiraleReversi::finish_component(uint32_t d, size_t first_coded, size_t coded,
+                                               PolygonSurface* surface) {
+  if (!loops_.empty() || current_.gate == kNone || current_.length != d)
+    return Status(ErrorCode::kBadSymbol, "CONN: component ending at face symbol " + std::to_string(first_coded) +
+                                             " does not close on its first face of degree " + std::to_string(d));
+  std::vector<uint32_t> label(parent_.size(), kNone);
+  const uint32_t base = surface->labels;
+  uint32_t next_label = base;
+  auto give = [&](uint32_t v) {
+    uint32_t& l = label[find(v)];
+    if (l != kNone) return false;
+    l = next_label++;
+    return true;
+  };
+  std::vector<uint32_t> loop_labels;
+  uint32_t node = current_.gate;
+  for (uint32_t i = 0; i < d; ++i, node = next_[node]) {
+    if (!give(vertex_[node])) return Status(ErrorCode::kBadSymbol, "CONN: a vertex is twice on a component's first face");
+  }
+  while (!inner_.empty()) {
+    if (!give(inner_.back())) return Status(ErrorCode::kBadSymbol, "CONN: a vertex would get two labels");
+    inner_.pop_back();
+  }
+  // First face (c0, c1, c2, .., c(d-1)) = loop labels (1, 0, d - 1, .., 2).
+  surface->face_degree.push_back(d);
+  surface->corners.push_back(base + 1);
+  surface->corners.push_back(base);
+  for (uint32_t i = d - 1; i >= 2; --i) surface->corners.push_back(base + i);
+  // Coded faces in traversal order: the reverse of the order undone.
+  size_t end = face_vertices_.size();
+  for (size_t k = coded; k-- > 0;) {
+    const uint32_t degree = face_degrees_[k];
+    const size_t begin = end - degree;
+    surface->face_degree.push_back(degree);
+    for (size_t i = begin; i < end; ++i) surface->corners.push_back(label[find(face_vertices_[i])]);
+    end = begin;
+  }
+  surface->labels = next_label;
+  // The next component starts from nothing.
+  nodes_.clear();
+  current_ = Loop{};
+  face_vertices_.clear();
+  face_degrees_.clear();
+  return Status::Ok();
+}
+
+// Section 5.4.5: no directed edge twice among the surface's faces.
+Status check_directed_edges(const PolygonSurface& s) {
+  const uint32_t n = s.labels;
+  std::vector<uint32_t> start(size_t(n) + 1, 0);
+  for (uint32_t v : s.corners) ++start[v + 1];
+  for (uint32_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<uint32_t> target(s.corners.size()), fill(start.begin(), start.end() - 1);
+  size_t begin = 0;
+  for (uint32_t d : s.face_degree) {
+    for (uint32_t i = 0; i < d; ++i)
+      target[fill[s.corners[begin + i]]++] = s.corners[begin + (i + 1) % d];
+    begin += d;
+  }
+  std::vector<uint32_t> mark(n, kNone);
+  for (uint32_t v = 0; v < n; ++v)
+    for (uint32_t k = start[v]; k < start[v + 1]; ++k) {
+      if (mark[target[k]] == v)
+        return Status(ErrorCode::kBadSymbol, "CONN: the surface uses edge " + std::to_string(v) + "-" +
+                                                 std::to_string(target[k]) + " twice in one direction");
+      mark[target[k]] = v;
+    }
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
+                               const FaceShapes& shapes, PolygonSurface* surface) {
+  *surface = PolygonSurface{};
+  uint64_t largest = 0;  // nodes of the largest component: at most its corners
+  for (size_t c = 0, f = 0; c < components.size(); ++c) {
+    uint64_t corners = 0;
+    for (uint32_t i = 1; i < components[c]; ++i, ++f) corners += shapes.degree[f];
+    if (corners > largest) largest = corners;
+  }
+  PolygonSpiraleReversi decoder{size_t(largest)};
+  size_t first = 0;
+  for (size_t c = 0; c < components.size(); ++c) {
+    const size_t coded = components[c] - 1;
+    for (size_t k = coded; k-- > 0;)
+      if (Status s = decoder.apply(shapes, first + k); !s.ok()) return s;
+    if (Status s = decoder.finish_component(first_degree[c], first, coded, surface); !s.ok()) return s;
+    first += coded;
+  }
+  return check_directed_edges(*surface);
+}
+
+}  // namespace qmc

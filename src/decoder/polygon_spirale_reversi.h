@@ -1,0 +1,27 @@
+// Spirale Reversi for polygon faces (spec/qmc-format.md 5.4.5): seed 001's
+// reverse decoding (§3.3, after Isenburg and Snoeyink's Spirale Reversi)
+// generalized from the 13 quad types to faces of any degree described by
+// their anchors and gaps. Rebuilds the closed genus-0 surface of every
+// component from its face symbols, last to first.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bitio/polygon_symbols.h"
+#include "qmc/status.h"
+
+namespace qmc {
+
+struct PolygonSurface {
+  std::vector<uint32_t> face_degree;  // per surface face, in surface face index order (5.4.1)
+  std::vector<uint32_t> corners;      // surface labels
+  uint32_t labels = 0;                // N: number of surface labels
+};
+
+// components[c] = n_c, first_degree[c] = d_c; `shapes` holds the sum of
+// (n_c - 1) coded faces in stream order.
+Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
+                               const FaceShapes& shapes, PolygonSurface* surface);
+
+}  // namespace qmc

@@ -1,0 +1,30 @@
+// Connectivity method 2 (spec/qmc-format.md 5.4): surface, traversal and
+// the records that give the input back, written as one CONN payload.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "qmc/mesh.h"
+
+namespace qmc {
+
+struct PolygonEncoding {
+  std::vector<uint8_t> payload;
+  Mesh file_mesh;                      // faces in file order and file labels (no positions)
+  std::vector<uint32_t> file_vertex;   // file label -> input vertex
+  std::vector<uint32_t> face_source;   // file face -> input face
+  uint8_t coding = 0;
+  std::array<int64_t, 6> coding_bits{};  // symbol bits per coding, -1 where not applicable
+  uint32_t components = 0, holes = 0, handles = 0, identifications = 0, loose_faces = 0;
+  uint32_t non_quad_faces = 0;
+  uint64_t record_bits = 0;            // virtual faces, seams, identifications, loose faces
+};
+
+// Returns "" or why the mesh cannot go through method 2. `forced` is a
+// coding 0..5, or -1 for the smallest.
+std::string encode_polygon_connectivity(const Mesh& mesh, int forced, PolygonEncoding* out);
+
+}  // namespace qmc

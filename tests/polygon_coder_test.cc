@@ -1,0 +1,214 @@
+// The polygon coder (spec/qmc-format.md 5.4): the spec's symbol tables,
+// hand-made streams read like the spec's examples, every corpus mesh, and
+// thousands of random manifold and non-manifold polygon meshes, all of which
+// must come back exactly.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "bitio/bit_writer.h"
+#include "bitio/byte_io.h"
+#include "bitio/polygon_symbols.h"
+#include "decoder/connectivity_decoder.h"
+#include "mesh_generators.h"
+#include "mesh_io.h"
+#include "qmc/decoder.h"
+#include "qmc/encoder.h"
+#include "random_polygon_mesh.h"
+#include "roundtrip_check.h"
+
+namespace qmc {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Encodes with the polygon coder and checks the decoded file face by face.
+::testing::AssertionResult polygon_round_trip(const Mesh& mesh, EncodeStats* stats = nullptr,
+                                              ConnectivityChoice choice = ConnectivityChoice::kPolygon) {
+  EncodeOptions options;
+  options.connectivity = choice;
+  std::vector<uint8_t> bytes;
+  EncodeStats local;
+  if (Status s = encode(mesh, options, &bytes, stats ? stats : &local); !s.ok())
+    return ::testing::AssertionFailure() << "encode: " << s.to_string();
+  DecodedFile file;
+  if (Status s = decode(bytes.data(), bytes.size(), &file); !s.ok())
+    return ::testing::AssertionFailure() << "decode: " << s.to_string();
+  const tools::RoundTripReport r = tools::check_round_trip(mesh, file);
+  if (!r.faces_equal) return ::testing::AssertionFailure() << r.face_mismatch;
+  if (!r.positions_within_bound) return ::testing::AssertionFailure() << r.position_mismatch;
+  return ::testing::AssertionSuccess();
+}
+
+TEST(PolygonSymbols, QuadTypesAreTheirGapShapes) {
+  // 5.4.3: Q12 is "y free, x adjacent": x an anchor reached by an edge gap,
+  // then one detour through y to g0; its class is B.
+  uint8_t status[2], gaps[3];
+  uint32_t count = 0;
+  EXPECT_EQ(symbol_shape(11, status, gaps, &count), 4u);
+  EXPECT_EQ(status[0], 1);
+  EXPECT_EQ(status[1], 0);
+  ASSERT_EQ(count, 2u);
+  EXPECT_EQ(gaps[0], 1);
+  EXPECT_EQ(gaps[1], 0);
+  // Q1 is a whole loop: two anchors, three edge gaps, class A.
+  symbol_shape(0, status, gaps, &count);
+  ASSERT_EQ(count, 3u);
+  EXPECT_TRUE(gaps[0] && gaps[1] && gaps[2]);
+}
+
+TEST(PolygonSymbols, EveryShapeOfDegreeThreeAndFourHasItsOwnSymbol) {
+  FaceShapes shapes;
+  for (int symbol = 0; symbol < 18; ++symbol) {
+    uint8_t status[2], gaps[3];
+    uint32_t count = 0;
+    const uint32_t d = symbol_shape(symbol, status, gaps, &count);
+    shapes.add(d, status, gaps, count);
+    EXPECT_EQ(face_symbol(shapes, shapes.size() - 1), symbol);
+  }
+  const uint8_t status[3] = {0, 1, 0}, gaps[2] = {0, 0};
+  shapes.add(5, status, gaps, 2);
+  EXPECT_EQ(face_symbol(shapes, shapes.size() - 1), kPolygonOtherSymbol);
+}
+
+// The pillow of the conformance vectors: two quads on four vertices, the
+// first cut open, the second coded as Q1 in the plain coding.
+std::vector<uint8_t> pillow_payload(uint32_t vertices, uint32_t faces) {
+  std::vector<uint8_t> p{uint8_t(ConnectivityMethod::kPolygon)};
+  put_varint(&p, vertices);
+  put_varint(&p, faces);
+  p.push_back(0);
+  p.push_back(0);
+  BitWriter b;
+  b.write_exp_golomb(1);
+  b.write_exp_golomb(0);
+  b.write_exp_golomb(1);
+  b.write_bits(0, 4);
+  for (int i = 0; i < 4; ++i) b.write_exp_golomb(0);
+  const std::vector<uint8_t> raw = b.finish();
+  p.insert(p.end(), raw.begin(), raw.end());
+  return p;
+}
+
+TEST(PolygonDecoder, PillowIsTwoQuadsOnFourVertices) {
+  const std::vector<uint8_t> p = pillow_payload(4, 2);
+  Mesh mesh;
+  uint32_t vertices = 0;
+  ConnectivityMethod method;
+  ASSERT_TRUE(decode_connectivity(p.data(), p.size(), &vertices, &method, &mesh).ok());
+  EXPECT_EQ(method, ConnectivityMethod::kPolygon);
+  // First face (1, 0, 3, 2) per 5.4.5; Q1 makes the loop 0 -> 1 -> 2 -> 3
+  // from the gate, the reverse of the first face's cycle.
+  EXPECT_EQ(mesh.corners, (std::vector<uint32_t>{1, 0, 3, 2, 0, 1, 2, 3}));
+}
+
+TEST(PolygonDecoder, PillowRejectsAWrongFaceCount) {
+  const std::vector<uint8_t> p = pillow_payload(4, 3);
+  Mesh mesh;
+  uint32_t vertices = 0;
+  ConnectivityMethod method;
+  EXPECT_EQ(decode_connectivity(p.data(), p.size(), &vertices, &method, &mesh).code(), ErrorCode::kBadSymbol);
+}
+
+TEST(PolygonCoder, GeneratedShapes) {
+  using namespace tools;
+  EncodeStats stats;
+  EXPECT_TRUE(polygon_round_trip(make_tetrahedron(), &stats));
+  EXPECT_EQ(stats.polygon.handles, 0u);
+  EXPECT_TRUE(polygon_round_trip(make_torus(8, 5), &stats));
+  EXPECT_EQ(stats.polygon.handles, 1u);
+  EXPECT_TRUE(polygon_round_trip(make_prism(9), &stats));
+  EXPECT_EQ(stats.polygon.non_quad_faces, 2u);
+  EXPECT_TRUE(polygon_round_trip(make_grid(5, 4), &stats));
+  EXPECT_EQ(stats.polygon.holes, 1u);
+  EXPECT_TRUE(polygon_round_trip(make_quad_sphere(4), &stats));
+}
+
+TEST(PolygonCoder, EmptyAndVertexOnlyMeshes) {
+  Mesh empty;
+  EXPECT_TRUE(polygon_round_trip(empty));
+  Mesh points;
+  points.positions = {0, 0, 0, 1, 2, 3};
+  EXPECT_TRUE(polygon_round_trip(points));
+}
+
+TEST(PolygonCoder, DegenerateFacesAreKept) {
+  Mesh m = tools::make_tetrahedron();
+  m.face_sizes.push_back(4);  // repeats vertex 0: a loose face (5.4.8)
+  m.corners.insert(m.corners.end(), {0, 1, 0, 2});
+  m.face_sizes.push_back(3);  // a duplicate of face 0
+  m.corners.insert(m.corners.end(), m.corners.begin(), m.corners.begin() + 3);
+  m.positions.insert(m.positions.end(), {5, 5, 5});  // unreferenced
+  EncodeStats stats;
+  EXPECT_TRUE(polygon_round_trip(m, &stats));
+  EXPECT_EQ(stats.polygon.loose_faces, 1u);
+}
+
+TEST(PolygonCoder, RandomManifoldMeshesRoundTrip) {
+  int meshes = 0;
+  for (uint64_t seed = 1; seed <= 1500; ++seed) {
+    RandomPolygonMeshOptions o;
+    o.seed = seed;
+    o.components = 1 + int(seed % 3);
+    o.genus = int(seed % 4);
+    o.holes = int((seed / 4) % 4);
+    o.min_degree = 3;
+    o.max_degree = 3 + int(seed % 6);
+    o.target_faces = 20 + int(seed % 60);
+    o.valence_two = seed % 2 == 0;
+    o.isolated_vertices = int(seed % 3);
+    RandomPolygonMeshInfo info;
+    const Mesh mesh = make_random_polygon_mesh(o, &info);
+    EncodeStats stats;
+    ASSERT_TRUE(polygon_round_trip(mesh, &stats)) << "seed " << seed;
+    ASSERT_EQ(stats.polygon.handles, uint32_t(info.genus_per_component * info.components)) << "seed " << seed;
+    ASSERT_EQ(stats.polygon.holes, uint32_t(info.boundary_loops)) << "seed " << seed;
+    ASSERT_EQ(stats.polygon.identifications, 0u) << "seed " << seed;
+    ++meshes;
+  }
+  EXPECT_EQ(meshes, 1500);
+}
+
+TEST(PolygonCoder, RandomNonManifoldMeshesRoundTrip) {
+  for (uint64_t seed = 1; seed <= 1500; ++seed) {
+    RandomPolygonMeshOptions o;
+    o.seed = seed * 7919;
+    o.components = 1 + int(seed % 3);
+    o.genus = int(seed % 3);
+    o.holes = int(seed % 3);
+    o.target_faces = 20 + int(seed % 50);
+    o.non_manifold = true;
+    RandomPolygonMeshInfo info;
+    const Mesh mesh = make_random_polygon_mesh(o, &info);
+    ASSERT_GT(info.non_manifold_defects, 0);
+    ASSERT_TRUE(polygon_round_trip(mesh)) << "seed " << seed;
+    // The default choice takes them too, never the indexed fallback.
+    EncodeStats stats;
+    ASSERT_TRUE(polygon_round_trip(mesh, &stats, ConnectivityChoice::kAuto)) << "seed " << seed;
+    ASSERT_NE(stats.method, ConnectivityMethod::kIndexed) << stats.polygon_fallback_reason;
+  }
+}
+
+TEST(PolygonCoder, EveryCorpusMeshGoesThroughAStructuredCoder) {
+  const char* env = std::getenv("QMC_CORPUS_DIR");
+  const fs::path root = env ? fs::path(env) : fs::path(QMC_SOURCE_DIR) / ".." / "shared" / "corpus";
+  if (!fs::is_directory(root)) GTEST_SKIP() << "corpus not found at " << root;
+  int seen = 0;
+  for (const char* sub : {"quad", "tri"})
+    for (const auto& entry : fs::directory_iterator(root / sub)) {
+      Mesh mesh;
+      std::vector<std::string> warnings;
+      ASSERT_TRUE(tools::read_mesh(entry.path().string(), &mesh, &warnings).ok()) << entry.path();
+      EncodeStats stats;
+      ASSERT_TRUE(polygon_round_trip(mesh, &stats, ConnectivityChoice::kAuto)) << entry.path();
+      EXPECT_NE(stats.method, ConnectivityMethod::kIndexed) << entry.path() << ": " << stats.fallback_reason;
+      ++seen;
+    }
+  EXPECT_GE(seen, 21);
+}
+
+}  // namespace
+}  // namespace qmc
