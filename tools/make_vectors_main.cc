@@ -906,6 +906,29 @@ void write_input_order_vectors(VectorWriter* w) {
   w->invalid("invalid_ordr_twice", join(twice), ErrorCode::kChunkOrder);
 }
 
+// Added after the first polygon vectors: a seam that names a real face,
+// which the earlier invalid_polygon_seam_face_not_virtual never reaches (its
+// "2 S > H" check comes first). Two pillows; faces 0 and 2 are virtual.
+void write_polygon_seam_vectors(VectorWriter* w) {
+  const Chunks base = split(encode_polygons(qmc::tools::make_cube()));
+  Chunks c = base;
+  c[find(base, qmc::kChunkConnectivity)].payload = polygon_conn(8, 2, 0, 0, [](qmc::BitWriter* b) {
+    b->write_exp_golomb(2);  // C
+    b->write_exp_golomb(0);
+    b->write_exp_golomb(0);
+    b->write_exp_golomb(1);
+    b->write_exp_golomb(1);
+    b->write_bits(0, 4);  // Q1
+    b->write_bits(0, 4);  // Q1
+    b->write_exp_golomb(2);  // H: faces 0 and 0 + 1 + 1 = 2
+    b->write_exp_golomb(0);
+    b->write_exp_golomb(1);
+    b->write_exp_golomb(1);  // S: seam (0, 1, 0), face 1 is real
+    for (int i = 0; i < 5; ++i) b->write_exp_golomb(0);
+  });
+  w->invalid("invalid_polygon_seam_names_real_face", join(c), qmc::ErrorCode::kBadSymbol);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -924,6 +947,7 @@ int main(int argc, char** argv) {
   write_polygon_valid(&w);
   write_polygon_errors(&w);
   write_input_order_vectors(&w);
+  write_polygon_seam_vectors(&w);
   w.finish();
   return 0;
 }
