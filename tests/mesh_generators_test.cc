@@ -21,21 +21,6 @@ using qmc::Mesh;
 
 using namespace qmc::testing;
 
-
-
-void expect_valid(const Mesh& mesh) {
-  ASSERT_EQ(mesh.positions.size() % 3, 0u);
-  size_t corners = 0;
-  for (uint32_t size : mesh.face_sizes) {
-    EXPECT_GE(size, 3u);
-    corners += size;
-  }
-  ASSERT_EQ(corners, mesh.corners.size());
-  for (uint32_t index : mesh.corners) EXPECT_LT(index, mesh.vertex_count());
-  for (float value : mesh.positions) EXPECT_TRUE(std::isfinite(value));
-}
-
-
 bool same_bits(const Mesh& a, const Mesh& b) {
   return a.positions.size() == b.positions.size() &&
          std::memcmp(a.positions.data(), b.positions.data(), a.positions.size() * sizeof(float)) == 0 &&

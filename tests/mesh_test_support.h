@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <map>
@@ -69,6 +70,20 @@ inline double signed_volume6(const Mesh& mesh) {
     first += size;
   }
   return volume;
+}
+
+// Well-formed: whole positions, degrees >= 3 adding up to the corners,
+// corners naming existing vertices, finite coordinates.
+inline void expect_valid(const Mesh& mesh) {
+  ASSERT_EQ(mesh.positions.size() % 3, 0u);
+  size_t corners = 0;
+  for (uint32_t size : mesh.face_sizes) {
+    EXPECT_GE(size, 3u);
+    corners += size;
+  }
+  ASSERT_EQ(corners, mesh.corners.size());
+  for (uint32_t index : mesh.corners) ASSERT_LT(index, mesh.vertex_count());
+  for (float value : mesh.positions) EXPECT_TRUE(std::isfinite(value));
 }
 
 // FNV-1a over the values' bits in little-endian byte order, to pin the exact

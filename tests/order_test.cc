@@ -63,29 +63,6 @@ bool has_order_chunk(const std::vector<uint8_t>& file) {
   return false;
 }
 
-// The same mesh with vertices renumbered, faces shuffled and each face
-// starting at a random corner: an input order no coder keeps.
-Mesh scrambled(const Mesh& mesh, uint64_t seed) {
-  tools::SplitMix64 rng(seed);
-  const uint32_t n = uint32_t(mesh.vertex_count()), faces = uint32_t(mesh.face_count());
-  std::vector<uint32_t> label(n), order(faces);
-  for (uint32_t i = 0; i < n; ++i) label[i] = i;
-  for (uint32_t i = n; i > 1; --i) std::swap(label[i - 1], label[rng.below(i)]);
-  for (uint32_t i = 0; i < faces; ++i) order[i] = i;
-  for (uint32_t i = faces; i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
-  std::vector<size_t> offset(faces + 1, 0);
-  for (uint32_t f = 0; f < faces; ++f) offset[f + 1] = offset[f] + mesh.face_sizes[f];
-  Mesh out;
-  out.positions.resize(mesh.positions.size());
-  for (uint32_t v = 0; v < n; ++v)
-    for (int a = 0; a < 3; ++a) out.positions[3 * size_t(label[v]) + a] = mesh.positions[3 * size_t(v) + a];
-  for (uint32_t f : order) {
-    const uint32_t d = mesh.face_sizes[f], r = rng.below(d);
-    out.face_sizes.push_back(d);
-    for (uint32_t k = 0; k < d; ++k) out.corners.push_back(label[mesh.corners[offset[f] + (k + r) % d]]);
-  }
-  return out;
-}
 
 // Decodes `file` and expects exactly the input: same face sizes and corners,
 // positions within the quantization bound, in the input's own order.
@@ -114,7 +91,7 @@ TEST(Order, QuadCoderMeshesComeBackInInputOrder) {
     EXPECT_EQ(stats.method, ConnectivityMethod::kQuad);
     EXPECT_TRUE(has_order_chunk(file)) << n;  // the traversal reorders the sphere
     expect_input_order(sphere, file, "quad sphere " + std::to_string(n));
-    const Mesh shuffled = scrambled(sphere, uint64_t(n));
+    const Mesh shuffled = tools::make_scrambled(sphere, uint64_t(n));
     expect_input_order(shuffled, encode_mesh(shuffled, true, ConnectivityChoice::kQuad),
                        "scrambled quad sphere " + std::to_string(n));
   }
@@ -140,10 +117,10 @@ TEST(Order, IndexedAndAutoCodersComeBackInInputOrder) {
     for (ConnectivityChoice c : {ConnectivityChoice::kIndexed, ConnectivityChoice::kAuto})
       expect_input_order(soup, encode_mesh(soup, true, c), "soup " + std::to_string(seed));
   }
-  const Mesh torus = scrambled(tools::make_torus(16, 8), 5);
+  const Mesh torus = tools::make_scrambled(tools::make_torus(16, 8), 5);
   for (ConnectivityChoice c : {ConnectivityChoice::kIndexed, ConnectivityChoice::kAuto})
     expect_input_order(torus, encode_mesh(torus, true, c), "scrambled torus");
-  const Mesh prism = scrambled(tools::make_prism(12), 6);
+  const Mesh prism = tools::make_scrambled(tools::make_prism(12), 6);
   expect_input_order(prism, encode_mesh(prism, true), "scrambled prism");
   const Mesh empty;
   expect_input_order(empty, encode_mesh(empty, true), "empty mesh");
@@ -192,7 +169,7 @@ TEST(Order, ChunkSitsAfterPosnAndIsCountedInStats) {
 TEST(Order, DecoderWithoutOrderGetsTheCoderOrder) {
   // A decoder that does not know oRDR skips it (spec 3.3). Stripping the
   // chunk gives exactly the file written without keep_order.
-  const Mesh sphere = scrambled(tools::make_quad_sphere(4), 11);
+  const Mesh sphere = tools::make_scrambled(tools::make_quad_sphere(4), 11);
   EncodeStats stats;
   const std::vector<uint8_t> plain = encode_mesh(sphere, false, ConnectivityChoice::kAuto, &stats);
   std::vector<Chunk> chunks = split(encode_mesh(sphere, true));

@@ -21,6 +21,7 @@
 namespace qmc {
 namespace {
 
+using testing::expect_valid;
 using testing::fingerprint;
 
 using Face = std::vector<uint32_t>;
@@ -69,17 +70,6 @@ class UnionFind {
   std::vector<size_t> parent_;
 };
 
-void expect_valid(const Mesh& mesh) {
-  ASSERT_EQ(mesh.positions.size() % 3, 0u);
-  size_t corners = 0;
-  for (uint32_t size : mesh.face_sizes) {
-    EXPECT_GE(size, 3u);
-    corners += size;
-  }
-  ASSERT_EQ(corners, mesh.corners.size());
-  for (uint32_t index : mesh.corners) ASSERT_LT(index, mesh.vertex_count());
-  for (float value : mesh.positions) EXPECT_TRUE(std::isfinite(value));
-}
 
 // ---------------------------------------------------------------------------
 // Topology from the face list.

@@ -768,29 +768,6 @@ std::vector<uint8_t> encode_keeping_order(const Mesh& mesh, qmc::ConnectivityCho
   return out;
 }
 
-// `mesh` with vertices renumbered, faces shuffled and each face starting at
-// another corner (splitmix64, the same everywhere): an order no coder keeps.
-Mesh scrambled(const Mesh& mesh, uint64_t seed) {
-  qmc::tools::SplitMix64 rng(seed);
-  const uint32_t n = uint32_t(mesh.vertex_count()), faces = uint32_t(mesh.face_count());
-  std::vector<uint32_t> label(n), order(faces);
-  for (uint32_t i = 0; i < n; ++i) label[i] = i;
-  for (uint32_t i = n; i > 1; --i) std::swap(label[i - 1], label[rng.below(i)]);
-  for (uint32_t i = 0; i < faces; ++i) order[i] = i;
-  for (uint32_t i = faces; i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
-  std::vector<size_t> offset(faces + 1, 0);
-  for (uint32_t f = 0; f < faces; ++f) offset[f + 1] = offset[f] + mesh.face_sizes[f];
-  Mesh out;
-  out.positions.resize(mesh.positions.size());
-  for (uint32_t v = 0; v < n; ++v)
-    for (int a = 0; a < 3; ++a) out.positions[3 * size_t(label[v]) + a] = mesh.positions[3 * size_t(v) + a];
-  for (uint32_t f : order) {
-    const uint32_t d = mesh.face_sizes[f], r = rng.below(d);
-    out.face_sizes.push_back(d);
-    for (uint32_t k = 0; k < d; ++k) out.corners.push_back(label[mesh.corners[offset[f] + (k + r) % d]]);
-  }
-  return out;
-}
 
 std::vector<uint8_t> order_header(uint64_t vertices, uint64_t faces, uint8_t flags) {
   std::vector<uint8_t> p;
@@ -847,7 +824,7 @@ std::vector<uint8_t> order_payload(std::vector<uint8_t> header, const std::funct
 void write_input_order_vectors(VectorWriter* w) {
   using namespace qmc::tools;
   using qmc::ErrorCode;
-  const Mesh sphere = scrambled(make_quad_sphere(3), 1);  // all three maps
+  const Mesh sphere = qmc::tools::make_scrambled(make_quad_sphere(3), 1);  // all three maps
   w->valid("valid_ordr_quad_sphere_scrambled", encode_keeping_order(sphere, qmc::ConnectivityChoice::kQuad), &sphere);
   const Mesh grid = make_grid(5, 3);  // faces starting at their lowest vertex: rotation offsets 0
   w->valid("valid_ordr_quad_grid", encode_keeping_order(grid, qmc::ConnectivityChoice::kQuad), &grid);

@@ -455,4 +455,28 @@ Mesh split_quad_with_doublet(Mesh mesh, size_t quad) {
   return mesh;
 }
 
+// Fisher-Yates with splitmix64 (the same on every platform) over the vertex
+// labels and the faces, then a random first corner per face.
+qmc::Mesh make_scrambled(const qmc::Mesh& mesh, uint64_t seed) {
+  SplitMix64 rng(seed);
+  const uint32_t n = uint32_t(mesh.vertex_count()), faces = uint32_t(mesh.face_count());
+  std::vector<uint32_t> label(n), order(faces);
+  for (uint32_t i = 0; i < n; ++i) label[i] = i;
+  for (uint32_t i = n; i > 1; --i) std::swap(label[i - 1], label[rng.below(i)]);
+  for (uint32_t i = 0; i < faces; ++i) order[i] = i;
+  for (uint32_t i = faces; i > 1; --i) std::swap(order[i - 1], order[rng.below(i)]);
+  std::vector<size_t> offset(faces + 1, 0);
+  for (uint32_t f = 0; f < faces; ++f) offset[f + 1] = offset[f] + mesh.face_sizes[f];
+  qmc::Mesh out;
+  out.positions.resize(mesh.positions.size());
+  for (uint32_t v = 0; v < n; ++v)
+    for (int a = 0; a < 3; ++a) out.positions[3 * size_t(label[v]) + a] = mesh.positions[3 * size_t(v) + a];
+  for (uint32_t f : order) {
+    const uint32_t d = mesh.face_sizes[f], r = rng.below(d);
+    out.face_sizes.push_back(d);
+    for (uint32_t k = 0; k < d; ++k) out.corners.push_back(label[mesh.corners[offset[f] + (k + r) % d]]);
+  }
+  return out;
+}
+
 }  // namespace qmc::tools

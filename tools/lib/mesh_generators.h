@@ -76,4 +76,8 @@ struct RandomSoupOptions {
 // an empty mesh.
 qmc::Mesh make_random_soup(uint64_t seed, const RandomSoupOptions& options);
 
+// `mesh` with vertices renumbered, faces shuffled and each face starting at
+// another corner: the same mesh in an input order no coder keeps.
+qmc::Mesh make_scrambled(const qmc::Mesh& mesh, uint64_t seed);
+
 }  // namespace qmc::tools
