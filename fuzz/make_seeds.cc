@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
   }
   const fs::path out = argv[2];
   for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "polygon_connectivity", "positions",
-                        "huffman", "roundtrip", "order"})
+                        "huffman", "roundtrip", "order", "loop_levels"})
     fs::create_directories(out / t);
   int n = 0;
   for (const auto& entry : fs::directory_iterator(argv[1])) {
@@ -65,6 +65,8 @@ int main(int argc, char** argv) {
     write(out / "roundtrip" / name, bytes.data(), bytes.size());
     // Walk the chunks as far as the framing allows; invalid vectors stop early.
     std::vector<uint8_t> conn;  // order input: CONN length as u16, CONN payload, oRDR payload
+    std::vector<uint8_t> levels;  // loop_levels input: u16le-prefixed CONN, POSN, LEVL payloads
+    bool progressive = false;
     for (size_t pos = 8; pos + 12 <= bytes.size();) {
       const uint32_t type = qmc::load_u32be(&bytes[pos]);
       const uint32_t length = qmc::load_u32le(&bytes[pos + 4]);
@@ -82,6 +84,13 @@ int main(int argc, char** argv) {
       }
       if (type == qmc::kChunkPositions) write(out / "positions" / name, payload, length);
       if (type == qmc::kChunkConnectivity && length <= 0xFFFF) conn.assign(payload, payload + length);
+      if (type == qmc::kChunkLoop) progressive = true;
+      if (progressive && length <= 0xFFFF &&
+          (type == qmc::kChunkConnectivity || type == qmc::kChunkPositions || type == qmc::kChunkLevel)) {
+        levels.push_back(uint8_t(length));
+        levels.push_back(uint8_t(length >> 8));
+        levels.insert(levels.end(), payload, payload + length);
+      }
       if (type == qmc::kChunkOrder && !conn.empty()) {
         std::vector<uint8_t> seed{uint8_t(conn.size()), uint8_t(conn.size() >> 8)};
         seed.insert(seed.end(), conn.begin(), conn.end());
@@ -90,6 +99,7 @@ int main(int argc, char** argv) {
       }
       pos += 12 + size_t(length);
     }
+    if (!levels.empty()) write(out / "loop_levels" / name, levels.data(), levels.size());
     ++n;
   }
   std::printf("seeds from %d vectors in %s\n", n, argv[2]);

@@ -25,3 +25,11 @@ $qmc decode "$out/sphere.qmc" "$out/sphere_decoded.obj"
 echo
 echo "== qmc verify data/demo/sphere.obj $out/sphere.qmc"
 $qmc verify data/demo/sphere.obj "$out/sphere.qmc"
+echo
+# Progressive Loop levels (seed 003, spec 12): the torus's quads split into
+# triangles, a base mesh of about 1/16 of them, and two levels on top.
+echo "== qmc encode data/demo/torus.obj $out/torus_progressive.qmc --progressive --levels 2"
+$qmc encode data/demo/torus.obj "$out/torus_progressive.qmc" --progressive --levels 2
+echo
+echo "== qmc decode $out/torus_progressive.qmc $out/torus_base.obj --level 0"
+$qmc decode "$out/torus_progressive.qmc" "$out/torus_base.obj" --level 0

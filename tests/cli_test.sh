@@ -85,5 +85,24 @@ contains coder-order-line "$work/out" "coder order"
 grep '^f ' "$work/qsphere.obj" | tac >"$work/faces_rev"
 { grep '^v ' "$work/qsphere.obj"; cat "$work/faces_rev"; } >"$work/qsphere_rev.obj"
 check keep-order-verify-other-order 1 "$qmc" verify "$work/qsphere_rev.obj" "$work/ordered.qmc"
+# --progressive (spec 12): quads are split into triangles first, and said so.
+check progressive-encode 0 "$qmc" encode "$work/torus.obj" "$work/prog.qmc" --progressive --levels 2
+contains progressive-triangulated "$work/out" "triangulated 288 polygons"
+contains progressive-levels "$work/out" "edge points"
+contains progressive-error "$work/out" "PSNR"
+check progressive-info 0 "$qmc" info "$work/prog.qmc"
+contains progressive-info-levels "$work/out" "progressive  2 Loop levels"
+contains progressive-info-format "$work/out" "format 1.3"
+check progressive-decode-base 0 "$qmc" decode "$work/prog.qmc" "$work/l0.obj" --level 0
+contains progressive-decode-base-note "$work/out" "level 0 of 2"
+check progressive-decode-finest 0 "$qmc" decode "$work/prog.qmc" "$work/l2.obj"
+contains progressive-decode-finest-note "$work/out" "finest level 2"
+check progressive-decode-beyond 2 "$qmc" decode "$work/prog.qmc" "$work/x.obj" --level 3
+check progressive-level-not-progressive 2 "$qmc" decode "$work/torus.qmc" "$work/x.obj" --level 1
+check progressive-levels-alone 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --levels 2
+check progressive-verify-says-why 1 "$qmc" verify "$work/torus.obj" "$work/prog.qmc"
+contains progressive-verify-message "$work/out" "qmc compare"
+check progressive-soup-rejected 3 "$qmc" encode "$work/soup.off" "$work/x.qmc" --progressive
+contains progressive-soup-message "$work/err" "not a manifold"
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

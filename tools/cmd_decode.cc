@@ -10,13 +10,17 @@
 namespace qmc::cli {
 
 static const char kDecodeHelp[] =
-    "usage: qmc decode IN.qmc OUT.{obj,off,ply} [--quiet]\n"
+    "usage: qmc decode IN.qmc OUT.{obj,off,ply} [--level J] [--quiet]\n"
     "\n"
-    "Decodes IN.qmc and writes the mesh, vertices in the file's order (spec 5.2.1).\n";
+    "Decodes IN.qmc and writes the mesh, vertices in the file's order (spec 5.2.1).\n"
+    "\n"
+    "options:\n"
+    "  --level J   progressive files (spec 12): write level J, 0 = the base mesh\n"
+    "              (default: the finest level)\n";
 
 int run_decode(int argc, char** argv) {
   CommandLine cl;
-  const CommandSpec spec{"decode", kDecodeHelp, {"--quiet"}, {}, 2, 2};
+  const CommandSpec spec{"decode", kDecodeHelp, {"--quiet"}, {{"--level"}}, 2, 2};
   if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
   const std::string& input = cl.positional[0];
   const std::string& output = cl.positional[1];
@@ -25,11 +29,24 @@ int run_decode(int argc, char** argv) {
   DecodedFile file;
   if (Status s = decode(bytes.data(), bytes.size(), &file); !s.ok())
     return fail("decode", Status(s.code(), input + ": " + s.message()));
+  std::string level_note;
+  for (const auto& [name, value] : cl.options) {  // --level
+    long level = 0;
+    if (file.loop_level_count == 0)
+      return usage_error("decode", input + " is not a progressive file: it has no levels to choose from");
+    if (!parse_int(value, 0, file.loop_level_count, &level))
+      return usage_error("decode", "--level takes 0.." + std::to_string(file.loop_level_count) + " for " + input +
+                                       ", got '" + value + "'");
+    file.mesh = level_mesh(file.levels[size_t(level)]);
+    level_note = ", level " + std::to_string(level) + " of " + std::to_string(file.loop_level_count);
+  }
+  if (level_note.empty() && file.loop_level_count)
+    level_note = ", finest level " + std::to_string(file.loop_level_count);
   if (Status s = tools::write_mesh(output, file.mesh); !s.ok()) return fail("decode", s);
   if (!cl.has("--quiet"))
-    std::printf("decoded %s: %zu vertices, %zu faces (%s connectivity) -> %s\n", input.c_str(),
+    std::printf("decoded %s: %zu vertices, %zu faces (%s connectivity%s) -> %s\n", input.c_str(),
                 file.mesh.vertex_count(), file.mesh.face_count(), connectivity_method_name(file.method),
-                output.c_str());
+                level_note.c_str(), output.c_str());
   return kExitOk;
 }
 

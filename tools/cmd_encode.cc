@@ -5,6 +5,8 @@
 
 #include "cli_common.h"
 #include "commands.h"
+#include "mesh_distance.h"
+#include "mesh_generators.h"
 #include "qmc/decoder.h"
 #include "qmc/encoder.h"
 #include "roundtrip_check.h"
@@ -31,15 +33,24 @@ const char kHelp[] =
     "  --keep-order        store an oRDR chunk (spec 4.5) so that decoding restores\n"
     "                      the input's order of vertices, faces and face corners\n"
     "                      exactly (by default they come out in the coder's order)\n"
+    "  --progressive       write a progressive file (spec 12, seed 003): a coarse\n"
+    "                      base mesh plus Loop levels, each refining the one\n"
+    "                      before; lossy: the output is a semi-regular remesh of\n"
+    "                      the input surface. The input must be a manifold,\n"
+    "                      consistently oriented mesh; polygons are split into\n"
+    "                      triangles first (and the split is reported)\n"
+    "  --levels K          levels of --progressive, 1..8 (default 4); the base\n"
+    "                      mesh has about 1/4^K of the input's triangles\n"
     "  --quiet             print nothing on success\n";
 
 struct EncodeArgs {
   std::string input, output;
   EncodeOptions options;
-  bool quiet = false;
+  bool quiet = false, progressive = false;
 };
 
-const CommandSpec kSpec{"encode", kHelp, {"--quiet", "--keep-order"}, {{"--bits", "-q"}, {"--text"}, {"--connectivity"}}, 2, 2};
+const CommandSpec kSpec{"encode", kHelp, {"--quiet", "--keep-order", "--progressive"},
+                        {{"--bits", "-q"}, {"--text"}, {"--connectivity"}, {"--levels"}}, 2, 2};
 
 int parse(int argc, char** argv, EncodeArgs* args) {
   CommandLine cl;
@@ -48,7 +59,17 @@ int parse(int argc, char** argv, EncodeArgs* args) {
   args->output = cl.positional[1];
   args->quiet = cl.has("--quiet");
   args->options.keep_order = cl.has("--keep-order");
+  args->progressive = cl.has("--progressive");
+  if (args->progressive) args->options.progressive_levels = 4;
   for (const auto& [name, value] : cl.options) {
+    if (name == "--levels") {
+      long levels = 0;
+      if (!args->progressive) return usage_error("encode", "--levels needs --progressive");
+      if (!parse_int(value, 1, 8, &levels))
+        return usage_error("encode", "--levels takes a whole number from 1 to 8, got '" + value + "'");
+      args->options.progressive_levels = int(levels);
+      continue;
+    }
     if (name == "--text") {
       args->options.texts.push_back(value);
       continue;
@@ -122,6 +143,61 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
               args.options.position_bits, check.max_error, check.max_error / side, check.rms_error);
 }
 
+void print_progressive_report(const EncodeArgs& args, const Mesh& input, const EncodeStats& stats,
+                              const tools::MeshDistance& distance, uint64_t input_bytes) {
+  const LoopEncodeStats& ls = stats.loop;
+  std::printf("input       %s: %zu vertices, %zu triangles, %s\n", args.input.c_str(), input.vertex_count(),
+              input.face_count(), human_bytes(input_bytes).c_str());
+  if (ls.unreferenced_vertices_dropped)
+    std::printf("            %u vertices no face uses were left out (a remesh covers faces only)\n",
+                ls.unreferenced_vertices_dropped);
+  std::printf("pipeline    simplify %.2f s, fit %.2f s, subdivide+displace+inverse %.2f s, code %.2f s\n",
+              ls.seconds_simplify, ls.seconds_fit, ls.seconds_remesh, ls.seconds_code);
+  std::printf("levels      level  vertices     faces  edge points  zero %%     step        bytes\n");
+  for (size_t j = 0; j < ls.levels.size(); ++j) {
+    const LoopLevelStats& l = ls.levels[j];
+    if (j == 0)
+      std::printf("            base  %9u %9u  %11s  %6s  %9s  %10llu  (CONN + POSN, %s coder)\n", l.vertices, l.faces,
+                  "-", "-", "-", static_cast<unsigned long long>(l.bytes), connectivity_method_name(stats.method));
+    else
+      std::printf("            %4zu  %9u %9u  %11u  %6.2f  %9.3g  %10llu%s\n", j, l.vertices, l.faces, l.edge_points,
+                  100.0 * l.zeros / (l.edge_points ? l.edge_points : 1), l.step,
+                  static_cast<unsigned long long>(l.bytes),
+                  l.clamped ? (" (" + std::to_string(l.clamped) + " clamped to 127)").c_str() : "");
+  }
+  std::printf("            finest level along its normals: %u hit the input surface, %u kept the remesh position\n",
+              ls.ray_hits, ls.ray_misses);
+  std::printf("output      %s: %llu bytes, %.1fx smaller than the input file\n", args.output.c_str(),
+              static_cast<unsigned long long>(stats.total_bytes), double(input_bytes) / double(stats.total_bytes));
+  std::printf("error       finest level vs input (Metro-style, %zu samples): L2 %.6g (%.3g of bbox diagonal), "
+              "Hausdorff %.6g (%.3g), PSNR %.2f dB\n",
+              distance.a_to_b.area_samples, distance.l2, distance.relative(distance.l2), distance.hausdorff,
+              distance.relative(distance.hausdorff), distance.psnr_db);
+}
+
+// Section 12: triangles in, progressive file out, error measured by decoding it.
+int encode_progressive(EncodeArgs& args, Mesh mesh, uint64_t input_bytes) {
+  size_t split = 0;
+  mesh = tools::triangulated(mesh, &split);
+  if (split && !args.quiet)
+    std::printf("triangulated %zu polygons (fan from their first corner): --progressive takes triangles\n", split);
+  Progress progress(true);
+  args.options.progress = [&](const char* stage, double) { progress.stage(std::string("progressive: ") + stage); };
+  std::vector<uint8_t> bytes;
+  EncodeStats stats;
+  if (Status s = encode(mesh, args.options, &bytes, &stats); !s.ok()) return fail("encode", s);
+  progress.stage("decoding to measure the error");
+  DecodedFile decoded;
+  if (Status s = decode(bytes.data(), bytes.size(), &decoded); !s.ok())
+    return fail("encode", Status(s.code(), "internal error, own output does not decode: " + s.message()));
+  tools::MeshDistance distance;
+  if (Status s = tools::measure_mesh_distance(mesh, decoded.mesh, {}, &distance); !s.ok()) return fail("encode", s);
+  progress.done();
+  if (Status s = write_file(args.output, bytes); !s.ok()) return fail("encode", s);
+  if (!args.quiet) print_progressive_report(args, mesh, stats, distance, input_bytes);
+  return kExitOk;
+}
+
 }  // namespace
 
 int run_encode(int argc, char** argv) {
@@ -133,6 +209,7 @@ int run_encode(int argc, char** argv) {
   progress.stage("reading " + args.input);
   Mesh mesh;
   if (Status s = load_mesh(args.input, &mesh); !s.ok()) return fail("encode", s);
+  if (args.progressive) return encode_progressive(args, std::move(mesh), input_bytes.size());
   std::vector<uint8_t> bytes;
   EncodeStats stats;
   progress.stage("encoding " + std::to_string(mesh.face_count()) + " faces");

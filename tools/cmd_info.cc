@@ -65,6 +65,23 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
                 f.quantization.max[1], f.quantization.max[2]);
   std::printf("order        %s\n", f.order_restored ? order_description(f.order_flags).c_str()
                                                      : "coder order (no oRDR chunk)");
+  if (f.loop_level_count) {
+    std::printf("progressive  %u Loop levels (spec 12), %zu decoded\n", f.loop_level_count,
+                f.levels.empty() ? 0 : f.levels.size() - 1);
+    std::printf("levels       level  vertices     faces      bytes  cumulative  zero displacements   step\n");
+    uint64_t sum = 0;
+    for (size_t j = 0; j < f.levels.size(); ++j) {
+      const LoopLevel& l = f.levels[j];
+      sum += l.chunk_bytes;
+      if (j == 0)
+        std::printf("             base  %8u  %8u  %9llu  %10llu  (CONN + POSN)\n", l.vertex_count(), l.face_count(),
+                    static_cast<unsigned long long>(l.chunk_bytes), static_cast<unsigned long long>(sum));
+      else
+        std::printf("             %4zu  %8u  %8u  %9llu  %10llu  %8u of %8u  %.3g\n", j, l.vertex_count(),
+                    l.face_count(), static_cast<unsigned long long>(l.chunk_bytes),
+                    static_cast<unsigned long long>(sum), l.zero_displacements, l.edge_points, l.step);
+    }
+  }
   std::printf("chunks       type  offset      bytes  bits/vertex\n");
   for (const ChunkInfo& c : f.chunks)
     std::printf("             %-4s %7llu %10llu %12.2f  %s%s\n", chunk_type_name(c.type).c_str(),
@@ -83,6 +100,15 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
   std::printf("\"connectivity\":\"%s\",\"quad_coding\":%d,\"position_bits\":%d,", connectivity_method_name(f.method),
               f.quad_coding, f.quantization.bits);
   std::printf("\"order_restored\":%s,\"order_flags\":%u,", f.order_restored ? "true" : "false", f.order_flags);
+  std::printf("\"loop_levels\":%u,\"levels\":[", f.loop_level_count);
+  for (size_t j = 0; j < f.levels.size(); ++j) {
+    const LoopLevel& l = f.levels[j];
+    std::printf("%s{\"level\":%zu,\"vertices\":%u,\"faces\":%u,\"bytes\":%llu,\"edge_points\":%u,"
+                "\"zero_displacements\":%u,\"step\":%.17g}",
+                j ? "," : "", j, l.vertex_count(), l.face_count(), static_cast<unsigned long long>(l.chunk_bytes),
+                l.edge_points, l.zero_displacements, l.step);
+  }
+  std::printf("],");
   std::printf("\"bits_per_vertex\":%.4f,\"chunks\":[",
               f.mesh.vertex_count() ? 8.0 * double(size) / double(f.mesh.vertex_count()) : 0.0);
   for (size_t i = 0; i < f.chunks.size(); ++i) {

@@ -21,6 +21,7 @@
 #include "bitio/polygon_symbols.h"
 #include "bitio/quad_codings.h"
 #include "encoder/chunk_writer.h"
+#include "analytic_loop_files.h"
 #include "mesh_generators.h"
 #include "quad_disk_generator.h"
 #include "decoder/spirale_reversi_decoder.h"
@@ -906,6 +907,123 @@ void write_polygon_seam_vectors(VectorWriter* w) {
   w->invalid("invalid_polygon_seam_names_real_face", join(c), qmc::ErrorCode::kBadSymbol);
 }
 
+// Section 12: progressive files aiming at analytic surfaces, then the ways a
+// level can be wrong.
+std::vector<uint8_t> loop_file(const Mesh& base, int levels, const qmc::LevelTargets& targets, int bits = 12) {
+  std::vector<uint8_t> out;
+  if (qmc::Status s = qmc::tools::make_loop_file(base, levels, targets, bits, &out); !s.ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: %s\n", s.to_string().c_str());
+    std::exit(3);
+  }
+  return out;
+}
+
+size_t find_nth(const Chunks& chunks, uint32_t type, int nth) {
+  for (size_t i = 0; i < chunks.size(); ++i)
+    if (chunks[i].type == type && nth-- == 0) return i;
+  std::fprintf(stderr, "qmc-make-vectors: chunk missing\n");
+  std::exit(3);
+}
+
+void write_loop_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  const Mesh octahedron = qmc::tools::loop_octahedron();
+  for (int levels = 1; levels <= 5; ++levels)
+    w->valid("valid_loop_octahedron_sphere_" + std::to_string(levels) + "_levels",
+             loop_file(octahedron, levels, qmc::tools::unit_sphere_targets(), 14), nullptr);
+  w->valid("valid_loop_torus_genus1_3_levels",
+           loop_file(qmc::tools::triangulated(qmc::tools::make_torus(9, 6)), 3, qmc::tools::torus_targets(1, 0.35)),
+           nullptr);
+  w->valid("valid_loop_grid_boundary_3_levels",
+           loop_file(qmc::tools::triangulated(qmc::tools::make_grid(4, 3)), 3, qmc::tools::height_field_targets()),
+           nullptr);
+
+  const Chunks base = split(loop_file(octahedron, 2, qmc::tools::unit_sphere_targets()));
+  const size_t loop = find(base, qmc::kChunkLoop), conn = find(base, qmc::kChunkConnectivity),
+               posn = find(base, qmc::kChunkPositions), first = find_nth(base, qmc::kChunkLevel, 0),
+               second = find_nth(base, qmc::kChunkLevel, 1);
+  Chunks c = base;
+  std::swap(c[posn], c[first]);
+  w->invalid("invalid_loop_level_before_base", join(c), ErrorCode::kChunkOrder);
+  c = base;
+  c.erase(c.begin() + long(second));
+  w->invalid("invalid_loop_level_missing", join(c), ErrorCode::kChunkOrder);
+  c = base;
+  c.insert(c.begin() + long(second) + 1, c[second]);
+  w->invalid("invalid_loop_level_beyond_count", join(c), ErrorCode::kChunkOrder);
+  c = base;
+  std::swap(c[first], c[second]);
+  w->invalid("invalid_loop_levels_swapped", join(c), ErrorCode::kBadChunkPayload);
+  c = base;
+  std::swap(c[loop], c[conn]);
+  w->invalid("invalid_loop_after_conn", join(c), ErrorCode::kChunkOrder);
+  c = base;
+  c.erase(c.begin() + long(loop));
+  w->invalid("invalid_loop_level_without_loop", join(c), ErrorCode::kChunkOrder);
+  c = base;
+  c[loop].payload = {0, 0};
+  w->invalid("invalid_loop_zero_levels", join(c), ErrorCode::kBadChunkPayload);
+  c[loop].payload = {2, 1};
+  w->invalid("invalid_loop_unknown_scheme", join(c), ErrorCode::kUnsupportedFeature);
+  c = base;
+  c[first].payload[2] = 13;  // the octahedron has 12 edges
+  w->invalid("invalid_loop_wrong_edge_count", join(c), ErrorCode::kBadChunkPayload);
+  c = base;
+  c[first].payload[1] = 1;
+  w->invalid("invalid_loop_unknown_code", join(c), ErrorCode::kUnsupportedFeature);
+  c = base;
+  for (int i = 0; i < 8; ++i) c[first].payload[3 + i] = i == 7 ? 0x7F : i == 6 ? 0xF8 : 0;  // NaN
+  w->invalid("invalid_loop_step_nan", join(c), ErrorCode::kBadChunkPayload);
+  c = base;
+  // The largest binary64 step, every edge point pushed by -127 steps of it.
+  for (int i = 0; i < 8; ++i) c[first].payload[3 + i] = i == 7 ? 0x7F : i == 6 ? 0xEF : 0xFF;
+  {
+    qmc::BitWriter b;
+    for (int e = 0; e < 12; ++e) b.write_bits(0x1FF, 9);
+    const std::vector<uint8_t> stream = b.finish();
+    c[first].payload.resize(11);
+    c[first].payload.insert(c[first].payload.end(), stream.begin(), stream.end());
+  }
+  w->invalid("invalid_loop_positions_overflow", join(c), ErrorCode::kBadChunkPayload);
+  c = base;
+  c[second].payload.resize(c[second].payload.size() - 2);
+  w->invalid("invalid_loop_codes_truncated", join(c), ErrorCode::kTruncated);
+  c = base;
+  {
+    qmc::BitWriter b;
+    b.write_bits(0x100, 9);  // flag 1, sign 0, magnitude 0
+    for (int e = 1; e < 12; ++e) b.write_bit(false);
+    const std::vector<uint8_t> stream = b.finish();
+    c[first].payload.resize(11);
+    c[first].payload.insert(c[first].payload.end(), stream.begin(), stream.end());
+  }
+  w->invalid("invalid_loop_zero_magnitude", join(c), ErrorCode::kBadSymbol);
+  c = base;
+  c.insert(c.begin() + long(first), Chunk{qmc::kChunkOrder, {0}});
+  w->invalid("invalid_loop_with_ordr", join(c), ErrorCode::kChunkOrder);
+  // Bases the levels cannot refine: quads, and two tetrahedra sharing a vertex.
+  c = base;
+  c[conn].payload = split(encode_polygons(qmc::tools::make_cube()))[1].payload;
+  c[posn].payload = split(encode_polygons(qmc::tools::make_cube()))[2].payload;
+  w->invalid("invalid_loop_quad_base", join(c), ErrorCode::kBadChunkPayload);
+  Mesh pinched = qmc::tools::make_tetrahedron();
+  const Mesh second_tetrahedron = qmc::tools::make_tetrahedron();
+  for (size_t i = 3; i < second_tetrahedron.positions.size(); ++i)
+    pinched.positions.push_back(second_tetrahedron.positions[i] + 3);
+  for (size_t f = 0; f < 4; ++f) {
+    pinched.face_sizes.push_back(3);
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t v = second_tetrahedron.corners[3 * f + size_t(k)];
+      pinched.corners.push_back(v == 0 ? 0 : v + 3);
+    }
+  }
+  const Chunks indexed = split(encode(pinched, 12));
+  c = base;
+  c[conn].payload = indexed[find(indexed, qmc::kChunkConnectivity)].payload;
+  c[posn].payload = indexed[find(indexed, qmc::kChunkPositions)].payload;
+  w->invalid("invalid_loop_pinched_base", join(c), ErrorCode::kBadChunkPayload);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -925,6 +1043,7 @@ int main(int argc, char** argv) {
   write_polygon_errors(&w);
   write_input_order_vectors(&w);
   write_polygon_seam_vectors(&w);
+  write_loop_vectors(&w);
   w.finish();
   return 0;
 }

@@ -33,8 +33,27 @@ struct QuantizationInfo {
   std::array<float, 3> max{};
 };
 
+// Section 12: one level of a progressive file. Level 0 is the base mesh of
+// CONN and POSN; level j >= 1 came from the j-th LEVL chunk.
+struct LoopLevel {
+  std::vector<double> positions;    // binary64, 3 per vertex (12.2, 12.7)
+  std::vector<uint32_t> triangles;  // 3 per face, counter-clockwise
+  uint64_t chunk_bytes = 0;         // bytes of the chunks that carried it (level 0: CONN and POSN)
+  uint32_t edge_points = 0;         // level >= 1: displacements coded (edges of the level below)
+  uint32_t zero_displacements = 0;  // level >= 1: of which 1-bit zeros
+  double step = 0;                  // level >= 1: the chunk's step
+
+  uint32_t vertex_count() const { return uint32_t(positions.size() / 3); }
+  uint32_t face_count() const { return uint32_t(triangles.size() / 3); }
+};
+
+// The binary32 mesh of a level (section 12.8).
+Mesh level_mesh(const LoopLevel& level);
+
 struct DecodedFile {
-  Mesh mesh;                          // positions dequantized per section 6.4
+  // Positions dequantized per section 6.4; for a progressive file the mesh
+  // of the finest level decoded so far (section 12.8).
+  Mesh mesh;
   std::vector<uint32_t> quantized;    // the integers q of section 6.1, 3 per vertex
   QuantizationInfo quantization;
   ConnectivityMethod method = ConnectivityMethod::kIndexed;
@@ -53,6 +72,10 @@ struct DecodedFile {
   // vertices, bit 2 rotations; a clear bit is the identity).
   bool order_restored = false;
   uint8_t order_flags = 0;
+  // Section 12: LOOP's level count K (0: not a progressive file), and the
+  // levels decoded so far, levels[0] the base mesh.
+  uint8_t loop_level_count = 0;
+  std::vector<LoopLevel> levels;
 };
 
 struct DecoderLimits {
@@ -83,6 +106,11 @@ class StreamDecoder {
   bool complete() const;          // QEND seen and valid
   bool has_connectivity() const;  // CONN decoded: faces are available
   bool has_positions() const;     // POSN decoded: positions are available
+  // Section 12: the finest level whose chunk has been decoded (0 = base mesh
+  // once POSN is in), or -1 before that or for a file without LOOP. The mesh
+  // of level j is level_mesh(file().levels[j]); file().mesh is the finest.
+  int complete_level() const;
+  int level_count() const;        // LOOP's K, 0 if no LOOP (yet)
   const DecodedFile& file() const;
   DecodedFile take_file();
 

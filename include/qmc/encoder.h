@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,15 @@ struct EncodeOptions {
   // input's order of vertices, faces and corners exactly; nothing is
   // written when the coder order already is the input's order.
   bool keep_order = false;
+  // Section 12: > 0 (1..8) writes a progressive file with this many Loop
+  // levels, made by seed 003's pipeline (simplify, fit, subdivide, displace,
+  // inverse Loop). Lossy by nature: the output is a semi-regular remesh of
+  // the input surface, not its vertices. The input must be a manifold,
+  // consistently oriented triangle mesh; position_bits applies to the base.
+  int progressive_levels = 0;
+  // Called during long operations (the progressive pipeline) with a stage
+  // name and the fraction done, 0..1; may be empty.
+  std::function<void(const char* stage, double fraction)> progress;
 };
 
 struct ChunkStats {
@@ -56,12 +66,28 @@ struct PolygonCoderStats {
   uint64_t record_bits = 0;              // bits of the records of 5.4.7 and 5.4.8
 };
 
+// Section 12: what the progressive encoder did (seed 003 tables 2 and 3).
+struct LoopLevelStats {
+  uint32_t vertices = 0, faces = 0;  // of the level
+  uint32_t edge_points = 0, zeros = 0, clamped = 0;
+  double step = 0;
+  uint64_t bytes = 0;                // the LEVL chunk (level 0: CONN + POSN)
+};
+struct LoopEncodeStats {
+  uint32_t input_vertices = 0, input_faces = 0, unreferenced_vertices_dropped = 0;
+  uint32_t target_base_faces = 0;
+  std::vector<LoopLevelStats> levels;  // [0] = base mesh
+  uint32_t ray_hits = 0, ray_misses = 0;  // finest level: targets hit along N, else the remesh position
+  double seconds_simplify = 0, seconds_fit = 0, seconds_remesh = 0, seconds_code = 0;
+};
+
 struct EncodeStats {
   ConnectivityMethod method = ConnectivityMethod::kIndexed;
   std::string fallback_reason;  // why the quad coder was not used (kAuto), empty if it was
   std::string polygon_fallback_reason;  // why the polygon coder was not used either (never expected)
   QuadCoderStats quad;          // filled when method == kQuad
   PolygonCoderStats polygon;    // filled when method == kPolygon
+  LoopEncodeStats loop;         // filled for a progressive file (progressive_levels > 0)
   std::vector<ChunkStats> chunks;
   uint64_t total_bytes = 0;
   // Vertex order of the file: file_vertex[i] is the input index of the

@@ -11,10 +11,11 @@ namespace qmc {
 inline constexpr uint8_t kSignature[8] = {0x89, 'Q', 'M', 'C', '\r', '\n', 0x1A, '\n'};
 
 // Section 4.1: the format version this library writes and reads. Minor 1
-// added connectivity method 1, minor 2 method 2; a file says the lowest
-// minor version that defines the method it uses.
+// added connectivity method 1, minor 2 method 2, minor 3 the progressive
+// chunks LOOP and LEVL; a file says the lowest minor version that defines
+// everything it uses.
 inline constexpr uint8_t kFormatMajor = 1;
-inline constexpr uint8_t kFormatMinor = 2;
+inline constexpr uint8_t kFormatMinor = 3;
 
 // Section 3.2: a chunk payload is at most 2^31 - 1 bytes.
 inline constexpr uint32_t kMaxChunkLength = 0x7FFFFFFFu;
@@ -31,6 +32,9 @@ inline constexpr uint32_t kChunkEnd = chunk_type('Q', 'E', 'N', 'D');
 inline constexpr uint32_t kChunkText = chunk_type('t', 'e', 'X', 't');
 // Section 4.5: the input's order of vertices, faces and corners (ancillary).
 inline constexpr uint32_t kChunkOrder = chunk_type('o', 'R', 'D', 'R');
+// Section 12: progressive Loop levels, the header and one chunk per level.
+inline constexpr uint32_t kChunkLoop = chunk_type('L', 'O', 'O', 'P');
+inline constexpr uint32_t kChunkLevel = chunk_type('L', 'E', 'V', 'L');
 
 // Section 3.3: bit 5 of the first type byte clear (upper-case letter) = critical.
 constexpr bool chunk_is_critical(uint32_t type) { return ((type >> 24) & 0x20u) == 0; }

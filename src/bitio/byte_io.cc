@@ -26,6 +26,12 @@ void put_f32le(std::vector<uint8_t>* out, float v) {
   put_u32le(out, bits);
 }
 
+void put_f64le(std::vector<uint8_t>* out, double v) {
+  uint64_t bits;
+  std::memcpy(&bits, &v, 8);
+  for (int i = 0; i < 8; ++i) out->push_back(uint8_t(bits >> (8 * i)));
+}
+
 void put_varint(std::vector<uint8_t>* out, uint64_t v) {
   while (v >= 0x80) {
     out->push_back(uint8_t(v | 0x80));
@@ -66,6 +72,15 @@ bool ByteReader::get_f32le(float* v) {
   uint32_t bits;
   if (!get_u32le(&bits)) return false;
   std::memcpy(v, &bits, 4);
+  return true;
+}
+
+bool ByteReader::get_f64le(double* v) {
+  if (remaining() < 8) return false;
+  uint64_t bits = 0;
+  for (int i = 0; i < 8; ++i) bits |= uint64_t(data_[pos_ + i]) << (8 * i);
+  pos_ += 8;
+  std::memcpy(v, &bits, 8);
   return true;
 }
 

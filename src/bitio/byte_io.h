@@ -1,4 +1,4 @@
-// Byte-level fields: little-endian integers, IEEE binary32 and LEB128
+// Byte-level fields: little-endian integers, IEEE binary32/64 and LEB128
 // varints (spec/qmc-format.md section 2.2).
 #pragma once
 
@@ -13,6 +13,7 @@ void put_u16le(std::vector<uint8_t>* out, uint16_t v);
 void put_u32le(std::vector<uint8_t>* out, uint32_t v);
 void put_u32be(std::vector<uint8_t>* out, uint32_t v);
 void put_f32le(std::vector<uint8_t>* out, float v);
+void put_f64le(std::vector<uint8_t>* out, double v);
 // Unsigned LEB128, shortest form.
 void put_varint(std::vector<uint8_t>* out, uint64_t v);
 
@@ -29,6 +30,7 @@ class ByteReader {
   bool get_u16le(uint16_t* v);
   bool get_u32le(uint32_t* v);
   bool get_f32le(float* v);
+  bool get_f64le(double* v);
   // LEB128 of at most 10 bytes; rejects values above 2^64 - 1 and
   // non-shortest encodings (a final byte of 0x00 after the first).
   bool get_varint(uint64_t* v);

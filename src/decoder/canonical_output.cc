@@ -1,24 +1,47 @@
-// The canonical serialization of a decoded mesh (spec/qmc-format.md section
-// 10.2), hashed by the conformance manifest.
+// The canonical serialization of a decoded file (spec/qmc-format.md sections
+// 10.2 and 12.9), hashed by the conformance manifest.
 #include <cstring>
 
 #include "bitio/byte_io.h"
 #include "qmc/decoder.h"
 
 namespace qmc {
+namespace {
+
+void append_tag(std::vector<uint8_t>* out, const char (&tag)[9]) {
+  for (int i = 0; i < 8; ++i) out->push_back(uint8_t(tag[i]));
+}
+
+// Section 10.2.
+void append_mesh(std::vector<uint8_t>* out, const Mesh& mesh, const std::vector<uint32_t>& quantized) {
+  append_tag(out, "QMCMESH1");
+  put_u32le(out, uint32_t(mesh.vertex_count()));
+  put_u32le(out, uint32_t(mesh.face_count()));
+  for (uint32_t q : quantized) put_u32le(out, q);
+  for (float p : mesh.positions) put_f32le(out, p);
+  for (uint32_t d : mesh.face_sizes) put_u32le(out, d);
+  for (uint32_t v : mesh.corners) put_u32le(out, v);
+}
+
+}  // namespace
 
 std::vector<uint8_t> canonical_output(const DecodedFile& file) {
-  const Mesh& mesh = file.mesh;
-  static const uint8_t kTag[8] = {'Q', 'M', 'C', 'M', 'E', 'S', 'H', '1'};
-  std::vector<uint8_t> out(kTag, kTag + 8);
-  out.reserve(16 + 4 * (file.quantized.size() + mesh.positions.size() + mesh.face_sizes.size() +
-                        mesh.corners.size()));
-  put_u32le(&out, uint32_t(mesh.vertex_count()));
-  put_u32le(&out, uint32_t(mesh.face_count()));
-  for (uint32_t q : file.quantized) put_u32le(&out, q);
-  for (float p : mesh.positions) put_f32le(&out, p);
-  for (uint32_t d : mesh.face_sizes) put_u32le(&out, d);
-  for (uint32_t v : mesh.corners) put_u32le(&out, v);
+  std::vector<uint8_t> out;
+  if (file.loop_level_count == 0 || file.levels.empty()) {
+    append_mesh(&out, file.mesh, file.quantized);
+    return out;
+  }
+  // Section 12.9: the base mesh as in 10.2, then every level in binary64.
+  append_tag(&out, "QMCLOOP1");
+  put_u32le(&out, file.loop_level_count);
+  append_mesh(&out, level_mesh(file.levels[0]), file.quantized);
+  for (size_t j = 1; j < file.levels.size(); ++j) {
+    const LoopLevel& level = file.levels[j];
+    put_u32le(&out, level.vertex_count());
+    put_u32le(&out, level.face_count());
+    for (double x : level.positions) put_f64le(&out, x);
+    for (uint32_t v : level.triangles) put_u32le(&out, v);
+  }
   return out;
 }
 

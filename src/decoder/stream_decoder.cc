@@ -7,6 +7,7 @@
 #include "bitio/byte_io.h"
 #include "bitio/crc32.h"
 #include "decoder/connectivity_decoder.h"
+#include "decoder/loop_level_decoder.h"
 #include "decoder/order_decoder.h"
 #include "decoder/position_decoder.h"
 #include "qmc/decoder.h"
@@ -21,6 +22,8 @@ struct StreamDecoder::State {
   bool complete = false;
   bool order_seen = false;  // oRDR (section 4.5)
   uint32_t vertex_count = 0;
+  uint64_t base_bytes = 0;  // CONN and POSN chunks of a progressive file
+  LoopEdges level_edges;    // section 12.3: edges of the finest level so far
   DecodedFile file;
   Status error;
 
@@ -31,6 +34,8 @@ struct StreamDecoder::State {
   Status handle_connectivity(const uint8_t* payload, uint32_t length);
   Status handle_positions(const uint8_t* payload, uint32_t length);
   Status handle_order(const uint8_t* payload, uint32_t length);
+  Status handle_loop(const uint8_t* payload, uint32_t length);
+  Status handle_level(const uint8_t* payload, uint32_t length);
   Status handle_end(uint32_t length);
 };
 
@@ -137,6 +142,8 @@ Status StreamDecoder::State::handle_chunk(uint32_t type, const uint8_t* payload,
     case kChunkEnd: s = handle_end(length); break;
     case kChunkText: file.texts.emplace_back(reinterpret_cast<const char*>(payload), length); break;
     case kChunkOrder: s = handle_order(payload, length); break;
+    case kChunkLoop: s = handle_loop(payload, length); break;
+    case kChunkLevel: s = handle_level(payload, length); break;
     default:
       if (info.critical)
         return Status(ErrorCode::kUnknownCriticalChunk, "unknown critical chunk " + chunk_type_name(type));
@@ -179,6 +186,11 @@ Status StreamDecoder::State::handle_connectivity(const uint8_t* payload, uint32_
     file.quad_coding = quad.coding;
     file.quad_closed = quad.closed;
   }
+  if (file.loop_level_count > 0) {  // section 12.2
+    file.levels.resize(1);
+    if (Status s = loop_base_connectivity(file.mesh, vertex_count, &file.levels[0], &level_edges); !s.ok()) return s;
+    base_bytes = 12 + uint64_t(length);
+  }
   connectivity_seen = true;
   return Status::Ok();
 }
@@ -189,6 +201,10 @@ Status StreamDecoder::State::handle_positions(const uint8_t* payload, uint32_t l
   Status s = decode_positions(payload, length, vertex_count, &file.quantization, &file.quantized,
                               &file.mesh.positions);
   if (!s.ok()) return s;
+  if (file.loop_level_count > 0) {
+    loop_base_positions(file.quantization, file.quantized, &file.levels[0]);
+    file.levels[0].chunk_bytes = base_bytes + 12 + uint64_t(length);
+  }
   positions_seen = true;
   return Status::Ok();
 }
@@ -196,6 +212,7 @@ Status StreamDecoder::State::handle_positions(const uint8_t* payload, uint32_t l
 // Section 4.5: applied as soon as it arrives; until then file() is in coder order.
 Status StreamDecoder::State::handle_order(const uint8_t* payload, uint32_t length) {
   if (!positions_seen) return order_error("oRDR before POSN");
+  if (file.loop_level_count > 0) return order_error("oRDR in a progressive file (section 12.1)");
   if (order_seen) return order_error("a second oRDR");
   OrderMaps maps;
   if (Status s = decode_order(payload, length, vertex_count, file.mesh, &maps); !s.ok()) return s;
@@ -206,10 +223,40 @@ Status StreamDecoder::State::handle_order(const uint8_t* payload, uint32_t lengt
   return Status::Ok();
 }
 
+// Section 12.1: LOOP before CONN, once.
+Status StreamDecoder::State::handle_loop(const uint8_t* payload, uint32_t length) {
+  if (file.loop_level_count > 0) return order_error("a second LOOP");
+  if (connectivity_seen) return order_error("LOOP after CONN");
+  if (order_seen) return order_error("LOOP in a file with oRDR (section 12.1)");
+  return decode_loop_header(payload, length, &file.loop_level_count);
+}
+
+// Section 12.5-12.8: each LEVL refines the finest level the moment it lands.
+Status StreamDecoder::State::handle_level(const uint8_t* payload, uint32_t length) {
+  if (file.loop_level_count == 0) return order_error("LEVL without LOOP");
+  if (!positions_seen) return order_error("LEVL before POSN: a level before its base mesh");
+  if (file.levels.size() > file.loop_level_count)
+    return order_error("LEVL beyond the " + std::to_string(file.loop_level_count) + " levels LOOP declared");
+  const uint8_t j = uint8_t(file.levels.size());
+  LoopLevel fine;
+  if (Status s = decode_level(payload, length, j, file.levels.back(), level_edges, &fine); !s.ok()) return s;
+  fine.chunk_bytes = 12 + uint64_t(length);
+  if (j < file.loop_level_count) {  // the edges of level j are needed by level j + 1 only
+    if (Status s = build_loop_edges(fine, &level_edges); !s.ok())
+      return Status(ErrorCode::kBadChunkPayload, "LEVL: level " + std::to_string(j) + ": " + s.message());
+  }
+  file.levels.push_back(std::move(fine));
+  file.mesh = level_mesh(file.levels.back());
+  return Status::Ok();
+}
+
 Status StreamDecoder::State::handle_end(uint32_t length) {
   // Section 3.6: order rules before payload checks.
   if (!connectivity_seen || !positions_seen)
     return order_error(std::string("QEND before ") + (connectivity_seen ? "POSN" : "CONN"));
+  if (file.loop_level_count > 0 && file.levels.size() <= file.loop_level_count)
+    return order_error("QEND after " + std::to_string(file.levels.size() - 1) + " of " +
+                       std::to_string(file.loop_level_count) + " levels");
   if (length != 0) return Status(ErrorCode::kBadChunkPayload, "QEND payload must be empty");
   complete = true;
   return Status::Ok();
@@ -249,6 +296,11 @@ Status StreamDecoder::finish() {
 bool StreamDecoder::complete() const { return state_->complete; }
 bool StreamDecoder::has_connectivity() const { return state_->connectivity_seen; }
 bool StreamDecoder::has_positions() const { return state_->positions_seen; }
+int StreamDecoder::complete_level() const {
+  const DecodedFile& f = state_->file;
+  return f.loop_level_count > 0 && state_->positions_seen ? int(f.levels.size()) - 1 : -1;
+}
+int StreamDecoder::level_count() const { return state_->file.loop_level_count; }
 const DecodedFile& StreamDecoder::file() const { return state_->file; }
 DecodedFile StreamDecoder::take_file() { return std::move(state_->file); }
 

@@ -7,7 +7,9 @@
 
 #include "bitio/byte_io.h"
 #include "encoder/chunk_writer.h"
+#include "encoder/encoder_internal.h"
 #include "encoder/indexed_connectivity_encoder.h"
+#include "encoder/loop_encoder.h"
 #include "encoder/order_encoder.h"
 #include "decoder/connectivity_decoder.h"
 #include "encoder/polygon_connectivity_encoder.h"
@@ -49,24 +51,15 @@ Status validate(const Mesh& mesh, const EncodeOptions& options) {
     if (text.size() > kMaxChunkLength) return invalid("text too long for one chunk");
   if (options.polygon_coding < -1 || options.polygon_coding >= kPolygonCodingCount)
     return invalid("polygon coding must be -1 (smallest) or 0.." + std::to_string(kPolygonCodingCount - 1));
+  if (options.progressive_levels < 0 || options.progressive_levels > 8)
+    return invalid("progressive levels must be 0 (not progressive) or 1..8, got " +
+                   std::to_string(options.progressive_levels));
+  if (options.progressive_levels > 0 && options.keep_order)
+    return invalid("a progressive file has no input order to keep (section 12.1): drop keep_order");
   if (options.quad_coding < -1 || options.quad_coding >= kQuadCodingCount)
     return invalid("quad coding must be -1 (smallest) or 0.." + std::to_string(kQuadCodingCount - 1));
   return Status::Ok();
 }
-
-void add_chunk(std::vector<uint8_t>* out, EncodeStats* stats, uint32_t type, const std::vector<uint8_t>& payload) {
-  write_chunk(out, type, payload);
-  stats->chunks.push_back({type, 12 + uint64_t(payload.size())});
-}
-
-// The connectivity chosen for the file: CONN payload and the mesh in file
-// order (positions permuted, faces relabelled and reordered).
-struct FileConnectivity {
-  ConnectivityMethod method = ConnectivityMethod::kIndexed;
-  std::vector<uint8_t> payload;
-  Mesh mesh;
-  std::vector<uint32_t> file_vertex, face_source;
-};
 
 std::vector<float> permuted_positions(const Mesh& mesh, const std::vector<uint32_t>& file_vertex) {
   std::vector<float> out;
@@ -148,35 +141,50 @@ std::string polygon_connectivity(const Mesh& mesh, int forced_coding, FileConnec
 
 }  // namespace
 
+void add_chunk(std::vector<uint8_t>* out, EncodeStats* stats, uint32_t type, const std::vector<uint8_t>& payload) {
+  write_chunk(out, type, payload);
+  stats->chunks.push_back({type, 12 + uint64_t(payload.size())});
+}
+
+Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileConnectivity* conn, EncodeStats* st) {
+  bool structured = false;
+  if (options.connectivity == ConnectivityChoice::kAuto || options.connectivity == ConnectivityChoice::kQuad) {
+    const std::string why = quad_connectivity(mesh, options.quad_coding, conn, &st->quad);
+    structured = why.empty();
+    if (!structured && options.connectivity == ConnectivityChoice::kQuad)
+      return invalid("the quad coder cannot take this mesh: " + why);
+    st->fallback_reason = why;
+  }
+  if (!structured && options.connectivity != ConnectivityChoice::kIndexed) {
+    *conn = FileConnectivity{};
+    const std::string why = polygon_connectivity(mesh, options.polygon_coding, conn, &st->polygon);
+    structured = why.empty();
+    if (!structured && options.connectivity == ConnectivityChoice::kPolygon)
+      return invalid("the polygon coder cannot take this mesh: " + why);
+    st->polygon_fallback_reason = why;
+  }
+  if (!structured) *conn = indexed_connectivity(mesh);
+  st->method = conn->method;
+  return Status::Ok();
+}
+
+uint8_t minor_version_for(ConnectivityMethod method) {
+  return method == ConnectivityMethod::kPolygon ? 2 : method == ConnectivityMethod::kQuad ? 1 : 0;
+}
+
 Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* out, EncodeStats* stats) {
   if (Status s = validate(mesh, options); !s.ok()) return s;
   EncodeStats local;
   EncodeStats& st = stats ? *stats : local;
   st = EncodeStats{};
+  if (options.progressive_levels > 0) return encode_loop_levels(mesh, options, out, &st);
   FileConnectivity conn;
-  bool structured = false;
-  if (options.connectivity == ConnectivityChoice::kAuto || options.connectivity == ConnectivityChoice::kQuad) {
-    const std::string why = quad_connectivity(mesh, options.quad_coding, &conn, &st.quad);
-    structured = why.empty();
-    if (!structured && options.connectivity == ConnectivityChoice::kQuad)
-      return invalid("the quad coder cannot take this mesh: " + why);
-    st.fallback_reason = why;
-  }
-  if (!structured && options.connectivity != ConnectivityChoice::kIndexed) {
-    conn = FileConnectivity{};
-    const std::string why = polygon_connectivity(mesh, options.polygon_coding, &conn, &st.polygon);
-    structured = why.empty();
-    if (!structured && options.connectivity == ConnectivityChoice::kPolygon)
-      return invalid("the polygon coder cannot take this mesh: " + why);
-    st.polygon_fallback_reason = why;
-  }
-  if (!structured) conn = indexed_connectivity(mesh);
+  if (Status s = choose_connectivity(mesh, options, &conn, &st); !s.ok()) return s;
 
   out->clear();
   write_signature(out);
   // The lowest minor version that defines everything in the file (4.1).
-  const uint8_t minor = conn.method == ConnectivityMethod::kPolygon ? 2 : conn.method == ConnectivityMethod::kQuad ? 1 : 0;
-  add_chunk(out, &st, kChunkHeader, {kFormatMajor, minor});
+  add_chunk(out, &st, kChunkHeader, {kFormatMajor, minor_version_for(conn.method)});
   for (const std::string& text : options.texts)
     add_chunk(out, &st, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));
   add_chunk(out, &st, kChunkConnectivity, conn.payload);
@@ -187,7 +195,6 @@ Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_
     if (!order.empty()) add_chunk(out, &st, kChunkOrder, order);
   }
   add_chunk(out, &st, kChunkEnd, {});
-  st.method = conn.method;
   st.total_bytes = out->size();
   st.file_vertex = std::move(conn.file_vertex);
   st.face_source = std::move(conn.face_source);

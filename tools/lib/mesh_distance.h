@@ -56,24 +56,18 @@
 #include <functional>
 #include <vector>
 
+#include "encoder/triangle_bvh.h"
 #include "qmc/mesh.h"
 #include "qmc/status.h"
 
 namespace qmc::tools {
 
-struct Vec3d {
-  double x = 0, y = 0, z = 0;
-};
-
-struct Triangle {
-  Vec3d a, b, c;
-};
-
-// Squared Euclidean distance from p to the closed triangle abc; the closest
-// point goes to *closest if it is not null. Decides which Voronoi region of
-// the triangle (a vertex, an edge or the interior) p projects into, so the
-// answer is exact up to rounding whatever the region.
-double point_triangle_distance_squared(const Vec3d& p, const Triangle& t, Vec3d* closest = nullptr);
+// The geometry and the nearest-triangle search are the encoder's
+// (src/encoder/triangle_bvh.h); these names keep the tools' spelling.
+using qmc::point_triangle_distance_squared;
+using qmc::TriangleBvh;
+using qmc::Vec3d;
+using Triangle = qmc::Triangle3d;
 
 // The non-degenerate triangles of `mesh`'s faces (fan from each face's first
 // corner), in face order; *degenerate counts the skipped zero-area ones and
@@ -95,43 +89,6 @@ struct SurfaceSample {
 // rounded up or down, and each sample is uniform within its triangle.
 // Deterministic in `seed`. Samples come in triangle order.
 std::vector<SurfaceSample> sample_surface(const std::vector<Triangle>& triangles, size_t count, uint64_t seed);
-
-// Nearest-triangle queries over a fixed set of triangles: a bounding volume
-// hierarchy (median split on the longest axis of the centroids, at most four
-// triangles per leaf) searched nearest-box-first with pruning by the best
-// distance so far.
-class TriangleBvh {
- public:
-  TriangleBvh() = default;
-  explicit TriangleBvh(const std::vector<Triangle>& triangles);
-
-  size_t size() const { return triangles_.size(); }
-
-  // Squared distance from p to the nearest triangle (+infinity if there are
-  // none). *nearest, if not null, receives that triangle's index in the
-  // vector given to the constructor. `hint`, a triangle index, seeds the
-  // search with that triangle's distance: passing the previous answer makes a
-  // run of nearby queries cheap. The search stops at the first triangle
-  // within squared distance `enough`, for callers to whom all distances that
-  // small are alike.
-  double distance_squared(const Vec3d& p, uint32_t hint = UINT32_MAX, uint32_t* nearest = nullptr,
-                          double enough = 0) const;
-
- private:
-  struct Node {
-    double lo[3], hi[3];
-    uint32_t first;  // leaf: first triangle; inner: index of the second child (the first is next)
-    uint32_t count;  // triangles in a leaf, 0 for an inner node
-  };
-  uint32_t build(const std::vector<Triangle>& triangles, const std::vector<Vec3d>& centroids, uint32_t begin,
-                 uint32_t end);
-
-  std::vector<Node> nodes_;
-  std::vector<Triangle> triangles_;  // in leaf order
-  std::vector<double> planes_;       // leaf order: unit normal and offset, 4 values per triangle
-  std::vector<uint32_t> original_;   // leaf order -> constructor order
-  std::vector<uint32_t> position_;   // constructor order -> leaf order
-};
 
 struct MeshDistanceOptions {
   size_t samples = 200000;  // area samples on each of the two surfaces

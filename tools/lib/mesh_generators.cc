@@ -189,6 +189,32 @@ class SoupCornerPicker {
 
 }  // namespace
 
+Mesh make_octahedron() {
+  Mesh mesh;
+  const float axes[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const auto& a : axes) add_vertex(&mesh, a[0], a[1], a[2]);
+  // Around +z then -z, counter-clockwise seen from outside.
+  const uint32_t ring[4] = {0, 2, 1, 3};
+  for (int i = 0; i < 4; ++i) {
+    add_face(&mesh, {4, ring[i], ring[(i + 1) % 4]});
+    add_face(&mesh, {5, ring[(i + 1) % 4], ring[i]});
+  }
+  return mesh;
+}
+
+Mesh triangulated(const Mesh& mesh, size_t* polygons_split) {
+  Mesh out;
+  out.positions = mesh.positions;
+  size_t split = 0, first = 0;
+  for (uint32_t d : mesh.face_sizes) {
+    split += d > 3;
+    for (uint32_t k = 1; k + 1 < d; ++k) add_face(&out, {mesh.corners[first], mesh.corners[first + k], mesh.corners[first + k + 1]});
+    first += d;
+  }
+  if (polygons_split) *polygons_split = split;
+  return out;
+}
+
 Mesh make_tetrahedron() {
   Mesh mesh;
   add_vertex(&mesh, 1, 1, 1);

@@ -14,6 +14,15 @@
 
 namespace qmc::tools {
 
+// Regular octahedron with vertices +-x, +-y, +-z on the unit sphere: 6
+// vertices of valence 4, 8 triangles, outward.
+qmc::Mesh make_octahedron();
+
+// Each face of degree d > 3 split into the d - 2 triangles of the fan from
+// its first corner (c0 ck ck+1); triangles are kept, vertices untouched.
+// *polygons_split (if not null) gets the number of faces that were split.
+qmc::Mesh triangulated(const qmc::Mesh& mesh, size_t* polygons_split = nullptr);
+
 // Regular tetrahedron inscribed in the cube [-1,1]^3; 4 triangles, outward.
 qmc::Mesh make_tetrahedron();
 

@@ -1,0 +1,141 @@
+// Progressive levels, spec/qmc-format.md section 12: the LOOP header, the
+// base mesh checks, and each LEVL chunk's 1-bit/9-bit displacement code
+// (seed 003 §4.2) applied along the limit normals of section 12.6.
+#include "decoder/loop_level_decoder.h"
+
+#include <cmath>
+#include <string>
+
+#include "bitio/bit_reader.h"
+#include "bitio/byte_io.h"
+
+namespace qmc {
+namespace {
+
+Status bad_payload(const char* chunk, const std::string& message) {
+  return Status(ErrorCode::kBadChunkPayload, std::string(chunk) + ": " + message);
+}
+
+}  // namespace
+
+Status decode_loop_header(const uint8_t* payload, size_t size, uint8_t* level_count) {
+  if (size != 2) return bad_payload("LOOP", "payload is " + std::to_string(size) + " bytes, not 2");
+  if (payload[0] < 1 || payload[0] > kMaxLoopLevels)
+    return bad_payload("LOOP", "level_count " + std::to_string(payload[0]) + " outside 1.." +
+                                   std::to_string(kMaxLoopLevels));
+  if (payload[1] != 0)
+    return Status(ErrorCode::kUnsupportedFeature, "LOOP: subdivision scheme " + std::to_string(payload[1]) +
+                                                      " is not defined (section 12.1 knows 0)");
+  *level_count = payload[0];
+  return Status::Ok();
+}
+
+Status loop_base_connectivity(const Mesh& mesh, uint32_t vertex_count, LoopMesh* base, LoopEdges* edges) {
+  base->positions.assign(3 * size_t(vertex_count), 0.0);
+  base->triangles.clear();
+  for (size_t f = 0; f < mesh.face_count(); ++f)
+    if (mesh.face_sizes[f] != 3)
+      return bad_payload("CONN", "progressive base mesh face " + std::to_string(f) + " has " +
+                                     std::to_string(mesh.face_sizes[f]) + " corners, not 3 (section 12.2)");
+  base->triangles = mesh.corners;
+  if (Status s = build_loop_edges(*base, edges); !s.ok())
+    return bad_payload("CONN", "progressive base mesh: " + s.message() + " (section 12.2)");
+  return Status::Ok();
+}
+
+void loop_base_positions(const QuantizationInfo& info, const std::vector<uint32_t>& quantized, LoopMesh* base) {
+  double lo[3], step[3];
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = double(info.min[a]);
+    step[a] = (double(info.max[a]) - lo[a]) / double((uint64_t(1) << info.bits) - 1);
+  }
+  base->positions.resize(quantized.size());
+  for (size_t i = 0; i < quantized.size(); ++i) base->positions[i] = lo[i % 3] + double(quantized[i]) * step[i % 3];
+}
+
+Status decode_level_code(const uint8_t* payload, size_t size, uint8_t expected_level, uint32_t edge_count,
+                         LevelCode* code) {
+  ByteReader in(payload, size);
+  uint8_t level = 0, method = 0;
+  if (!in.get_u8(&level) || level != expected_level)
+    return bad_payload("LEVL", "level field " + (size ? std::to_string(level) : std::string("missing")) +
+                                   ", expected " + std::to_string(expected_level));
+  if (!in.get_u8(&method)) return bad_payload("LEVL", "code field missing");
+  if (method != 0)
+    return Status(ErrorCode::kUnsupportedFeature,
+                  "LEVL: displacement code " + std::to_string(method) + " is not defined (section 12.1 knows 0)");
+  uint64_t edges = 0;
+  if (!in.get_varint(&edges)) return bad_payload("LEVL", "edge_count missing or malformed");
+  if (edges != edge_count)
+    return bad_payload("LEVL", "edge_count " + std::to_string(edges) + " but level " +
+                                   std::to_string(expected_level - 1) + " has " + std::to_string(edge_count) +
+                                   " edges");
+  if (!in.get_f64le(&code->step)) return bad_payload("LEVL", "step missing");
+  if (!std::isfinite(code->step) || !(code->step > 0))
+    return bad_payload("LEVL", "step is not a finite number greater than zero");
+  BitReader bits(in.cursor(), in.remaining());
+  if (edges > bits.bits_remaining())
+    return Status(ErrorCode::kLimitExceeded, "LEVL: " + std::to_string(edges) + " displacement codes cannot fit in " +
+                                                 std::to_string(in.remaining()) + " bytes");
+  code->m.assign(edge_count, 0);
+  for (uint32_t e = 0; e < edge_count; ++e) {
+    if (!bits.read_bit()) continue;
+    const bool negative = bits.read_bit();
+    const int magnitude = int(bits.read_bits(7));
+    if (bits.overrun()) break;
+    if (magnitude == 0)
+      return Status(ErrorCode::kBadSymbol, "LEVL: edge " + std::to_string(e) + " has a 9-bit code of magnitude 0");
+    code->m[e] = int8_t(negative ? -magnitude : magnitude);
+  }
+  if (bits.overrun()) return Status(ErrorCode::kTruncated, "LEVL: bit stream ends before the last displacement");
+  if (!bits.at_clean_end()) return bad_payload("LEVL", "bits left over after the last displacement");
+  return Status::Ok();
+}
+
+void displace_edge_points(const std::vector<double>& normals, const LevelCode& code, uint32_t coarse_vertices,
+                          LoopMesh* fine) {
+  for (size_t e = 0; e < code.m.size(); ++e) {
+    if (code.m[e] == 0) continue;  // 12.7: unchanged, even where w * N would not be finite
+    const double w = double(code.m[e]) * code.step;
+    double* x = &fine->positions[3 * (size_t(coarse_vertices) + e)];
+    for (int k = 0; k < 3; ++k) x[k] = x[k] + w * normals[3 * e + k];
+  }
+}
+
+Status check_level_range(const LoopMesh& level, uint8_t level_index) {
+  // Binary32 rounding overflows from 2^128 - 2^103 up; NaN fails the test too.
+  constexpr double kBinary32Overflow = 0x1.ffffff8p+127;
+  for (size_t i = 0; i < level.positions.size(); ++i)
+    if (!(std::fabs(level.positions[i]) < kBinary32Overflow))
+      return bad_payload("LEVL", "level " + std::to_string(level_index) + " vertex " + std::to_string(i / 3) +
+                                     " has a coordinate that is not finite in binary32 (section 12.8)");
+  return Status::Ok();
+}
+
+Status decode_level(const uint8_t* payload, size_t size, uint8_t expected_level, const LoopMesh& coarse,
+                    const LoopEdges& coarse_edges, LoopMesh* fine) {
+  LevelCode code;
+  if (Status s = decode_level_code(payload, size, expected_level, coarse_edges.edge_count(), &code); !s.ok())
+    return s;
+  loop_subdivide(coarse, coarse_edges, fine);
+  std::vector<double> normals;
+  edge_point_normals(*fine, coarse_edges, coarse.vertex_count(), &normals);
+  displace_edge_points(normals, code, coarse.vertex_count(), fine);
+  if (Status s = check_level_range(*fine, expected_level); !s.ok()) return s;
+  fine->step = code.step;
+  fine->edge_points = coarse_edges.edge_count();
+  fine->zero_displacements = 0;
+  for (int8_t m : code.m) fine->zero_displacements += m == 0;
+  return Status::Ok();
+}
+
+Mesh level_mesh(const LoopLevel& level) {
+  Mesh mesh;
+  mesh.positions.resize(level.positions.size());
+  for (size_t i = 0; i < level.positions.size(); ++i) mesh.positions[i] = float(level.positions[i]);
+  mesh.face_sizes.assign(level.face_count(), 3);
+  mesh.corners = level.triangles;
+  return mesh;
+}
+
+}  // namespace qmc

@@ -1,0 +1,31 @@
+// Pieces of the encoder entry point (encoder.cc) that the progressive
+// encoder (loop_encoder.cc) reuses for its base mesh.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "qmc/encoder.h"
+
+namespace qmc {
+
+// The connectivity chosen for the file: CONN payload and the mesh in file
+// order (positions permuted, faces relabelled and reordered).
+struct FileConnectivity {
+  ConnectivityMethod method = ConnectivityMethod::kIndexed;
+  std::vector<uint8_t> payload;
+  Mesh mesh;
+  std::vector<uint32_t> file_vertex, face_source;
+};
+
+// Section 5.1: the quad coder where it applies (kAuto), else the polygon
+// coder, else the indexed coding, as `options.connectivity` asks.
+Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileConnectivity* conn, EncodeStats* st);
+
+// Section 4.1: the lowest minor version that defines the method.
+uint8_t minor_version_for(ConnectivityMethod method);
+
+// Appends a chunk and records its size in the stats.
+void add_chunk(std::vector<uint8_t>* out, EncodeStats* stats, uint32_t type, const std::vector<uint8_t>& payload);
+
+}  // namespace qmc

@@ -1,0 +1,144 @@
+// Progressive encoder, spec/qmc-format.md 12.10 (seed 003 fig. 1). The
+// geometry steps live in their own files (quadric_simplifier, loop_fitting,
+// loop_remesher); this file orders them, codes the base mesh with the
+// format's own coders (seed 003 §4.2 leaves that to any coder), and runs the
+// closed loop that computes each level's displacements from the decoder's
+// reconstruction of the level below (loop_level_encoder).
+#include "encoder/loop_encoder.h"
+
+#include <chrono>
+#include <string>
+
+#include "decoder/loop_level_decoder.h"
+#include "decoder/loop_subdivision.h"
+#include "encoder/chunk_writer.h"
+#include "encoder/encoder_internal.h"
+#include "encoder/loop_fitting.h"
+#include "encoder/loop_level_encoder.h"
+#include "encoder/loop_remesher.h"
+#include "encoder/position_encoder.h"
+#include "encoder/quadric_simplifier.h"
+#include "encoder/triangle_bvh.h"
+
+namespace qmc {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void report(const EncodeOptions& options, const char* stage, double fraction) {
+  if (options.progress) options.progress(stage, fraction);
+}
+
+Status input_as_loop_mesh(const Mesh& mesh, LoopMesh* out) {
+  for (size_t f = 0; f < mesh.face_count(); ++f)
+    if (mesh.face_sizes[f] != 3)
+      return Status(ErrorCode::kInvalidArgument,
+                    "progressive coding takes triangle meshes; face " + std::to_string(f) + " has " +
+                        std::to_string(mesh.face_sizes[f]) + " corners (triangulate the mesh first)");
+  if (mesh.face_count() == 0) return Status(ErrorCode::kInvalidArgument, "progressive coding needs at least one face");
+  out->positions.assign(mesh.positions.begin(), mesh.positions.end());
+  out->triangles = mesh.corners;
+  return Status::Ok();
+}
+
+// The base mesh in the order the decoder will see it: CONN's faces and
+// labels, positions carried over from the simplified mesh.
+Status base_in_file_order(const LoopMesh& simplified, const EncodeOptions& options, FileConnectivity* conn,
+                          EncodeStats* st, LoopMesh* base) {
+  Mesh m;
+  m.positions.assign(simplified.positions.begin(), simplified.positions.end());
+  m.face_sizes.assign(simplified.face_count(), 3);
+  m.corners = simplified.triangles;
+  if (Status s = choose_connectivity(m, options, conn, st); !s.ok()) return s;
+  for (uint32_t d : conn->mesh.face_sizes)
+    if (d != 3) return Status(ErrorCode::kInvalidArgument, "internal: the base mesh coder changed a triangle");
+  base->triangles = conn->mesh.corners;
+  base->positions.resize(simplified.positions.size());
+  for (size_t l = 0; l < conn->file_vertex.size(); ++l)
+    for (int k = 0; k < 3; ++k) base->positions[3 * l + k] = simplified.positions[3 * size_t(conn->file_vertex[l]) + k];
+  return Status::Ok();
+}
+
+// Section 12.10 targets of level j's edge points: the inverse-Loop control
+// mesh below K; at K the input surface along each normal (seed 003's
+// intersection approach), else the remesh position.
+void pipeline_targets(const std::vector<LoopMesh>& control, const TriangleBvh& surface, double reach, int levels,
+                      LoopEncodeStats* st, int j, const LoopMesh& fine, const std::vector<double>& normals,
+                      uint32_t coarse_vertices, std::vector<double>* targets) {
+  const size_t edges = normals.size() / 3;
+  targets->resize(3 * edges);
+  for (size_t e = 0; e < edges; ++e) {
+    const size_t v = coarse_vertices + e;
+    for (int k = 0; k < 3; ++k) (*targets)[3 * e + k] = control[j].positions[3 * v + k];
+    if (j < levels) continue;
+    const Vec3d origin{fine.positions[3 * v], fine.positions[3 * v + 1], fine.positions[3 * v + 2]};
+    const Vec3d direction{normals[3 * e], normals[3 * e + 1], normals[3 * e + 2]};
+    LineHit hit;
+    if (surface.nearest_line_hit(origin, direction, reach, &hit, /*same_facing=*/true)) {
+      (*targets)[3 * e] = hit.point.x, (*targets)[3 * e + 1] = hit.point.y, (*targets)[3 * e + 2] = hit.point.z;
+      ++st->ray_hits;
+    } else {
+      ++st->ray_misses;
+    }
+  }
+}
+
+}  // namespace
+
+Status encode_loop_levels(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* out,
+                          EncodeStats* st) {
+  LoopEncodeStats& ls = st->loop;
+  LoopMesh original;
+  if (Status s = input_as_loop_mesh(mesh, &original); !s.ok()) return s;
+  const int levels = options.progressive_levels;
+  ls.input_vertices = uint32_t(mesh.vertex_count());
+  ls.input_faces = uint32_t(mesh.face_count());
+  ls.target_base_faces = uint32_t(std::max<uint64_t>(4, mesh.face_count() >> (2 * levels)));
+
+  // II. Simplification.
+  report(options, "simplify", 0);
+  Clock::time_point start = Clock::now();
+  LoopMesh simplified;
+  SimplifyStats simplify_stats;
+  if (Status s = simplify_for_loop(original, ls.target_base_faces, &simplified, &simplify_stats); !s.ok()) return s;
+  ls.unreferenced_vertices_dropped = simplify_stats.unreferenced_vertices;
+  ls.seconds_simplify = seconds_since(start);
+
+  // The base connectivity first: everything after works in CONN's order.
+  FileConnectivity conn;
+  LoopMesh base;
+  if (Status s = base_in_file_order(simplified, options, &conn, st, &base); !s.ok()) return s;
+
+  // III. Adjustment; IV-VI. subdivision, displacement, inverse Loop.
+  report(options, "fit", 0.3);
+  start = Clock::now();
+  const TriangleBvh surface(loop_mesh_triangles(original));
+  FitStats fit_stats;
+  if (Status s = fit_control_mesh(surface, &base, 10, &fit_stats); !s.ok()) return s;
+  ls.seconds_fit = seconds_since(start);
+  report(options, "remesh", 0.5);
+  start = Clock::now();
+  std::vector<LoopMesh> control;
+  RemeshStats remesh_stats;
+  if (Status s = remesh(original, surface, base, levels, &control, &remesh_stats); !s.ok()) return s;
+  ls.seconds_remesh = seconds_since(start);
+
+  // VII. The base positions, then each level from the decoder's own result.
+  report(options, "code", 0.8);
+  start = Clock::now();
+  const double reach = 0.02 * surface.bbox_diagonal();
+  const LevelTargets targets = [&](int j, const LoopMesh& fine, const std::vector<double>& normals,
+                                   uint32_t coarse_vertices, std::vector<double>* out_targets) {
+    pipeline_targets(control, surface, reach, levels, &ls, j, fine, normals, coarse_vertices, out_targets);
+  };
+  if (Status s = write_loop_file(conn, control[0].positions, levels, options, targets, out, st); !s.ok()) return s;
+  ls.seconds_code = seconds_since(start);
+  report(options, "done", 1);
+  return Status::Ok();
+}
+
+}  // namespace qmc

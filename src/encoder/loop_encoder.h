@@ -1,0 +1,19 @@
+// The progressive encoder (spec/qmc-format.md section 12.10; seed 003
+// fig. 1, steps I-VII): simplify, fit, subdivide, displace, inverse Loop,
+// then code the base mesh and each level in a closed loop.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "qmc/encoder.h"
+
+namespace qmc {
+
+// Called by encode() when options.progressive_levels > 0, after the common
+// input checks. The mesh must be a manifold, consistently oriented triangle
+// mesh; anything else is an error naming the problem.
+Status encode_loop_levels(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* out,
+                          EncodeStats* stats);
+
+}  // namespace qmc

@@ -1,0 +1,183 @@
+// LEVL encoder and the progressive file layout, spec/qmc-format.md 12.1,
+// 12.7 and 12.10 (seed 003 §3.2.2, §4.2).
+#include "encoder/loop_level_encoder.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "bitio/bit_writer.h"
+#include "bitio/byte_io.h"
+#include "encoder/chunk_writer.h"
+#include "encoder/position_encoder.h"
+
+namespace qmc {
+namespace {
+
+constexpr int kMaxMagnitude = 127;  // 7-bit magnitude of seed 003 §4.2
+
+int quantize(double r, double step) {
+  const double m = std::nearbyint(r / step);
+  return int(std::fmax(-kMaxMagnitude, std::fmin(kMaxMagnitude, m)));
+}
+
+// Per edge point: r, the displacement in units of N that reaches the
+// target's projection on the normal line, and |N|^2, which turns an error in
+// those units back into squared length.
+struct Projection {
+  std::vector<double> r, weight;
+};
+
+Projection project(uint32_t coarse_vertices, const LoopMesh& fine, const std::vector<double>& normals,
+                   const std::vector<double>& targets) {
+  const size_t edges = normals.size() / 3;
+  Projection p;
+  p.r.resize(edges);
+  p.weight.resize(edges);
+  for (size_t e = 0; e < edges; ++e) {
+    const double* n = &normals[3 * e];
+    const double* q = &fine.positions[3 * (coarse_vertices + e)];
+    const double* t = &targets[3 * e];
+    const double nn = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    const double along = (t[0] - q[0]) * n[0] + (t[1] - q[1]) * n[1] + (t[2] - q[2]) * n[2];
+    p.weight[e] = nn;
+    p.r[e] = nn > 0 && std::isfinite(nn) ? along / nn : 0.0;
+  }
+  return p;
+}
+
+double quantization_error(const Projection& p, double step) {
+  double sum = 0;
+  for (size_t e = 0; e < p.r.size(); ++e) {
+    const double d = p.r[e] - step * quantize(p.r[e], step);
+    sum += p.weight[e] * d * d;
+  }
+  return sum;
+}
+
+// 12.10: the step of least squared error among q / 127 * 2^(i/4), i = -8 ..
+// 24, q the 99.9th percentile of |r|. A percentile, not the maximum: r is
+// a length over |N|^2, and a few edge points with tiny normals would
+// otherwise push every step so high that all values round to zero.
+double choose_step(const Projection& p) {
+  std::vector<double> magnitudes;
+  magnitudes.reserve(p.r.size());
+  for (double r : p.r)
+    if (std::isfinite(r)) magnitudes.push_back(std::fabs(r));
+  if (magnitudes.empty()) return 1.0;
+  const size_t k = std::min(magnitudes.size() - 1, size_t(0.999 * double(magnitudes.size())));
+  std::nth_element(magnitudes.begin(), magnitudes.begin() + std::ptrdiff_t(k), magnitudes.end());
+  const double q = magnitudes[k];
+  if (!(q > 0)) return 1.0;
+  double best_step = 0, best_error = 0;
+  for (int i = -8; i <= 24; ++i) {
+    const double step = q / kMaxMagnitude * std::exp2(-0.25 * i);
+    const double error = quantization_error(p, step);
+    if (best_step == 0 || error < best_error) best_step = step, best_error = error;
+  }
+  return best_step;
+}
+
+QuantizationInfo info_of(const QuantizedPositions& q) {
+  QuantizationInfo info;
+  info.bits = q.bits;
+  info.min = q.min;
+  info.max = q.max;
+  return info;
+}
+
+}  // namespace
+
+void predict_level(const LoopMesh& coarse, const LoopEdges& coarse_edges, LoopMesh* fine,
+                   std::vector<double>* normals) {
+  loop_subdivide(coarse, coarse_edges, fine);
+  edge_point_normals(*fine, coarse_edges, coarse.vertex_count(), normals);
+}
+
+std::vector<uint8_t> encode_level(uint8_t level, uint32_t coarse_vertices, const std::vector<double>& normals,
+                                  const std::vector<double>& targets, LoopMesh* fine, LevelCodeStats* stats) {
+  const Projection p = project(coarse_vertices, *fine, normals, targets);
+  LevelCode code;
+  code.step = choose_step(p);
+  code.m.resize(p.r.size());
+  *stats = LevelCodeStats{};
+  stats->edge_points = uint32_t(p.r.size());
+  stats->step = code.step;
+  BitWriter bits;
+  for (size_t e = 0; e < p.r.size(); ++e) {
+    const int m = quantize(p.r[e], code.step);
+    code.m[e] = int8_t(m);
+    stats->zeros += m == 0;
+    stats->clamped += std::fabs(p.r[e] / code.step) > kMaxMagnitude + 0.5;
+    bits.write_bit(m != 0);
+    if (m == 0) continue;
+    bits.write_bit(m < 0);
+    bits.write_bits(uint32_t(m < 0 ? -m : m), 7);
+  }
+  displace_edge_points(normals, code, coarse_vertices, fine);
+  for (size_t e = 0; e < p.r.size(); ++e)
+    for (int k = 0; k < 3; ++k) {
+      const double d = targets[3 * e + k] - fine->positions[3 * (coarse_vertices + e) + k];
+      stats->squared_error += d * d;
+    }
+  std::vector<uint8_t> payload;
+  put_u8(&payload, level);
+  put_u8(&payload, 0);  // 12.7's code
+  put_varint(&payload, p.r.size());
+  put_f64le(&payload, code.step);
+  const std::vector<uint8_t> stream = bits.finish();
+  payload.insert(payload.end(), stream.begin(), stream.end());
+  return payload;
+}
+
+Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& base_positions, int levels,
+                       const EncodeOptions& options, const LevelTargets& targets, std::vector<uint8_t>* out,
+                       EncodeStats* st) {
+  LoopEncodeStats& ls = st->loop;
+  const QuantizedPositions quantized =
+      quantize_positions(std::vector<float>(base_positions.begin(), base_positions.end()), options.position_bits);
+  const std::vector<uint8_t> positions_payload = encode_positions(quantized);
+  LoopMesh current;
+  current.triangles = conn.mesh.corners;
+  loop_base_positions(info_of(quantized), quantized.q, &current);
+  LoopEdges edges;
+  if (Status s = build_loop_edges(current, &edges); !s.ok())
+    return Status(ErrorCode::kInvalidArgument, "the base mesh cannot carry Loop levels: " + s.message());
+
+  out->clear();
+  write_signature(out);
+  add_chunk(out, st, kChunkHeader, {kFormatMajor, 3});
+  for (const std::string& text : options.texts)
+    add_chunk(out, st, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));
+  add_chunk(out, st, kChunkLoop, {uint8_t(levels), 0});
+  add_chunk(out, st, kChunkConnectivity, conn.payload);
+  add_chunk(out, st, kChunkPositions, positions_payload);
+  ls.levels.clear();
+  ls.levels.push_back({current.vertex_count(), current.face_count(), 0, 0, 0, 0,
+                       24 + conn.payload.size() + positions_payload.size()});
+  for (int j = 1; j <= levels; ++j) {
+    LoopMesh fine;
+    std::vector<double> normals, level_targets;
+    predict_level(current, edges, &fine, &normals);
+    targets(j, fine, normals, current.vertex_count(), &level_targets);
+    LevelCodeStats code_stats;
+    const std::vector<uint8_t> payload =
+        encode_level(uint8_t(j), current.vertex_count(), normals, level_targets, &fine, &code_stats);
+    if (Status s = check_level_range(fine, uint8_t(j)); !s.ok())
+      return Status(ErrorCode::kInvalidArgument, "level " + std::to_string(j) + " leaves the binary32 range");
+    add_chunk(out, st, kChunkLevel, payload);
+    ls.levels.push_back({fine.vertex_count(), fine.face_count(), code_stats.edge_points, code_stats.zeros,
+                         code_stats.clamped, code_stats.step, 12 + payload.size()});
+    if (j < levels)
+      if (Status s = build_loop_edges(fine, &edges); !s.ok())
+        return Status(ErrorCode::kInvalidArgument, "internal: level " + std::to_string(j) + ": " + s.message());
+    current = std::move(fine);
+  }
+  add_chunk(out, st, kChunkEnd, {});
+  st->method = conn.method;
+  st->total_bytes = out->size();
+  st->file_vertex = conn.file_vertex;
+  st->face_source = conn.face_source;
+  return Status::Ok();
+}
+
+}  // namespace qmc

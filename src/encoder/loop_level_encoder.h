@@ -1,0 +1,50 @@
+// The LEVL chunk on the encoder side (spec/qmc-format.md sections 12.1,
+// 12.7, 12.10): seed 003 §3.2.2's scalar displacements, quantized by §4.2's
+// 7-bit magnitudes, computed in a closed loop from the decoder's own
+// reconstruction of the level below so that quantization errors never
+// accumulate across levels.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "decoder/loop_level_decoder.h"
+#include "decoder/loop_subdivision.h"
+#include "encoder/encoder_internal.h"
+
+namespace qmc {
+
+// Step 12.5 1-4 as the decoder does them: the subdivided level before any
+// displacement, and the normal of each edge point (3 per coarse edge).
+void predict_level(const LoopMesh& coarse, const LoopEdges& coarse_edges, LoopMesh* fine,
+                   std::vector<double>* normals);
+
+struct LevelCodeStats {
+  uint32_t edge_points = 0, zeros = 0, clamped = 0;
+  double step = 0;
+  double squared_error = 0;  // sum over edge points of |target - decoded|^2
+};
+
+// Chooses the step and the integers m for edge-point targets (3 doubles per
+// coarse edge), applies them to `fine` exactly as the decoder will, and
+// returns the LEVL payload.
+std::vector<uint8_t> encode_level(uint8_t level, uint32_t coarse_vertices, const std::vector<double>& normals,
+                                  const std::vector<double>& targets, LoopMesh* fine, LevelCodeStats* stats);
+
+// Where the edge points of `level` should go: given the decoder's
+// subdivided level (before displacement) and the edge-point normals (3 per
+// coarse edge), fills 3 doubles per coarse edge.
+using LevelTargets = std::function<void(int level, const LoopMesh& fine, const std::vector<double>& normals,
+                                        uint32_t coarse_vertices, std::vector<double>* targets)>;
+
+// Section 12: writes a progressive file whose base mesh has the connectivity
+// `conn` (triangles, CONN order) and binary64 positions `base_positions`
+// (CONN order), quantized with options.position_bits, and `levels` levels
+// whose displacements aim at `targets`, each computed from the decoder's own
+// reconstruction of the level below.
+Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& base_positions, int levels,
+                       const EncodeOptions& options, const LevelTargets& targets, std::vector<uint8_t>* out,
+                       EncodeStats* stats);
+
+}  // namespace qmc

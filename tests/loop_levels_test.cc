@@ -1,0 +1,404 @@
+// Progressive Loop levels, spec/qmc-format.md section 12: the subdivision
+// rules, the limit normals, the 1-bit/9-bit code, the chunk order, and the
+// streaming decoder that shows each level as it lands.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+
+#include "bitio/byte_io.h"
+#include "bitio/crc32.h"
+#include "decoder/loop_level_decoder.h"
+#include "decoder/loop_subdivision.h"
+#include "encoder/encoder_internal.h"
+#include "encoder/loop_level_encoder.h"
+#include "analytic_loop_files.h"
+#include "mesh_generators.h"
+#include "qmc/decoder.h"
+
+namespace qmc {
+namespace {
+
+LoopMesh loop_mesh_of(const Mesh& mesh) {
+  LoopMesh out;
+  out.positions.assign(mesh.positions.begin(), mesh.positions.end());
+  out.triangles = mesh.corners;
+  return out;
+}
+
+Mesh triangle_torus() { return tools::triangulated(tools::make_torus(12, 8)); }
+Mesh triangle_grid() { return tools::triangulated(tools::make_grid(6, 5)); }
+
+const LevelTargets sphere_targets = tools::unit_sphere_targets();
+
+// A progressive file of `base` with `levels` levels aiming at `targets`.
+std::vector<uint8_t> progressive_file(const Mesh& base, int levels, const LevelTargets& targets, int bits = 12,
+                                      EncodeStats* stats = nullptr) {
+  std::vector<uint8_t> out;
+  const Status s = tools::make_loop_file(base, levels, targets, bits, &out, stats);
+  EXPECT_TRUE(s.ok()) << s.to_string();
+  return out;
+}
+
+// Largest |radius - 1| over the vertices from `first` on.
+double max_radius_error(const LoopLevel& level, size_t first = 0) {
+  double worst = 0;
+  for (size_t i = 3 * first; i < level.positions.size(); i += 3) {
+    const double* p = &level.positions[i];
+    worst = std::fmax(worst, std::fabs(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - 1.0));
+  }
+  return worst;
+}
+
+TEST(LoopBeta, ExactWhereCosineIsExactAndCloseToLoopsFormulaElsewhere) {
+  EXPECT_EQ(loop_beta(3), 3.0 / 16.0);
+  EXPECT_EQ(loop_beta(6), 1.0 / 16.0);
+  EXPECT_EQ(loop_beta(4), (0.625 - 0.375 * 0.375) / 4.0);
+  for (uint32_t n = 2; n < 200; ++n) {
+    const double c = std::cos(2 * M_PI / n), inner = 0.375 + 0.25 * c;
+    EXPECT_NEAR(loop_beta(n), (0.625 - inner * inner) / n, 1e-16) << n;
+  }
+  // The check values that spec 12.4 prints.
+  char text[64];
+  std::snprintf(text, sizeof text, "%a", loop_beta(5));
+  EXPECT_STREQ(text, "0x1.58722191a02d6p-4");
+  std::snprintf(text, sizeof text, "%a", loop_beta(7));
+  EXPECT_STREQ(text, "0x1.919cb59d1c909p-5");
+}
+
+TEST(LoopEdges, NumberedInFaceOrderWithTheirFacesAndRings) {
+  const LoopMesh octahedron = loop_mesh_of(tools::make_octahedron());
+  LoopEdges e;
+  ASSERT_TRUE(build_loop_edges(octahedron, &e).ok());
+  EXPECT_EQ(e.edge_count(), 12u);
+  // Face 0 is (4 0 2): its edges come first, as (4 0), (0 2), (2 4).
+  EXPECT_EQ(e.a[0], 4u);
+  EXPECT_EQ(e.b[0], 0u);
+  EXPECT_EQ(e.c[0], 2u);
+  EXPECT_EQ(e.a[1], 0u);
+  EXPECT_EQ(e.b[1], 2u);
+  EXPECT_EQ(e.a[2], 2u);
+  EXPECT_EQ(e.b[2], 4u);
+  for (uint32_t i = 0; i < e.edge_count(); ++i) EXPECT_FALSE(e.is_boundary(i));
+  for (uint32_t v = 0; v < 6; ++v) EXPECT_EQ(e.valence[v], 4u);
+  // Neighbours are listed by increasing edge index.
+  EXPECT_EQ(e.neighbours[e.neighbour_offset[4]], 0u);
+  EXPECT_EQ(e.neighbours[e.neighbour_offset[4] + 1], 2u);
+}
+
+TEST(LoopEdges, RejectWhatSection12_2Forbids) {
+  LoopEdges e;
+  LoopMesh m;
+  m.positions.assign(3 * 5, 0.0);
+  m.triangles = {0, 1, 2, 0, 2, 1, 0, 1, 3};  // edge (0 1) in three faces
+  EXPECT_NE(build_loop_edges(m, &e).message().find("more than two faces"), std::string::npos);
+  m.triangles = {0, 1, 2, 0, 1, 3};  // (0 1) crossed the same way twice
+  EXPECT_NE(build_loop_edges(m, &e).message().find("same way"), std::string::npos);
+  m.triangles = {0, 1, 2, 0, 2, 3};  // vertex 4 in no face
+  EXPECT_NE(build_loop_edges(m, &e).message().find("vertex 4 is in no face"), std::string::npos);
+  m.triangles = {0, 1, 1};
+  EXPECT_NE(build_loop_edges(m, &e).message().find("repeats a vertex"), std::string::npos);
+  // Two triangles touching at vertex 0 only: a bow tie.
+  m.positions.assign(3 * 5, 0.0);
+  m.triangles = {0, 1, 2, 0, 3, 4};
+  EXPECT_NE(build_loop_edges(m, &e).message().find("more than two boundary edges"), std::string::npos);
+  // Two closed fans sharing a vertex (two tetrahedra glued at a corner).
+  Mesh two = tools::make_tetrahedron();
+  const Mesh second = tools::make_tetrahedron();
+  for (size_t i = 3; i < second.positions.size(); ++i) two.positions.push_back(second.positions[i] + 3);
+  for (uint32_t c : second.corners) {
+    two.corners.push_back(c == 0 ? 0 : c + 3);
+    if (two.corners.size() % 3 == 0) two.face_sizes.push_back(3);
+  }
+  EXPECT_NE(build_loop_edges(loop_mesh_of(two), &e).message().find("two separate fans"), std::string::npos);
+  m.triangles.clear();
+  EXPECT_FALSE(build_loop_edges(m, &e).ok());
+}
+
+TEST(LoopSubdivide, CountsTopologyAndFacesAsSection12_5) {
+  for (const Mesh& mesh : {tools::make_octahedron(), triangle_torus(), triangle_grid()}) {
+    LoopMesh coarse = loop_mesh_of(mesh), fine;
+    LoopEdges e, fine_edges;
+    ASSERT_TRUE(build_loop_edges(coarse, &e).ok());
+    loop_subdivide(coarse, e, &fine);
+    EXPECT_EQ(fine.vertex_count(), coarse.vertex_count() + e.edge_count());
+    EXPECT_EQ(fine.face_count(), 4 * coarse.face_count());
+    ASSERT_TRUE(build_loop_edges(fine, &fine_edges).ok());
+    // Euler characteristic V - E + F is kept.
+    EXPECT_EQ(int64_t(fine.vertex_count()) - fine_edges.edge_count() + fine.face_count(),
+              int64_t(coarse.vertex_count()) - e.edge_count() + coarse.face_count());
+    // The first face's four children, in the order of 12.5 step 3.
+    const uint32_t V = coarse.vertex_count();
+    const uint32_t* t = coarse.triangles.data();
+    const uint32_t m0 = V + e.face_edge[0], m1 = V + e.face_edge[1], m2 = V + e.face_edge[2];
+    const std::vector<uint32_t> expected = {t[0], m0, m2, t[1], m1, m0, t[2], m2, m1, m0, m1, m2};
+    EXPECT_EQ(std::vector<uint32_t>(fine.triangles.begin(), fine.triangles.begin() + 12), expected);
+  }
+}
+
+TEST(LoopSubdivide, MasksOnAFlatGridStayFlatAndNormalsPointUp) {
+  Mesh grid = triangle_grid();
+  for (size_t i = 2; i < grid.positions.size(); i += 3) grid.positions[i] = 0;  // z = 0
+  LoopMesh coarse = loop_mesh_of(grid), fine;
+  LoopEdges e;
+  ASSERT_TRUE(build_loop_edges(coarse, &e).ok());
+  loop_subdivide(coarse, e, &fine);
+  std::vector<double> normals;
+  edge_point_normals(fine, e, coarse.vertex_count(), &normals);
+  for (size_t i = 2; i < fine.positions.size(); i += 3) EXPECT_EQ(fine.positions[i], 0.0);
+  for (size_t i = 0; i < normals.size(); i += 3) {
+    EXPECT_EQ(normals[i], 0.0);
+    EXPECT_EQ(normals[i + 1], 0.0);
+    EXPECT_GT(normals[i + 2], 0.0) << "edge " << i / 3 << (e.is_boundary(uint32_t(i / 3)) ? " (boundary)" : "");
+  }
+  // The boundary rules: a boundary edge point is the midpoint of its edge.
+  for (uint32_t i = 0; i < e.edge_count(); ++i) {
+    if (!e.is_boundary(i)) continue;
+    for (int k = 0; k < 2; ++k)
+      EXPECT_EQ(fine.positions[3 * (coarse.vertex_count() + i) + k],
+                0.5 * (coarse.positions[3 * e.a[i] + k] + coarse.positions[3 * e.b[i] + k]));
+  }
+}
+
+TEST(LoopSubdivide, InteriorMasksAsWrittenOnTheOctahedron) {
+  LoopMesh coarse = loop_mesh_of(tools::make_octahedron()), fine;
+  LoopEdges e;
+  ASSERT_TRUE(build_loop_edges(coarse, &e).ok());
+  loop_subdivide(coarse, e, &fine);
+  // Vertex +z (label 4): its 4 neighbours sum to 0 in x, y and to 0 in z,
+  // so it becomes (1 - 4 beta(4)) * (0, 0, 1).
+  EXPECT_EQ(fine.positions[3 * 4 + 2], 1.0 - 4.0 * loop_beta(4));
+  // Edge (4 0) with c = 2 and d = 3: 3/8 (z + x) + 1/8 (y - y).
+  const double* p = &fine.positions[3 * coarse.vertex_count()];
+  EXPECT_EQ(p[0], 0.375);
+  EXPECT_EQ(p[1], 0.0);
+  EXPECT_EQ(p[2], 0.375);
+}
+
+TEST(LoopLevels, OctahedronToSphereConvergesLevelByLevel) {
+  for (int levels = 1; levels <= 5; ++levels) {
+    const std::vector<uint8_t> file = progressive_file(tools::loop_octahedron(), levels, sphere_targets, 16);
+    DecodedFile decoded;
+    const Status s = decode(file.data(), file.size(), &decoded);
+    ASSERT_TRUE(s.ok()) << s.to_string();
+    ASSERT_EQ(decoded.levels.size(), size_t(levels) + 1);
+    EXPECT_EQ(decoded.loop_level_count, levels);
+    EXPECT_EQ(decoded.version_minor, 3);
+    for (int j = 1; j <= levels; ++j) {
+      const LoopLevel& level = decoded.levels[j];
+      EXPECT_EQ(level.face_count(), 8u << (2 * j));
+      // Edge points were displaced onto the sphere, up to the 7-bit step and
+      // the tangential part the normal cannot carry; vertex points follow
+      // the masks, and the mesh closes in on the sphere level by level.
+      const double edge_error = max_radius_error(level, decoded.levels[j - 1].vertex_count());
+      EXPECT_LT(edge_error, 0.01) << "level " << j;
+      if (j >= 2) EXPECT_LT(max_radius_error(level), max_radius_error(decoded.levels[j - 1])) << "level " << j;
+    }
+    // The final mesh is the finest level, in binary32.
+    EXPECT_EQ(decoded.mesh.vertex_count(), decoded.levels.back().vertex_count());
+    EXPECT_EQ(decoded.mesh.positions[0], float(decoded.levels.back().positions[0]));
+  }
+}
+
+TEST(LoopLevels, DecoderReproducesTheEncodersClosedLoopBitForBit) {
+  const Mesh torus = triangle_torus();
+  std::vector<LoopLevel> encoder_side;
+  // Targets: the predicted point pushed out by a pattern along the normal.
+  const LevelTargets bumpy = [&](int level, const LoopMesh& fine, const std::vector<double>& normals,
+                                 uint32_t coarse_vertices, std::vector<double>* targets) {
+    targets->resize(normals.size());
+    for (size_t e = 0; e < normals.size() / 3; ++e) {
+      const double* n = &normals[3 * e];
+      const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      const double push = (e % 7 == 0 ? 0.0 : 0.01 * std::sin(double(e))) / level;
+      for (int k = 0; k < 3; ++k)
+        (*targets)[3 * e + k] = fine.positions[3 * (coarse_vertices + e) + k] + push * n[k] / len;
+    }
+  };
+  EncodeStats stats;
+  const std::vector<uint8_t> file = progressive_file(torus, 3, bumpy, 12, &stats);
+  DecodedFile decoded;
+  ASSERT_TRUE(decode(file.data(), file.size(), &decoded).ok());
+  ASSERT_EQ(stats.loop.levels.size(), 4u);
+  for (int j = 1; j <= 3; ++j) {
+    EXPECT_EQ(decoded.levels[j].zero_displacements, stats.loop.levels[j].zeros);
+    EXPECT_EQ(decoded.levels[j].step, stats.loop.levels[j].step);
+    EXPECT_EQ(decoded.levels[j].chunk_bytes, stats.loop.levels[j].bytes);
+    EXPECT_GT(decoded.levels[j].edge_points, decoded.levels[j].zero_displacements);
+  }
+  // Genus 1 survives: V - E + F = 0 at every level.
+  for (const LoopLevel& level : decoded.levels) {
+    LoopEdges e;
+    ASSERT_TRUE(build_loop_edges(level, &e).ok());
+    EXPECT_EQ(int64_t(level.vertex_count()) - e.edge_count() + level.face_count(), 0);
+  }
+}
+
+TEST(LoopLevels, StreamingShowsEachLevelWhenItsChunkLands) {
+  const std::vector<uint8_t> file = progressive_file(tools::make_octahedron(), 3, sphere_targets);
+  DecodedFile whole;
+  ASSERT_TRUE(decode(file.data(), file.size(), &whole).ok());
+  // Chunk ends, from the decoder's own chunk list.
+  std::vector<std::pair<uint64_t, int>> ends;  // offset after the chunk, level complete after it
+  int level = -1;
+  for (const ChunkInfo& c : whole.chunks) {
+    if (c.type == kChunkPositions) level = 0;
+    if (c.type == kChunkLevel) ++level;
+    ends.push_back({c.offset + 12 + c.length, level});
+  }
+  StreamDecoder stream;
+  size_t next = 0;
+  for (size_t i = 0; i < file.size(); ++i) {
+    ASSERT_TRUE(stream.feed(&file[i], 1).ok());
+    while (next < ends.size() && ends[next].first <= i + 1) ++next;
+    const int expected = next == 0 ? -1 : ends[next - 1].second;
+    ASSERT_EQ(stream.complete_level(), expected) << "after byte " << i;
+    if (expected >= 0) {
+      EXPECT_EQ(stream.level_count(), 3);
+      EXPECT_EQ(stream.file().levels[size_t(expected)].positions, whole.levels[size_t(expected)].positions);
+    }
+  }
+  EXPECT_TRUE(stream.finish().ok());
+  EXPECT_TRUE(stream.complete());
+}
+
+// --- invalid files (section 12.1) ---------------------------------------
+
+struct Chunk {
+  uint32_t type;
+  std::vector<uint8_t> payload;
+};
+
+std::vector<Chunk> split_chunks(const std::vector<uint8_t>& file) {
+  std::vector<Chunk> chunks;
+  for (size_t pos = 8; pos < file.size();) {
+    const uint32_t length = load_u32le(&file[pos + 4]);
+    chunks.push_back({load_u32be(&file[pos]), std::vector<uint8_t>(file.begin() + pos + 8, file.begin() + pos + 8 + length)});
+    pos += 12 + length;
+  }
+  return chunks;
+}
+
+std::vector<uint8_t> join_chunks(const std::vector<Chunk>& chunks) {
+  std::vector<uint8_t> out(kSignature, kSignature + 8);
+  for (const Chunk& c : chunks) {
+    const size_t start = out.size();
+    put_u32be(&out, c.type);
+    put_u32le(&out, uint32_t(c.payload.size()));
+    out.insert(out.end(), c.payload.begin(), c.payload.end());
+    put_u32le(&out, crc32(&out[start], out.size() - start));
+  }
+  return out;
+}
+
+Status decode_chunks(const std::vector<Chunk>& chunks) {
+  const std::vector<uint8_t> file = join_chunks(chunks);
+  DecodedFile decoded;
+  return decode(file.data(), file.size(), &decoded);
+}
+
+size_t find_chunk(const std::vector<Chunk>& chunks, uint32_t type, int nth = 0) {
+  for (size_t i = 0; i < chunks.size(); ++i)
+    if (chunks[i].type == type && nth-- == 0) return i;
+  ADD_FAILURE() << "no such chunk";
+  return 0;
+}
+
+class InvalidLevels : public ::testing::Test {
+ protected:
+  void SetUp() override { chunks = split_chunks(progressive_file(tools::make_octahedron(), 2, sphere_targets)); }
+  void expect(const std::vector<Chunk>& c, ErrorCode code, const char* words) {
+    const Status s = decode_chunks(c);
+    EXPECT_EQ(s.code(), code) << s.to_string();
+    EXPECT_NE(s.message().find(words), std::string::npos) << s.to_string();
+  }
+  std::vector<Chunk> chunks;
+};
+
+TEST_F(InvalidLevels, TheUntouchedFileDecodes) { EXPECT_TRUE(decode_chunks(chunks).ok()); }
+
+TEST_F(InvalidLevels, ALevelBeforeItsBase) {
+  std::vector<Chunk> c = chunks;
+  const size_t level = find_chunk(c, kChunkLevel), posn = find_chunk(c, kChunkPositions);
+  std::swap(c[level], c[posn]);
+  expect(c, ErrorCode::kChunkOrder, "LEVL before POSN");
+}
+
+TEST_F(InvalidLevels, LevelsOutOfOrderOrMissing) {
+  std::vector<Chunk> c = chunks;
+  std::swap(c[find_chunk(c, kChunkLevel)], c[find_chunk(c, kChunkLevel, 1)]);
+  expect(c, ErrorCode::kBadChunkPayload, "level field 2, expected 1");
+  c = chunks;
+  c.erase(c.begin() + std::ptrdiff_t(find_chunk(c, kChunkLevel, 1)));
+  expect(c, ErrorCode::kChunkOrder, "QEND after 1 of 2 levels");
+  c = chunks;
+  c.insert(c.begin() + std::ptrdiff_t(find_chunk(c, kChunkEnd)), c[find_chunk(c, kChunkLevel, 1)]);
+  expect(c, ErrorCode::kChunkOrder, "beyond the 2 levels");
+}
+
+TEST_F(InvalidLevels, LoopMisplacedRepeatedOrMalformed) {
+  std::vector<Chunk> c = chunks;
+  const size_t loop = find_chunk(c, kChunkLoop);
+  std::swap(c[loop], c[loop + 1]);  // after CONN
+  expect(c, ErrorCode::kChunkOrder, "LOOP after CONN");
+  c = chunks;
+  c.insert(c.begin() + std::ptrdiff_t(loop), c[loop]);
+  expect(c, ErrorCode::kChunkOrder, "a second LOOP");
+  c = chunks;
+  c.erase(c.begin() + std::ptrdiff_t(loop));
+  expect(c, ErrorCode::kChunkOrder, "LEVL without LOOP");
+  c = chunks;
+  c[loop].payload = {9, 0};
+  expect(c, ErrorCode::kBadChunkPayload, "level_count 9");
+  c[loop].payload = {2, 1};
+  expect(c, ErrorCode::kUnsupportedFeature, "scheme 1");
+  c[loop].payload = {2};
+  expect(c, ErrorCode::kBadChunkPayload, "not 2");
+  c = chunks;
+  c.insert(c.begin() + std::ptrdiff_t(find_chunk(c, kChunkLevel)), Chunk{kChunkOrder, {0}});
+  expect(c, ErrorCode::kChunkOrder, "oRDR in a progressive file");
+}
+
+TEST_F(InvalidLevels, WrongCountsStepsAndCodes) {
+  std::vector<Chunk> c = chunks;
+  Chunk& level = c[find_chunk(c, kChunkLevel)];
+  const std::vector<uint8_t> good = level.payload;
+  level.payload[2] = uint8_t(good[2] + 1);  // edge_count (12 fits one varint byte)
+  expect(c, ErrorCode::kBadChunkPayload, "edge_count 13 but level 0 has 12 edges");
+  level.payload = good;
+  level.payload[1] = 1;
+  expect(c, ErrorCode::kUnsupportedFeature, "displacement code 1");
+  for (double step : {0.0, -1.0, double(NAN), double(INFINITY)}) {
+    level.payload = good;
+    std::memcpy(&level.payload[3], &step, 8);
+    expect(c, ErrorCode::kBadChunkPayload, "step is not a finite number greater than zero");
+  }
+  level.payload.assign(good.begin(), good.begin() + 11);  // no stream at all
+  expect(c, ErrorCode::kLimitExceeded, "12 displacement codes cannot fit");
+  level.payload = good;
+  level.payload.pop_back();
+  const Status s = decode_chunks(c);
+  EXPECT_TRUE(s.code() == ErrorCode::kTruncated || s.code() == ErrorCode::kLimitExceeded) << s.to_string();
+  level.payload = good;
+  level.payload.push_back(0);
+  expect(c, ErrorCode::kBadChunkPayload, "left over");
+  // A 9-bit code of magnitude zero: flag 1, sign 0, 0000000 as the first code.
+  level.payload = good;
+  level.payload[11] = 0x80;
+  level.payload[12] = 0x00;
+  expect(c, ErrorCode::kBadSymbol, "magnitude 0");
+}
+
+TEST_F(InvalidLevels, BaseMeshesLevelsCannotRefine) {
+  // A quad base (the cube) in a file with LOOP.
+  EncodeOptions options;
+  FileConnectivity conn;
+  EncodeStats st;
+  ASSERT_TRUE(choose_connectivity(tools::make_cube(), options, &conn, &st).ok());
+  std::vector<Chunk> c = chunks;
+  c[find_chunk(c, kChunkConnectivity)].payload = conn.payload;
+  expect(c, ErrorCode::kBadChunkPayload, "has 4 corners, not 3");
+}
+
+}  // namespace
+}  // namespace qmc
