@@ -8,7 +8,10 @@
 #   topology.md      connectivity bits per vertex of qmc's structured coders
 #                    (auto, polygon coder forced) against Draco and against
 #                    qmc's indexed fallback on every corpus mesh, with the
-#                    topology the polygon coder records.
+#                    topology the polygon coder records;
+#   seed003.md       seed 003's tables 2 and 3 rerun with qmc's progressive
+#                    Loop levels, and their rate-distortion against Draco
+#                    8-14 bits, plotted in seed003_rd.svg.
 # RUNS (default 7) runs per measurement, LARGE_RUNS (default 3) for the
 # ~1M-quad sphere; medians are reported. Run on an otherwise idle machine.
 set -euo pipefail
@@ -63,3 +66,6 @@ write_result docs/results/quad_vs_draco.md "Quad meshes: qmc's quad coder agains
   build/bench/qmc_quad_bench --runs "$runs" --large-runs "$large_runs" --bits 12 --sphere-levels 7 "$corpus"/quad/*
 write_result docs/results/topology.md "Connectivity: qmc's structured coders against Draco and the indexed fallback" \
   build/bench/qmc_topology_bench --runs "$runs" --large-runs "$large_runs" --bits 12 "$corpus"/quad/* "$corpus"/tri/*
+write_result docs/results/seed003.md "Seed 003 (Loop progressive geometry compression) rerun with qmc's progressive levels" \
+  build/bench/qmc_seed003 --runs "$runs" --plot docs/results/seed003_rd.svg "$corpus"/tri/stanford-bunny.obj \
+  "$corpus"/tri/armadillo.obj "$corpus"/tri/fertility.off "$corpus"/tri/camelhead.off
