@@ -39,8 +39,10 @@ const char kHelp[] =
     "                      the input surface. The input must be a manifold,\n"
     "                      consistently oriented mesh; polygons are split into\n"
     "                      triangles first (and the split is reported)\n"
-    "  --levels K          levels of --progressive, 1..8 (default 4); the base\n"
-    "                      mesh has about 1/4^K of the input's triangles\n"
+    "  --levels K          levels of --progressive, 1..8 (default 3); the base\n"
+    "                      mesh has about 1/4^K of the input's triangles; keep\n"
+    "                      it at a few hundred vertices or more (K = 2..3 on\n"
+    "                      meshes of 10k-70k triangles)\n"
     "  --quiet             print nothing on success\n";
 
 struct EncodeArgs {
@@ -60,7 +62,7 @@ int parse(int argc, char** argv, EncodeArgs* args) {
   args->quiet = cl.has("--quiet");
   args->options.keep_order = cl.has("--keep-order");
   args->progressive = cl.has("--progressive");
-  if (args->progressive) args->options.progressive_levels = 4;
+  if (args->progressive) args->options.progressive_levels = 3;
   for (const auto& [name, value] : cl.options) {
     if (name == "--levels") {
       long levels = 0;
