@@ -6,13 +6,12 @@
 #include <cmath>
 #include <cstring>
 
-#include "bitio/byte_io.h"
-#include "bitio/crc32.h"
 #include "decoder/loop_level_decoder.h"
 #include "decoder/loop_subdivision.h"
 #include "encoder/encoder_internal.h"
 #include "encoder/loop_level_encoder.h"
 #include "analytic_loop_files.h"
+#include "chunk_list.h"
 #include "mesh_generators.h"
 #include "qmc/decoder.h"
 
@@ -192,7 +191,9 @@ TEST(LoopLevels, OctahedronToSphereConvergesLevelByLevel) {
       // the masks, and the mesh closes in on the sphere level by level.
       const double edge_error = max_radius_error(level, decoded.levels[j - 1].vertex_count());
       EXPECT_LT(edge_error, 0.01) << "level " << j;
-      if (j >= 2) EXPECT_LT(max_radius_error(level), max_radius_error(decoded.levels[j - 1])) << "level " << j;
+      if (j >= 2) {
+        EXPECT_LT(max_radius_error(level), max_radius_error(decoded.levels[j - 1])) << "level " << j;
+      }
     }
     // The final mesh is the finest level, in binary32.
     EXPECT_EQ(decoded.mesh.vertex_count(), decoded.levels.back().vertex_count());
@@ -264,44 +265,15 @@ TEST(LoopLevels, StreamingShowsEachLevelWhenItsChunkLands) {
 
 // --- invalid files (section 12.1) ---------------------------------------
 
-struct Chunk {
-  uint32_t type;
-  std::vector<uint8_t> payload;
-};
-
-std::vector<Chunk> split_chunks(const std::vector<uint8_t>& file) {
-  std::vector<Chunk> chunks;
-  for (size_t pos = 8; pos < file.size();) {
-    const uint32_t length = load_u32le(&file[pos + 4]);
-    chunks.push_back({load_u32be(&file[pos]), std::vector<uint8_t>(file.begin() + pos + 8, file.begin() + pos + 8 + length)});
-    pos += 12 + length;
-  }
-  return chunks;
-}
-
-std::vector<uint8_t> join_chunks(const std::vector<Chunk>& chunks) {
-  std::vector<uint8_t> out(kSignature, kSignature + 8);
-  for (const Chunk& c : chunks) {
-    const size_t start = out.size();
-    put_u32be(&out, c.type);
-    put_u32le(&out, uint32_t(c.payload.size()));
-    out.insert(out.end(), c.payload.begin(), c.payload.end());
-    put_u32le(&out, crc32(&out[start], out.size() - start));
-  }
-  return out;
-}
+using tools::Chunk;
+using tools::find_chunk;
+using tools::join_chunks;
+using tools::split_chunks;
 
 Status decode_chunks(const std::vector<Chunk>& chunks) {
   const std::vector<uint8_t> file = join_chunks(chunks);
   DecodedFile decoded;
   return decode(file.data(), file.size(), &decoded);
-}
-
-size_t find_chunk(const std::vector<Chunk>& chunks, uint32_t type, int nth = 0) {
-  for (size_t i = 0; i < chunks.size(); ++i)
-    if (chunks[i].type == type && nth-- == 0) return i;
-  ADD_FAILURE() << "no such chunk";
-  return 0;
 }
 
 class InvalidLevels : public ::testing::Test {

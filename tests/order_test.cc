@@ -9,41 +9,23 @@
 #include <vector>
 
 #include "bitio/bit_writer.h"
-#include "bitio/byte_io.h"
 #include "bitio/huffman.h"
 #include "bitio/magnitude_code.h"
 #include "decoder/order_decoder.h"
-#include "encoder/chunk_writer.h"
 #include "mesh_generators.h"
 #include "qmc/decoder.h"
 #include "qmc/encoder.h"
+#include "bitio/byte_io.h"
+#include "chunk_list.h"
 #include "roundtrip_check.h"
 #include "splitmix64.h"
 
 namespace qmc {
 namespace {
 
-struct Chunk {
-  uint32_t type;
-  std::vector<uint8_t> payload;
-};
-
-std::vector<Chunk> split(const std::vector<uint8_t>& file) {
-  std::vector<Chunk> out;
-  for (size_t pos = 8; pos + 12 <= file.size();) {
-    const uint32_t length = load_u32le(&file[pos + 4]);
-    out.push_back({load_u32be(&file[pos]), {file.begin() + long(pos) + 8, file.begin() + long(pos + 8 + length)}});
-    pos += 12 + length;
-  }
-  return out;
-}
-
-std::vector<uint8_t> join(const std::vector<Chunk>& chunks) {
-  std::vector<uint8_t> out;
-  write_signature(&out);
-  for (const Chunk& c : chunks) write_chunk(&out, c.type, c.payload);
-  return out;
-}
+using tools::Chunk;
+using tools::join_chunks;
+using tools::split_chunks;
 
 std::vector<uint8_t> encode_mesh(const Mesh& mesh, bool keep_order,
                                  ConnectivityChoice connectivity = ConnectivityChoice::kAuto,
@@ -58,7 +40,7 @@ std::vector<uint8_t> encode_mesh(const Mesh& mesh, bool keep_order,
 }
 
 bool has_order_chunk(const std::vector<uint8_t>& file) {
-  for (const Chunk& c : split(file))
+  for (const Chunk& c : split_chunks(file))
     if (c.type == kChunkOrder) return true;
   return false;
 }
@@ -150,7 +132,7 @@ TEST(Order, IndexedCoderNeedsOnlyTheVertexMap) {
 TEST(Order, ChunkSitsAfterPosnAndIsCountedInStats) {
   EncodeStats stats;
   const std::vector<uint8_t> file = encode_mesh(tools::make_quad_sphere(3), true, ConnectivityChoice::kQuad, &stats);
-  const std::vector<Chunk> chunks = split(file);
+  const std::vector<Chunk> chunks = split_chunks(file);
   ASSERT_GE(chunks.size(), 5u);
   EXPECT_EQ(chunks[chunks.size() - 3].type, kChunkPositions);
   EXPECT_EQ(chunks[chunks.size() - 2].type, kChunkOrder);
@@ -172,10 +154,10 @@ TEST(Order, DecoderWithoutOrderGetsTheCoderOrder) {
   const Mesh sphere = tools::make_scrambled(tools::make_quad_sphere(4), 11);
   EncodeStats stats;
   const std::vector<uint8_t> plain = encode_mesh(sphere, false, ConnectivityChoice::kAuto, &stats);
-  std::vector<Chunk> chunks = split(encode_mesh(sphere, true));
+  std::vector<Chunk> chunks = split_chunks(encode_mesh(sphere, true));
   chunks.erase(std::remove_if(chunks.begin(), chunks.end(), [](const Chunk& c) { return c.type == kChunkOrder; }),
                chunks.end());
-  EXPECT_EQ(join(chunks), plain);
+  EXPECT_EQ(join_chunks(chunks), plain);
   DecodedFile d;
   ASSERT_TRUE(decode(plain.data(), plain.size(), &d).ok());
   EXPECT_FALSE(d.order_restored);
@@ -184,11 +166,11 @@ TEST(Order, DecoderWithoutOrderGetsTheCoderOrder) {
       tools::check_round_trip(sphere, d, tools::Correspondence{stats.file_vertex, stats.face_source});
   EXPECT_TRUE(r.ok()) << r.face_mismatch;
   // Renamed to an unknown ancillary type, the chunk is skipped: coder order again.
-  chunks = split(encode_mesh(sphere, true));
+  chunks = split_chunks(encode_mesh(sphere, true));
   for (Chunk& c : chunks)
     if (c.type == kChunkOrder) c.type = chunk_type('o', 'R', 'D', 'X');
   DecodedFile skipped;
-  const std::vector<uint8_t> renamed = join(chunks);
+  const std::vector<uint8_t> renamed = join_chunks(chunks);
   ASSERT_TRUE(decode(renamed.data(), renamed.size(), &skipped).ok());
   EXPECT_EQ(canonical_output(skipped), canonical_output(d));
 }
@@ -196,7 +178,7 @@ TEST(Order, DecoderWithoutOrderGetsTheCoderOrder) {
 TEST(Order, StreamingShowsCoderOrderUntilTheChunkArrives) {
   const Mesh sphere = tools::make_quad_sphere(3);
   const std::vector<uint8_t> file = encode_mesh(sphere, true, ConnectivityChoice::kQuad);
-  const std::vector<Chunk> chunks = split(file);
+  const std::vector<Chunk> chunks = split_chunks(file);
   size_t before_order = 8;
   for (const Chunk& c : chunks) {
     if (c.type == kChunkOrder) break;
@@ -241,12 +223,12 @@ class InvalidOrder : public ::testing::Test {
  protected:
   void SetUp() override {
     mesh_ = tools::make_cube();  // 8 vertices, 6 quads, vertices in first-reference order
-    chunks_ = split(encode_mesh(mesh_, false, ConnectivityChoice::kIndexed));
+    chunks_ = split_chunks(encode_mesh(mesh_, false, ConnectivityChoice::kIndexed));
   }
   ErrorCode decode_with(const std::vector<uint8_t>& payload, size_t position = 3) {
     std::vector<Chunk> c = chunks_;  // QHDR CONN POSN QEND
     c.insert(c.begin() + long(position), Chunk{kChunkOrder, payload});
-    const std::vector<uint8_t> file = join(c);
+    const std::vector<uint8_t> file = join_chunks(c);
     DecodedFile d;
     return decode(file.data(), file.size(), &d).code();
   }
@@ -333,11 +315,11 @@ TEST_F(InvalidOrder, FlagsAndEmptyMaps) {
   // A flag set for zero elements: a mesh of points only.
   Mesh points;
   points.positions = {0, 0, 0, 1, 1, 1};
-  std::vector<Chunk> c = split(encode_mesh(points, false, ConnectivityChoice::kIndexed));
+  std::vector<Chunk> c = split_chunks(encode_mesh(points, false, ConnectivityChoice::kIndexed));
   c.insert(c.end() - 1, Chunk{kChunkOrder, with_stream(header(2, 0, kOrderFaces), [](BitWriter* b) {
                                 write_code_lengths(b, {1});
                               })});
-  const std::vector<uint8_t> file = join(c);
+  const std::vector<uint8_t> file = join_chunks(c);
   DecodedFile d;
   EXPECT_EQ(decode(file.data(), file.size(), &d).code(), ErrorCode::kBadChunkPayload);
 }
@@ -410,7 +392,7 @@ TEST_F(InvalidOrder, PlacementRules) {
   std::vector<Chunk> c = chunks_;
   c.insert(c.begin() + 3, Chunk{kChunkOrder, good});
   c.insert(c.begin() + 3, Chunk{kChunkOrder, good});
-  const std::vector<uint8_t> twice = join(c);
+  const std::vector<uint8_t> twice = join_chunks(c);
   DecodedFile d;
   EXPECT_EQ(decode(twice.data(), twice.size(), &d).code(), ErrorCode::kChunkOrder);
 }
@@ -419,7 +401,7 @@ TEST_F(InvalidOrder, InvalidChunkIsAnErrorNotIgnored) {
   // Even a broken ancillary oRDR rejects the whole file (spec 4.5).
   std::vector<Chunk> c = chunks_;
   c.insert(c.begin() + 3, Chunk{kChunkOrder, faces_payload({0, 0, 0, 0, 0, 0})});
-  const std::vector<uint8_t> file = join(c);
+  const std::vector<uint8_t> file = join_chunks(c);
   DecodedFile d;
   EXPECT_FALSE(decode(file.data(), file.size(), &d).ok());
   StreamDecoder stream;

@@ -20,8 +20,8 @@
 #include "bitio/magnitude_code.h"
 #include "bitio/polygon_symbols.h"
 #include "bitio/quad_codings.h"
-#include "encoder/chunk_writer.h"
 #include "analytic_loop_files.h"
+#include "chunk_list.h"
 #include "mesh_generators.h"
 #include "quad_disk_generator.h"
 #include "decoder/spirale_reversi_decoder.h"
@@ -35,36 +35,11 @@ namespace {
 
 using qmc::Mesh;
 
-struct Chunk {
-  uint32_t type;
-  std::vector<uint8_t> payload;
-};
-using Chunks = std::vector<Chunk>;
-
-// Splits one of our own (valid) files into chunks.
-Chunks split(const std::vector<uint8_t>& file) {
-  Chunks out;
-  for (size_t pos = 8; pos + 12 <= file.size();) {
-    const uint32_t length = qmc::load_u32le(&file[pos + 4]);
-    out.push_back({qmc::load_u32be(&file[pos]), {file.begin() + long(pos) + 8, file.begin() + long(pos + 8 + length)}});
-    pos += 12 + length;
-  }
-  return out;
-}
-
-std::vector<uint8_t> join(const Chunks& chunks) {
-  std::vector<uint8_t> out;
-  qmc::write_signature(&out);
-  for (const Chunk& c : chunks) qmc::write_chunk(&out, c.type, c.payload);
-  return out;
-}
-
-size_t find(const Chunks& chunks, uint32_t type) {
-  for (size_t i = 0; i < chunks.size(); ++i)
-    if (chunks[i].type == type) return i;
-  std::fprintf(stderr, "qmc-make-vectors: chunk missing\n");
-  std::exit(3);
-}
+using qmc::tools::Chunk;
+using qmc::tools::Chunks;
+using qmc::tools::find_chunk;
+using qmc::tools::join_chunks;
+using qmc::tools::split_chunks;
 
 // Vectors of format 1.0 use the indexed coding, whatever the encoder would
 // choose by itself today: they are frozen (see the top of this file).
@@ -226,13 +201,13 @@ void write_valid(VectorWriter* w) {
   negative_zero.corners = {0, 1, 2, 3};
   w->valid("valid_negative_zero_bounds", encode(negative_zero, 12), &negative_zero);
 
-  Chunks c = split(encode(cube, 12));
+  Chunks c = split_chunks(encode(cube, 12));
   c.insert(c.begin() + 1, Chunk{qmc::chunk_type('e', 'x', 'T', 'n'), {1, 2, 3, 4, 5}});
   c.insert(c.end() - 1, Chunk{qmc::chunk_type('z', 'z', 'z', 'z'), {}});
-  w->valid("valid_unknown_ancillary_chunks", join(c), &cube);
-  c = split(encode(cube, 12));
+  w->valid("valid_unknown_ancillary_chunks", join_chunks(c), &cube);
+  c = split_chunks(encode(cube, 12));
   c[0].payload[1] = 7;
-  w->valid("valid_future_minor_version", join(c), &cube);
+  w->valid("valid_future_minor_version", join_chunks(c), &cube);
 }
 
 void write_container_errors(VectorWriter* w) {
@@ -251,50 +226,50 @@ void write_container_errors(VectorWriter* w) {
   b.push_back(0);
   w->invalid("invalid_trailing_data", b, ErrorCode::kTrailingData);
 
-  Chunks c = split(cube);
+  Chunks c = split_chunks(cube);
   c[1].type = qmc::chunk_type('C', 'O', '1', 'N');
-  w->invalid("invalid_chunk_type_not_letters", join(c), ErrorCode::kBadChunkType);
+  w->invalid("invalid_chunk_type_not_letters", join_chunks(c), ErrorCode::kBadChunkType);
   b = cube;
   b[8 + 4 + 3] = 0x80;  // QHDR length = 2^31 + 2
   w->invalid("invalid_chunk_length", b, ErrorCode::kBadChunkLength);
-  c = split(cube);
+  c = split_chunks(cube);
   c.insert(c.begin() + 1, Chunk{qmc::chunk_type('Z', 'Z', 'Z', 'Z'), {}});
-  w->invalid("invalid_unknown_critical_chunk", join(c), ErrorCode::kUnknownCriticalChunk);
-  c = split(cube);
+  w->invalid("invalid_unknown_critical_chunk", join_chunks(c), ErrorCode::kUnknownCriticalChunk);
+  c = split_chunks(cube);
   c[0].payload[0] = 2;
-  w->invalid("invalid_major_version", join(c), ErrorCode::kUnsupportedVersion);
-  c = split(cube);
+  w->invalid("invalid_major_version", join_chunks(c), ErrorCode::kUnsupportedVersion);
+  c = split_chunks(cube);
   c[0].payload.push_back(0);
-  w->invalid("invalid_qhdr_length", join(c), ErrorCode::kBadChunkPayload);
-  c = split(cube);
+  w->invalid("invalid_qhdr_length", join_chunks(c), ErrorCode::kBadChunkPayload);
+  c = split_chunks(cube);
   c.back().payload.push_back(0);
-  w->invalid("invalid_qend_not_empty", join(c), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_qend_not_empty", join_chunks(c), ErrorCode::kBadChunkPayload);
 }
 
 void write_order_errors(VectorWriter* w) {
   using qmc::ErrorCode;
-  const Chunks base = split(encode(qmc::tools::make_cube(), 12));  // QHDR CONN POSN QEND
-  w->invalid("invalid_order_conn_first", join({base[1], base[0], base[2], base[3]}), ErrorCode::kChunkOrder);
-  w->invalid("invalid_order_posn_before_conn", join({base[0], base[2], base[1], base[3]}), ErrorCode::kChunkOrder);
-  w->invalid("invalid_order_qend_early", join({base[0], base[1], base[3]}), ErrorCode::kChunkOrder);
-  w->invalid("invalid_order_second_conn", join({base[0], base[1], base[1], base[2], base[3]}), ErrorCode::kChunkOrder);
+  const Chunks base = split_chunks(encode(qmc::tools::make_cube(), 12));  // QHDR CONN POSN QEND
+  w->invalid("invalid_order_conn_first", join_chunks({base[1], base[0], base[2], base[3]}), ErrorCode::kChunkOrder);
+  w->invalid("invalid_order_posn_before_conn", join_chunks({base[0], base[2], base[1], base[3]}), ErrorCode::kChunkOrder);
+  w->invalid("invalid_order_qend_early", join_chunks({base[0], base[1], base[3]}), ErrorCode::kChunkOrder);
+  w->invalid("invalid_order_second_conn", join_chunks({base[0], base[1], base[1], base[2], base[3]}), ErrorCode::kChunkOrder);
   // Spec 3.6: order rules come before unknown types and before payload checks.
   w->invalid("invalid_order_unknown_critical_first",
-             join({{qmc::chunk_type('Z', 'Z', 'Z', 'Z'), {}}, base[0], base[1], base[2], base[3]}), ErrorCode::kChunkOrder);
-  w->invalid("invalid_order_qend_early_not_empty", join({base[0], base[1], {qmc::kChunkEnd, {0}}}),
+             join_chunks({{qmc::chunk_type('Z', 'Z', 'Z', 'Z'), {}}, base[0], base[1], base[2], base[3]}), ErrorCode::kChunkOrder);
+  w->invalid("invalid_order_qend_early_not_empty", join_chunks({base[0], base[1], {qmc::kChunkEnd, {0}}}),
              ErrorCode::kChunkOrder);
-  w->invalid("invalid_order_second_qhdr", join({base[0], base[0], base[1], base[2], base[3]}), ErrorCode::kChunkOrder);
+  w->invalid("invalid_order_second_qhdr", join_chunks({base[0], base[0], base[1], base[2], base[3]}), ErrorCode::kChunkOrder);
 }
 
 void write_connectivity_errors(VectorWriter* w) {
   using qmc::ErrorCode;
   const Mesh tetra = qmc::tools::make_tetrahedron();
-  const Chunks base = split(encode(tetra, 12));
-  const size_t conn = find(base, qmc::kChunkConnectivity);
+  const Chunks base = split_chunks(encode(tetra, 12));
+  const size_t conn = find_chunk(base, qmc::kChunkConnectivity);
   auto with_conn = [&](std::vector<uint8_t> payload) {
     Chunks c = base;
     c[conn].payload = std::move(payload);
-    return join(c);
+    return join_chunks(c);
   };
   std::vector<uint8_t> p = base[conn].payload;
   p[0] = 9;
@@ -369,12 +344,12 @@ void write_connectivity_errors(VectorWriter* w) {
 
 void write_position_errors(VectorWriter* w) {
   using qmc::ErrorCode;
-  const Chunks base = split(encode(qmc::tools::make_tetrahedron(), 12));
-  const size_t posn = find(base, qmc::kChunkPositions);
+  const Chunks base = split_chunks(encode(qmc::tools::make_tetrahedron(), 12));
+  const size_t posn = find_chunk(base, qmc::kChunkPositions);
   auto with_posn = [&](std::vector<uint8_t> payload) {
     Chunks c = base;
     c[posn].payload = std::move(payload);
-    return join(c);
+    return join_chunks(c);
   };
   std::vector<uint8_t> p = base[posn].payload;
   p[0] = 5;
@@ -413,15 +388,15 @@ void write_position_errors(VectorWriter* w) {
       b->write_bits(0, 2);              // y, z class 0
     });
   };
-  w->invalid("invalid_posn_negative_value", join({base[0], {qmc::kChunkConnectivity, conn_v1},
+  w->invalid("invalid_posn_negative_value", join_chunks({base[0], {qmc::kChunkConnectivity, conn_v1},
                                                   {qmc::kChunkPositions, one_vertex(hi, true)}, base.back()}),
              ErrorCode::kBadSymbol);
-  w->invalid("invalid_posn_flat_axis_nonzero", join({base[0], {qmc::kChunkConnectivity, conn_v1},
+  w->invalid("invalid_posn_flat_axis_nonzero", join_chunks({base[0], {qmc::kChunkConnectivity, conn_v1},
                                                      {qmc::kChunkPositions, one_vertex(flat_hi, false)}, base.back()}),
              ErrorCode::kBadSymbol);
   const std::vector<uint8_t> conn_huge = {0, 0xFF, 0xFF, 0xFF, 0xFF, 0x0F, 0};
   w->invalid("invalid_posn_vertex_count_unjustified",
-             join({base[0], {qmc::kChunkConnectivity, conn_huge},
+             join_chunks({base[0], {qmc::kChunkConnectivity, conn_huge},
                    {qmc::kChunkPositions, posn_payload(0xFFFFFFFFu, 12, lo, hi, [](qmc::BitWriter* b) {
                       b->write_bits(0xABCD, 16);
                     })}, base.back()}),
@@ -531,12 +506,12 @@ std::vector<uint8_t> quad_conn(uint64_t vertices, uint64_t faces, uint8_t flags,
 
 void write_quad_errors(VectorWriter* w) {
   using qmc::ErrorCode;
-  const Chunks base = split(encode_quads(qmc::tools::make_cube()));
-  const size_t conn = find(base, qmc::kChunkConnectivity);
+  const Chunks base = split_chunks(encode_quads(qmc::tools::make_cube()));
+  const size_t conn = find_chunk(base, qmc::kChunkConnectivity);
   auto with_conn = [&](std::vector<uint8_t> payload) {
     Chunks c = base;
     c[conn].payload = std::move(payload);
-    return join(c);
+    return join_chunks(c);
   };
   // Types are listed in stream (encoder) order; the decoder applies them last to first.
   w->invalid("invalid_quad_no_boundary_for_q5", with_conn(quad_conn(8, 2, 0, 0, {1, 5})), ErrorCode::kBadSymbol);
@@ -642,12 +617,12 @@ void pillow(qmc::BitWriter* b, int first_degree_minus_3 = 1, int type = 1,
 
 void write_polygon_errors(VectorWriter* w) {
   using qmc::ErrorCode;
-  const Chunks base = split(encode_polygons(qmc::tools::make_cube()));
-  const size_t conn = find(base, qmc::kChunkConnectivity);
+  const Chunks base = split_chunks(encode_polygons(qmc::tools::make_cube()));
+  const size_t conn = find_chunk(base, qmc::kChunkConnectivity);
   auto with_conn = [&](std::vector<uint8_t> payload) {
     Chunks c = base;
     c[conn].payload = std::move(payload);
-    return join(c);
+    return join_chunks(c);
   };
   auto ok = [](qmc::BitWriter* b) { pillow(b); };
   // The pillow itself decodes (vertex_count 8: four of the cube's vertices are used by no face).
@@ -835,16 +810,16 @@ void write_input_order_vectors(VectorWriter* w) {
   const Mesh soup = make_random_soup(3, soup_options);  // indexed: the vertex map only
   w->valid("valid_ordr_indexed_soup", encode_keeping_order(soup, qmc::ConnectivityChoice::kIndexed), &soup);
   const Mesh tetra = make_tetrahedron();  // in first-reference order already: flags 0 is the identity
-  Chunks c = split(encode(tetra, 12));
+  Chunks c = split_chunks(encode(tetra, 12));
   c.insert(c.end() - 1, Chunk{qmc::kChunkOrder, order_header(4, 4, 0)});
-  w->valid("valid_ordr_flags_zero", join(c), &tetra);
+  w->valid("valid_ordr_flags_zero", join_chunks(c), &tetra);
 
   // Invalid oRDR chunks in the quad-coded cube (8 vertices, 6 quads).
-  const Chunks base = split(encode_quads(make_cube()));  // QHDR CONN POSN QEND
+  const Chunks base = split_chunks(encode_quads(make_cube()));  // QHDR CONN POSN QEND
   auto with_order = [&](const std::vector<uint8_t>& payload) {
     Chunks chunks = base;
     chunks.insert(chunks.end() - 1, Chunk{qmc::kChunkOrder, payload});
-    return join(chunks);
+    return join_chunks(chunks);
   };
   const uint8_t kFaces = 1, kVertices = 2, kRotations = 4;
   const std::vector<uint8_t> faces_reversed =
@@ -877,20 +852,20 @@ void write_input_order_vectors(VectorWriter* w) {
              ErrorCode::kTruncated);
   Chunks early = base;
   early.insert(early.begin() + 2, Chunk{qmc::kChunkOrder, faces_reversed});  // before POSN
-  w->invalid("invalid_ordr_before_posn", join(early), ErrorCode::kChunkOrder);
+  w->invalid("invalid_ordr_before_posn", join_chunks(early), ErrorCode::kChunkOrder);
   Chunks twice = base;
   twice.insert(twice.end() - 1, Chunk{qmc::kChunkOrder, faces_reversed});
   twice.insert(twice.end() - 1, Chunk{qmc::kChunkOrder, faces_reversed});
-  w->invalid("invalid_ordr_twice", join(twice), ErrorCode::kChunkOrder);
+  w->invalid("invalid_ordr_twice", join_chunks(twice), ErrorCode::kChunkOrder);
 }
 
 // Added after the first polygon vectors: a seam that names a real face,
 // which the earlier invalid_polygon_seam_face_not_virtual never reaches (its
 // "2 S > H" check comes first). Two pillows; faces 0 and 2 are virtual.
 void write_polygon_seam_vectors(VectorWriter* w) {
-  const Chunks base = split(encode_polygons(qmc::tools::make_cube()));
+  const Chunks base = split_chunks(encode_polygons(qmc::tools::make_cube()));
   Chunks c = base;
-  c[find(base, qmc::kChunkConnectivity)].payload = polygon_conn(8, 2, 0, 0, [](qmc::BitWriter* b) {
+  c[find_chunk(base, qmc::kChunkConnectivity)].payload = polygon_conn(8, 2, 0, 0, [](qmc::BitWriter* b) {
     b->write_exp_golomb(2);  // C
     b->write_exp_golomb(0);
     b->write_exp_golomb(0);
@@ -904,7 +879,7 @@ void write_polygon_seam_vectors(VectorWriter* w) {
     b->write_exp_golomb(1);  // S: seam (0, 1, 0), face 1 is real
     for (int i = 0; i < 5; ++i) b->write_exp_golomb(0);
   });
-  w->invalid("invalid_polygon_seam_names_real_face", join(c), qmc::ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_seam_names_real_face", join_chunks(c), qmc::ErrorCode::kBadSymbol);
 }
 
 // Section 12: progressive files aiming at analytic surfaces, then the ways a
@@ -916,13 +891,6 @@ std::vector<uint8_t> loop_file(const Mesh& base, int levels, const qmc::LevelTar
     std::exit(3);
   }
   return out;
-}
-
-size_t find_nth(const Chunks& chunks, uint32_t type, int nth) {
-  for (size_t i = 0; i < chunks.size(); ++i)
-    if (chunks[i].type == type && nth-- == 0) return i;
-  std::fprintf(stderr, "qmc-make-vectors: chunk missing\n");
-  std::exit(3);
 }
 
 void write_loop_vectors(VectorWriter* w) {
@@ -938,42 +906,42 @@ void write_loop_vectors(VectorWriter* w) {
            loop_file(qmc::tools::triangulated(qmc::tools::make_grid(4, 3)), 3, qmc::tools::height_field_targets()),
            nullptr);
 
-  const Chunks base = split(loop_file(octahedron, 2, qmc::tools::unit_sphere_targets()));
-  const size_t loop = find(base, qmc::kChunkLoop), conn = find(base, qmc::kChunkConnectivity),
-               posn = find(base, qmc::kChunkPositions), first = find_nth(base, qmc::kChunkLevel, 0),
-               second = find_nth(base, qmc::kChunkLevel, 1);
+  const Chunks base = split_chunks(loop_file(octahedron, 2, qmc::tools::unit_sphere_targets()));
+  const size_t loop = find_chunk(base, qmc::kChunkLoop), conn = find_chunk(base, qmc::kChunkConnectivity),
+               posn = find_chunk(base, qmc::kChunkPositions), first = find_chunk(base, qmc::kChunkLevel, 0),
+               second = find_chunk(base, qmc::kChunkLevel, 1);
   Chunks c = base;
   std::swap(c[posn], c[first]);
-  w->invalid("invalid_loop_level_before_base", join(c), ErrorCode::kChunkOrder);
+  w->invalid("invalid_loop_level_before_base", join_chunks(c), ErrorCode::kChunkOrder);
   c = base;
   c.erase(c.begin() + long(second));
-  w->invalid("invalid_loop_level_missing", join(c), ErrorCode::kChunkOrder);
+  w->invalid("invalid_loop_level_missing", join_chunks(c), ErrorCode::kChunkOrder);
   c = base;
   c.insert(c.begin() + long(second) + 1, c[second]);
-  w->invalid("invalid_loop_level_beyond_count", join(c), ErrorCode::kChunkOrder);
+  w->invalid("invalid_loop_level_beyond_count", join_chunks(c), ErrorCode::kChunkOrder);
   c = base;
   std::swap(c[first], c[second]);
-  w->invalid("invalid_loop_levels_swapped", join(c), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_loop_levels_swapped", join_chunks(c), ErrorCode::kBadChunkPayload);
   c = base;
   std::swap(c[loop], c[conn]);
-  w->invalid("invalid_loop_after_conn", join(c), ErrorCode::kChunkOrder);
+  w->invalid("invalid_loop_after_conn", join_chunks(c), ErrorCode::kChunkOrder);
   c = base;
   c.erase(c.begin() + long(loop));
-  w->invalid("invalid_loop_level_without_loop", join(c), ErrorCode::kChunkOrder);
+  w->invalid("invalid_loop_level_without_loop", join_chunks(c), ErrorCode::kChunkOrder);
   c = base;
   c[loop].payload = {0, 0};
-  w->invalid("invalid_loop_zero_levels", join(c), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_loop_zero_levels", join_chunks(c), ErrorCode::kBadChunkPayload);
   c[loop].payload = {2, 1};
-  w->invalid("invalid_loop_unknown_scheme", join(c), ErrorCode::kUnsupportedFeature);
+  w->invalid("invalid_loop_unknown_scheme", join_chunks(c), ErrorCode::kUnsupportedFeature);
   c = base;
   c[first].payload[2] = 13;  // the octahedron has 12 edges
-  w->invalid("invalid_loop_wrong_edge_count", join(c), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_loop_wrong_edge_count", join_chunks(c), ErrorCode::kBadChunkPayload);
   c = base;
   c[first].payload[1] = 1;
-  w->invalid("invalid_loop_unknown_code", join(c), ErrorCode::kUnsupportedFeature);
+  w->invalid("invalid_loop_unknown_code", join_chunks(c), ErrorCode::kUnsupportedFeature);
   c = base;
   for (int i = 0; i < 8; ++i) c[first].payload[3 + i] = i == 7 ? 0x7F : i == 6 ? 0xF8 : 0;  // NaN
-  w->invalid("invalid_loop_step_nan", join(c), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_loop_step_nan", join_chunks(c), ErrorCode::kBadChunkPayload);
   c = base;
   // The largest binary64 step, every edge point pushed by -127 steps of it.
   for (int i = 0; i < 8; ++i) c[first].payload[3 + i] = i == 7 ? 0x7F : i == 6 ? 0xEF : 0xFF;
@@ -984,10 +952,10 @@ void write_loop_vectors(VectorWriter* w) {
     c[first].payload.resize(11);
     c[first].payload.insert(c[first].payload.end(), stream.begin(), stream.end());
   }
-  w->invalid("invalid_loop_positions_overflow", join(c), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_loop_positions_overflow", join_chunks(c), ErrorCode::kBadChunkPayload);
   c = base;
   c[second].payload.resize(c[second].payload.size() - 2);
-  w->invalid("invalid_loop_codes_truncated", join(c), ErrorCode::kTruncated);
+  w->invalid("invalid_loop_codes_truncated", join_chunks(c), ErrorCode::kTruncated);
   c = base;
   {
     qmc::BitWriter b;
@@ -997,15 +965,15 @@ void write_loop_vectors(VectorWriter* w) {
     c[first].payload.resize(11);
     c[first].payload.insert(c[first].payload.end(), stream.begin(), stream.end());
   }
-  w->invalid("invalid_loop_zero_magnitude", join(c), ErrorCode::kBadSymbol);
+  w->invalid("invalid_loop_zero_magnitude", join_chunks(c), ErrorCode::kBadSymbol);
   c = base;
   c.insert(c.begin() + long(first), Chunk{qmc::kChunkOrder, {0}});
-  w->invalid("invalid_loop_with_ordr", join(c), ErrorCode::kChunkOrder);
+  w->invalid("invalid_loop_with_ordr", join_chunks(c), ErrorCode::kChunkOrder);
   // Bases the levels cannot refine: quads, and two tetrahedra sharing a vertex.
   c = base;
-  c[conn].payload = split(encode_polygons(qmc::tools::make_cube()))[1].payload;
-  c[posn].payload = split(encode_polygons(qmc::tools::make_cube()))[2].payload;
-  w->invalid("invalid_loop_quad_base", join(c), ErrorCode::kBadChunkPayload);
+  c[conn].payload = split_chunks(encode_polygons(qmc::tools::make_cube()))[1].payload;
+  c[posn].payload = split_chunks(encode_polygons(qmc::tools::make_cube()))[2].payload;
+  w->invalid("invalid_loop_quad_base", join_chunks(c), ErrorCode::kBadChunkPayload);
   Mesh pinched = qmc::tools::make_tetrahedron();
   const Mesh second_tetrahedron = qmc::tools::make_tetrahedron();
   for (size_t i = 3; i < second_tetrahedron.positions.size(); ++i)
@@ -1017,11 +985,11 @@ void write_loop_vectors(VectorWriter* w) {
       pinched.corners.push_back(v == 0 ? 0 : v + 3);
     }
   }
-  const Chunks indexed = split(encode(pinched, 12));
+  const Chunks indexed = split_chunks(encode(pinched, 12));
   c = base;
-  c[conn].payload = indexed[find(indexed, qmc::kChunkConnectivity)].payload;
-  c[posn].payload = indexed[find(indexed, qmc::kChunkPositions)].payload;
-  w->invalid("invalid_loop_pinched_base", join(c), ErrorCode::kBadChunkPayload);
+  c[conn].payload = indexed[find_chunk(indexed, qmc::kChunkConnectivity)].payload;
+  c[posn].payload = indexed[find_chunk(indexed, qmc::kChunkPositions)].payload;
+  w->invalid("invalid_loop_pinched_base", join_chunks(c), ErrorCode::kBadChunkPayload);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 
 #include "bitio/bit_reader.h"
 #include "bitio/byte_io.h"
+#include "decoder/position_decoder.h"
 
 namespace qmc {
 namespace {
@@ -45,10 +46,7 @@ Status loop_base_connectivity(const Mesh& mesh, uint32_t vertex_count, LoopMesh*
 
 void loop_base_positions(const QuantizationInfo& info, const std::vector<uint32_t>& quantized, LoopMesh* base) {
   double lo[3], step[3];
-  for (int a = 0; a < 3; ++a) {
-    lo[a] = double(info.min[a]);
-    step[a] = (double(info.max[a]) - lo[a]) / double((uint64_t(1) << info.bits) - 1);
-  }
+  dequantization_steps(info, lo, step);
   base->positions.resize(quantized.size());
   for (size_t i = 0; i < quantized.size(); ++i) base->positions[i] = lo[i % 3] + double(quantized[i]) * step[i % 3];
 }

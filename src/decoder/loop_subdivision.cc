@@ -119,7 +119,7 @@ Status check_single_fans(const LoopMesh& mesh, const LoopEdges& e) {
 
 }  // namespace
 
-Status build_loop_edges(const LoopMesh& mesh, LoopEdges* edges) {
+Status number_loop_edges(const LoopMesh& mesh, LoopEdges* edges) {
   *edges = LoopEdges{};
   const uint32_t vertices = mesh.vertex_count();
   if (mesh.face_count() == 0) return bad_level("the mesh has no faces");
@@ -133,7 +133,11 @@ Status build_loop_edges(const LoopMesh& mesh, LoopEdges* edges) {
       return bad_level("face " + std::to_string(f) + " repeats a vertex");
   }
   if (Status s = number_edges(mesh, edges); !s.ok()) return s;
-  if (Status s = collect_neighbours(vertices, edges); !s.ok()) return s;
+  return collect_neighbours(vertices, edges);
+}
+
+Status build_loop_edges(const LoopMesh& mesh, LoopEdges* edges) {
+  if (Status s = number_loop_edges(mesh, edges); !s.ok()) return s;
   return check_single_fans(mesh, *edges);
 }
 

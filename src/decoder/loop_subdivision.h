@@ -56,6 +56,12 @@ struct LoopEdges {
 // `bad_chunk_payload` with the reason.
 Status build_loop_edges(const LoopMesh& mesh, LoopEdges* edges);
 
+// The same edge table with section 12.2's rules 1-4, which come free while
+// numbering, but not the fan check (rule 5): for a level loop_subdivide made
+// from a valid level, which keeps every rule (section 12.2), so only the
+// base mesh pays for the check.
+Status number_loop_edges(const LoopMesh& mesh, LoopEdges* edges);
+
 // beta(n) of section 12.4 for n >= 2, computed as section 12.4 prescribes
 // (a fixed polynomial for cos(2 pi / n), so that every platform agrees).
 double loop_beta(uint32_t n);

@@ -36,6 +36,13 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
 
 }  // namespace
 
+void dequantization_steps(const QuantizationInfo& info, double lo[3], double step[3]) {
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = double(info.min[a]);
+    step[a] = (double(info.max[a]) - lo[a]) / double((uint64_t(1) << info.bits) - 1);
+  }
+}
+
 float dequantize(uint32_t q, float min, float max, int bits) {
   // Binary64 throughout, one rounding per operation, then one to binary32;
   // the build disables contraction into fused multiply-add (section 6.4).
@@ -85,10 +92,7 @@ Status decode_positions(const uint8_t* payload, size_t size, uint32_t vertex_cou
   // Section 6.4 with the step of each axis computed once: the same binary64
   // operations as dequantize(), hence the same results.
   double step[3], lo[3];
-  for (int a = 0; a < 3; ++a) {
-    lo[a] = double(info->min[a]);
-    step[a] = (double(info->max[a]) - lo[a]) / double((uint64_t(1) << info->bits) - 1);
-  }
+  dequantization_steps(*info, lo, step);
   positions->resize(quantized->size());
   for (size_t i = 0; i < quantized->size(); i += 3)
     for (int a = 0; a < 3; ++a) {

@@ -242,7 +242,7 @@ Status StreamDecoder::State::handle_level(const uint8_t* payload, uint32_t lengt
   if (Status s = decode_level(payload, length, j, file.levels.back(), level_edges, &fine); !s.ok()) return s;
   fine.chunk_bytes = 12 + uint64_t(length);
   if (j < file.loop_level_count) {  // the edges of level j are needed by level j + 1 only
-    if (Status s = build_loop_edges(fine, &level_edges); !s.ok())
+    if (Status s = number_loop_edges(fine, &level_edges); !s.ok())
       return Status(ErrorCode::kBadChunkPayload, "LEVL: level " + std::to_string(j) + ": " + s.message());
   }
   file.levels.push_back(std::move(fine));

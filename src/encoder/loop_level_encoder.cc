@@ -114,11 +114,6 @@ std::vector<uint8_t> encode_level(uint8_t level, uint32_t coarse_vertices, const
     bits.write_bits(uint32_t(m < 0 ? -m : m), 7);
   }
   displace_edge_points(normals, code, coarse_vertices, fine);
-  for (size_t e = 0; e < p.r.size(); ++e)
-    for (int k = 0; k < 3; ++k) {
-      const double d = targets[3 * e + k] - fine->positions[3 * (coarse_vertices + e) + k];
-      stats->squared_error += d * d;
-    }
   std::vector<uint8_t> payload;
   put_u8(&payload, level);
   put_u8(&payload, 0);  // 12.7's code
@@ -168,7 +163,7 @@ Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& 
     ls.levels.push_back({fine.vertex_count(), fine.face_count(), code_stats.edge_points, code_stats.zeros,
                          code_stats.clamped, code_stats.step, 12 + payload.size()});
     if (j < levels)
-      if (Status s = build_loop_edges(fine, &edges); !s.ok())
+      if (Status s = number_loop_edges(fine, &edges); !s.ok())
         return Status(ErrorCode::kInvalidArgument, "internal: level " + std::to_string(j) + ": " + s.message());
     current = std::move(fine);
   }

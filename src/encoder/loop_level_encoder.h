@@ -23,7 +23,6 @@ void predict_level(const LoopMesh& coarse, const LoopEdges& coarse_edges, LoopMe
 struct LevelCodeStats {
   uint32_t edge_points = 0, zeros = 0, clamped = 0;
   double step = 0;
-  double squared_error = 0;  // sum over edge points of |target - decoded|^2
 };
 
 // Chooses the step and the integers m for edge-point targets (3 doubles per

@@ -236,7 +236,9 @@ Status remesh(const LoopMesh& original, const TriangleBvh& bvh, const LoopMesh& 
   c[0].triangles = adjusted_base.triangles;
   std::vector<LoopEdges> edges(size_t(levels) + 1);
   for (int j = 0; j <= levels; ++j) {
-    if (Status s = build_loop_edges(c[j], &edges[j]); !s.ok()) return s;
+    // Only the base needs the fan check; subdivision keeps it (spec 12.2).
+    const Status s = j == 0 ? build_loop_edges(c[j], &edges[j]) : number_loop_edges(c[j], &edges[j]);
+    if (!s.ok()) return s;
     if (j < levels) loop_subdivide(c[j], edges[j], &c[j + 1]);
   }
   st.subdivide_seconds = seconds_since(start);
