@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
   }
   const fs::path out = argv[2];
   for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "polygon_connectivity", "positions",
-                        "huffman", "roundtrip", "order", "loop_levels"})
+                        "huffman", "roundtrip", "order", "loop_levels", "gim_file", "gim_plane"})
     fs::create_directories(out / t);
   int n = 0;
   for (const auto& entry : fs::directory_iterator(argv[1])) {
@@ -67,6 +67,7 @@ int main(int argc, char** argv) {
     std::vector<uint8_t> conn;  // order input: CONN length as u16, CONN payload, oRDR payload
     std::vector<uint8_t> levels;  // loop_levels input: u16le-prefixed CONN, POSN, LEVL payloads
     bool progressive = false;
+    std::vector<uint8_t> gim;  // gim_file input: selector byte, u16le length, payload per GIM chunk
     for (size_t pos = 8; pos + 12 <= bytes.size();) {
       const uint32_t type = qmc::load_u32be(&bytes[pos]);
       const uint32_t length = qmc::load_u32le(&bytes[pos + 4]);
@@ -91,6 +92,13 @@ int main(int argc, char** argv) {
         levels.push_back(uint8_t(length >> 8));
         levels.insert(levels.end(), payload, payload + length);
       }
+      const uint32_t gim_types[] = {qmc::kChunkGeometryImage, qmc::kChunkGimMask, qmc::kChunkGimSeams,
+                                    qmc::kChunkGimFaces, qmc::kChunkGimPlane};
+      for (uint8_t k = 0; k < 5; ++k)
+        if (type == gim_types[k] && length <= 0xFFFF) {
+          gim.insert(gim.end(), {k, uint8_t(length), uint8_t(length >> 8)});
+          gim.insert(gim.end(), payload, payload + length);
+        }
       if (type == qmc::kChunkOrder && !conn.empty()) {
         std::vector<uint8_t> seed{uint8_t(conn.size()), uint8_t(conn.size() >> 8)};
         seed.insert(seed.end(), conn.begin(), conn.end());
@@ -100,6 +108,7 @@ int main(int argc, char** argv) {
       pos += 12 + size_t(length);
     }
     if (!levels.empty()) write(out / "loop_levels" / name, levels.data(), levels.size());
+    if (!gim.empty()) write(out / "gim_file" / name, gim.data(), gim.size());
     ++n;
   }
   std::printf("seeds from %d vectors in %s\n", n, argv[2]);

@@ -11,7 +11,10 @@
 #                    topology the polygon coder records;
 #   seed003.md       seed 003's tables 2 and 3 rerun with qmc's progressive
 #                    Loop levels, and their rate-distortion against Draco
-#                    8-14 bits, plotted in seed003_rd.svg.
+#                    8-14 bits, plotted in seed003_rd.svg;
+#   gim.md           geometry images: seed 000 table 1 and seed 002 tables 1-2
+#                    rerun, lossless planes against zstd -19 and 16-bit PNG,
+#                    pictures in docs/results/gim/.
 # RUNS (default 7) runs per measurement, LARGE_RUNS (default 3) for the
 # ~1M-quad sphere; medians are reported. Run on an otherwise idle machine.
 set -euo pipefail
@@ -24,17 +27,6 @@ scripts/install-deps.sh >/dev/null
 scripts/build.sh >/dev/null
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-
-out=docs/results/baseline.md
-build/bench/qmc_baseline --runs "$runs" --bits 12 --out "$work/baseline" data/demo/torus.obj "$corpus"/quad/* "$corpus"/tri/*
-{
-  echo "# Baseline: qmc 0.1 (format 1.1) against Draco"
-  echo
-  echo "Made by \`scripts/bench.sh\` (\`build/bench/qmc_baseline --runs $runs --bits 12 ...\`)."
-  echo
-  cat "$work/baseline"
-} >"$out"
-echo "bench: wrote $out"
 
 machine() {
   local cpu
@@ -60,6 +52,20 @@ write_result() {
   echo "bench: wrote $file"
 }
 
+# ONLY=gim regenerates docs/results/gim.md alone.
+if [ "${ONLY:-}" != gim ]; then
+out=docs/results/baseline.md
+build/bench/qmc_baseline --runs "$runs" --bits 12 --out "$work/baseline" data/demo/torus.obj "$corpus"/quad/* "$corpus"/tri/*
+{
+  echo "# Baseline: qmc 0.1 (format 1.1) against Draco"
+  echo
+  echo "Made by \`scripts/bench.sh\` (\`build/bench/qmc_baseline --runs $runs --bits 12 ...\`)."
+  echo
+  cat "$work/baseline"
+} >"$out"
+echo "bench: wrote $out"
+
+
 write_result docs/results/seed001.md "Seed 001 (Q. Jing's thesis), chapter 5, rerun with qmc" \
   build/bench/qmc_seed001 --runs "$runs" --bits 8 "$corpus"/tri/cow.obj
 write_result docs/results/quad_vs_draco.md "Quad meshes: qmc's quad coder against Draco with polygons preserved" \
@@ -69,3 +75,7 @@ write_result docs/results/topology.md "Connectivity: qmc's structured coders aga
 write_result docs/results/seed003.md "Seed 003 (Loop progressive geometry compression) rerun with qmc's progressive levels" \
   build/bench/qmc_seed003 --runs "$runs" --plot docs/results/seed003_rd.svg "$corpus"/tri/stanford-bunny.obj \
   "$corpus"/tri/armadillo.obj "$corpus"/tri/fertility.off "$corpus"/tri/camelhead.off
+fi
+mkdir -p docs/results/gim
+write_result docs/results/gim.md "Geometry images: seeds 000 and 002 rerun with qmc, and lossless planes against zstd and PNG" \
+  build/bench/qmc_gim_bench "$corpus" docs/results/gim "$runs"

@@ -33,3 +33,12 @@ $qmc encode data/demo/torus.obj "$out/torus_progressive.qmc" --progressive --lev
 echo
 echo "== qmc decode $out/torus_progressive.qmc $out/torus_base.obj --level 0"
 $qmc decode "$out/torus_progressive.qmc" "$out/torus_base.obj" --level 0
+echo
+# Geometry image (seeds 000 and 002, spec 13): the torus cut open along its
+# two handle loops, sampled on a 64 x 64 grid, exported as 16-bit PNG planes.
+echo "== qmc encode data/demo/torus.obj $out/torus_gim.qmc --gim 64 --sampling adaptive"
+$qmc encode data/demo/torus.obj "$out/torus_gim.qmc" --gim 64 --sampling adaptive
+echo
+mkdir -p "$out/torus_gim"
+echo "== qmc gim export $out/torus_gim.qmc $out/torus_gim"
+$qmc gim export "$out/torus_gim.qmc" "$out/torus_gim"

@@ -15,7 +15,7 @@ rm -rf "$build/seeds"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 passed=0 failed=0
-for target in decode_file stream_decoder connectivity quad_connectivity polygon_connectivity positions huffman roundtrip order loop_levels; do
+for target in decode_file stream_decoder connectivity quad_connectivity polygon_connectivity positions huffman roundtrip order loop_levels gim_file gim_plane; do
   bin="$build/fuzz/${target}_fuzzer"
   regressions=(fuzz/regressions/$target/*)
   if [ -e "${regressions[0]}" ]; then

@@ -43,10 +43,12 @@ int run_decode(int argc, char** argv) {
   if (level_note.empty() && file.loop_level_count)
     level_note = ", finest level " + std::to_string(file.loop_level_count);
   if (Status s = tools::write_mesh(output, file.mesh); !s.ok()) return fail("decode", s);
+  const std::string source = file.gim.present ? "a " + std::to_string(file.gim.width) + " x " +
+                                                    std::to_string(file.gim.height) + " geometry image"
+                                              : std::string(connectivity_method_name(file.method)) + " connectivity";
   if (!cl.has("--quiet"))
-    std::printf("decoded %s: %zu vertices, %zu faces (%s connectivity%s) -> %s\n", input.c_str(),
-                file.mesh.vertex_count(), file.mesh.face_count(), connectivity_method_name(file.method),
-                level_note.c_str(), output.c_str());
+    std::printf("decoded %s: %zu vertices, %zu faces (%s%s) -> %s\n", input.c_str(), file.mesh.vertex_count(),
+                file.mesh.face_count(), source.c_str(), level_note.c_str(), output.c_str());
   return kExitOk;
 }
 

@@ -1,4 +1,6 @@
 // qmc encode: compress, then decode in memory and report size and error.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -43,16 +45,75 @@ const char kHelp[] =
     "                      mesh has about 1/4^K of the input's triangles; keep\n"
     "                      it at a few hundred vertices or more (K = 2..3 on\n"
     "                      meshes of 10k-70k triangles)\n"
+    "  --gim N             write a geometry image (spec 13, seeds 000 and 002)\n"
+    "                      instead: the surface cut into a disk, laid on an\n"
+    "                      N x N pixel grid by Floater's mean-value coordinates\n"
+    "                      and sampled; lossy, a regular remesh of the input\n"
+    "                      (with --topology-preserving, N bounds the image side)\n"
+    "  --sampling S        regular (default); adaptive: seed 000's vertex-density\n"
+    "                      equalization; hausdorff: adaptive, then seed 000's\n"
+    "                      Hausdorff-driven adjustment of the samples\n"
+    "  --roi FILE          more samples in a region of interest (seed 000 sec. 4):\n"
+    "                      lines 'vertex I...', 'face I...' or 'box X0 Y0 Z0 X1 Y1 Z1'\n"
+    "  --topology-preserving  seed 002: every vertex on its own pixel, the input's\n"
+    "                      triangles kept; exact with --gim-float\n"
+    "  --gim-float         binary32 samples instead of 16-bit\n"
+    "  --gim-quads         grid faces as quads instead of triangles\n"
+    "  --gim-normals       add three planes of unit normals (attribute kinds 3-5)\n"
+    "  --gim-store-blank   also code the samples of blank pixels (smooth planes\n"
+    "                      for image tools, at some cost in bytes)\n"
     "  --quiet             print nothing on success\n";
 
 struct EncodeArgs {
   std::string input, output;
   EncodeOptions options;
   bool quiet = false, progressive = false;
+  std::string roi_path;
 };
 
-const CommandSpec kSpec{"encode", kHelp, {"--quiet", "--keep-order", "--progressive"},
-                        {{"--bits", "-q"}, {"--text"}, {"--connectivity"}, {"--levels"}}, 2, 2};
+const CommandSpec kSpec{"encode",
+                        kHelp,
+                        {"--quiet", "--keep-order", "--progressive", "--topology-preserving", "--gim-float",
+                         "--gim-quads", "--gim-store-blank", "--gim-normals"},
+                        {{"--bits", "-q"}, {"--text"}, {"--connectivity"}, {"--levels"}, {"--gim"}, {"--sampling"},
+                         {"--roi"}},
+                        2,
+                        2};
+
+// Section 13 options; returns -1 when they are consistent.
+int parse_gim(const CommandLine& cl, EncodeArgs* args) {
+  GeometryImageOptions& g = args->options.gim;
+  g.topology_preserving = cl.has("--topology-preserving");
+  g.float_samples = cl.has("--gim-float");
+  g.quads = cl.has("--gim-quads");
+  g.store_blank_pixels = cl.has("--gim-store-blank");
+  g.normal_planes = cl.has("--gim-normals");
+  bool sampling_given = false;
+  for (const auto& [name, value] : cl.options) {
+    if (name == "--gim") {
+      long n = 0;
+      if (!parse_int(value, 2, 65535, &n))
+        return usage_error("encode", "--gim takes a whole number from 2 to 65535, got '" + value + "'");
+      g.size = uint32_t(n);
+    } else if (name == "--sampling") {
+      sampling_given = true;
+      if (value == "regular") g.sampling = GimSampling::kRegular;
+      else if (value == "adaptive") g.sampling = GimSampling::kAdaptive;
+      else if (value == "hausdorff") g.sampling = GimSampling::kHausdorff;
+      else return usage_error("encode", "--sampling takes regular, adaptive or hausdorff, got '" + value + "'");
+    } else if (name == "--roi") {
+      args->roi_path = value;
+    }
+  }
+  const bool any = g.topology_preserving || g.float_samples || g.quads || g.store_blank_pixels || g.normal_planes ||
+                   sampling_given ||
+                   !args->roi_path.empty();
+  if (any && g.size == 0) return usage_error("encode", "geometry-image options need --gim N");
+  if (g.size > 0 && args->progressive) return usage_error("encode", "--gim and --progressive exclude each other");
+  if (g.topology_preserving && (sampling_given || !args->roi_path.empty() || g.quads))
+    return usage_error("encode", "--topology-preserving keeps the input's vertices: no --sampling, --roi or --gim-quads");
+  return -1;
+}
 
 int parse(int argc, char** argv, EncodeArgs* args) {
   CommandLine cl;
@@ -63,7 +124,9 @@ int parse(int argc, char** argv, EncodeArgs* args) {
   args->options.keep_order = cl.has("--keep-order");
   args->progressive = cl.has("--progressive");
   if (args->progressive) args->options.progressive_levels = 3;
+  if (int rc = parse_gim(cl, args); rc >= 0) return rc;
   for (const auto& [name, value] : cl.options) {
+    if (name == "--gim" || name == "--sampling" || name == "--roi") continue;  // parse_gim
     if (name == "--levels") {
       long levels = 0;
       if (!args->progressive) return usage_error("encode", "--levels needs --progressive");
@@ -177,26 +240,106 @@ void print_progressive_report(const EncodeArgs& args, const Mesh& input, const E
               distance.relative(distance.hausdorff), distance.psnr_db);
 }
 
+// Lossy modes (sections 12, 13): encode with progress on a terminal, decode
+// the result, and measure the surface distance to `reference`.
+struct RemeshResult {
+  std::vector<uint8_t> bytes;
+  EncodeStats stats;
+  DecodedFile decoded;
+  tools::MeshDistance distance;
+};
+
+Status encode_remesh(const EncodeArgs& args, const Mesh& mesh, const Mesh& reference, const std::string& label,
+                     RemeshResult* r) {
+  Progress progress(true);
+  EncodeOptions options = args.options;
+  options.progress = [&](const char* stage, double) { progress.stage(label + stage); };
+  if (Status s = encode(mesh, options, &r->bytes, &r->stats); !s.ok()) return s;
+  progress.stage("decoding to measure the error");
+  if (Status s = decode(r->bytes.data(), r->bytes.size(), &r->decoded); !s.ok())
+    return Status(s.code(), "internal error, own output does not decode: " + s.message());
+  if (Status s = tools::measure_mesh_distance(reference, r->decoded.mesh, {}, &r->distance); !s.ok()) return s;
+  progress.done();
+  return Status::Ok();
+}
+
 // Section 12: triangles in, progressive file out, error measured by decoding it.
 int encode_progressive(EncodeArgs& args, Mesh mesh, uint64_t input_bytes) {
   size_t split = 0;
   mesh = tools::triangulated(mesh, &split);
   if (split && !args.quiet)
     std::printf("triangulated %zu polygons (fan from their first corner): --progressive takes triangles\n", split);
-  Progress progress(true);
-  args.options.progress = [&](const char* stage, double) { progress.stage(std::string("progressive: ") + stage); };
-  std::vector<uint8_t> bytes;
-  EncodeStats stats;
-  if (Status s = encode(mesh, args.options, &bytes, &stats); !s.ok()) return fail("encode", s);
-  progress.stage("decoding to measure the error");
-  DecodedFile decoded;
-  if (Status s = decode(bytes.data(), bytes.size(), &decoded); !s.ok())
-    return fail("encode", Status(s.code(), "internal error, own output does not decode: " + s.message()));
-  tools::MeshDistance distance;
-  if (Status s = tools::measure_mesh_distance(mesh, decoded.mesh, {}, &distance); !s.ok()) return fail("encode", s);
-  progress.done();
+  RemeshResult result;
+  if (Status s = encode_remesh(args, mesh, mesh, "progressive: ", &result); !s.ok()) return fail("encode", s);
+  const std::vector<uint8_t>& bytes = result.bytes;
+  const EncodeStats& stats = result.stats;
+  const tools::MeshDistance& distance = result.distance;
   if (Status s = write_file(args.output, bytes); !s.ok()) return fail("encode", s);
   if (!args.quiet) print_progressive_report(args, mesh, stats, distance, input_bytes);
+  return kExitOk;
+}
+
+void print_gim_report(const EncodeArgs& args, const Mesh& input, const EncodeStats& stats,
+                      const tools::MeshDistance& distance, uint64_t input_bytes, const std::string& exactness) {
+  const GimEncodeStats& g = stats.gim;
+  std::printf("input       %s: %zu vertices, %zu faces, %s; genus %d, %d boundary loops\n", args.input.c_str(),
+              input.vertex_count(), input.face_count(), human_bytes(input_bytes).c_str(), g.genus, g.boundary_loops);
+  if (g.polygons_split) std::printf("            %u polygons split into triangles (fan from their first corner)\n", g.polygons_split);
+  if (g.unreferenced_vertices)
+    std::printf("            %u vertices no face uses are not in the image\n", g.unreferenced_vertices);
+  std::printf("cut         %u cut nodes, %u cut paths, %u seam pixel pairs\n", g.cut_nodes, g.cut_paths, g.seam_pairs);
+  std::printf("image       %u x %u pixels, %u occupied, %s samples, %s\n", g.width, g.height, g.occupied,
+              args.options.gim.float_samples ? "binary32" : "16-bit",
+              args.options.gim.topology_preserving ? "input triangles (GFAC)"
+                                                   : args.options.gim.quads ? "grid quads" : "grid triangles");
+  std::printf("pipeline    cut %.2f s, parametrize %.2f s, sample/place %.2f s, adjust %.2f s, code %.2f s\n",
+              g.seconds_cut, g.seconds_parametrize, g.seconds_sample, g.seconds_adjust, g.seconds_code);
+  if (g.hausdorff_before >= 0)
+    std::printf("hausdorff   seed 000 algorithm 1: %u steps, %.6g -> %.6g\n", g.hausdorff_iterations,
+                g.hausdorff_before, g.hausdorff_after);
+  std::printf("chunks      mask %llu, seams %llu, faces %llu bytes; planes", static_cast<unsigned long long>(g.mask_bytes),
+              static_cast<unsigned long long>(g.seam_bytes), static_cast<unsigned long long>(g.face_bytes));
+  for (size_t i = 0; i < g.plane_bytes.size(); ++i)
+    std::printf(" %llu (predictor %d)", static_cast<unsigned long long>(g.plane_bytes[i]), g.plane_predictors[i]);
+  std::printf("\noutput      %s: %llu bytes, %.1fx smaller than the input file\n", args.output.c_str(),
+              static_cast<unsigned long long>(stats.total_bytes), double(input_bytes) / double(stats.total_bytes));
+  std::printf("error       decoded vs input (Metro-style): L2 %.6g (%.3g of bbox diagonal), Hausdorff %.6g (%.3g), "
+              "PSNR %.2f dB%s\n",
+              distance.l2, distance.relative(distance.l2), distance.hausdorff, distance.relative(distance.hausdorff),
+              distance.psnr_db, exactness.c_str());
+}
+
+// Seed 002: the decoded triangles are the input's, in order; how far their
+// corners moved.
+std::string topology_preserving_check(const Mesh& triangles, const Mesh& decoded) {
+  if (decoded.face_count() != triangles.face_count()) return "; internal error: face count differs";
+  double worst = 0;
+  for (size_t c = 0; c < triangles.corners.size(); ++c)
+    for (int a = 0; a < 3; ++a)
+      worst = std::max(worst, double(std::fabs(triangles.positions[3 * size_t(triangles.corners[c]) + size_t(a)] -
+                                                decoded.positions[3 * size_t(decoded.corners[c]) + size_t(a)])));
+  if (worst == 0) return "; every triangle corner bit-identical to the input";
+  char text[96];
+  std::snprintf(text, sizeof text, "; input triangles kept, corners within %.3g", worst);
+  return text;
+}
+
+int encode_gim(EncodeArgs& args, const Mesh& mesh, uint64_t input_bytes) {
+  if (!args.roi_path.empty()) {
+    std::vector<uint8_t> text;
+    if (Status s = read_file(args.roi_path, &text); !s.ok()) return fail("encode", s);
+    args.options.gim.roi.assign(text.begin(), text.end());
+  }
+  const Mesh triangles = tools::triangulated(mesh, nullptr);
+  RemeshResult result;
+  if (Status s = encode_remesh(args, mesh, triangles, "geometry image: ", &result); !s.ok()) return fail("encode", s);
+  const std::vector<uint8_t>& bytes = result.bytes;
+  const EncodeStats& stats = result.stats;
+  const tools::MeshDistance& distance = result.distance;
+  const std::string exactness =
+      args.options.gim.topology_preserving ? topology_preserving_check(triangles, result.decoded.mesh) : "";
+  if (Status s = write_file(args.output, bytes); !s.ok()) return fail("encode", s);
+  if (!args.quiet) print_gim_report(args, mesh, stats, distance, input_bytes, exactness);
   return kExitOk;
 }
 
@@ -212,6 +355,7 @@ int run_encode(int argc, char** argv) {
   Mesh mesh;
   if (Status s = load_mesh(args.input, &mesh); !s.ok()) return fail("encode", s);
   if (args.progressive) return encode_progressive(args, std::move(mesh), input_bytes.size());
+  if (args.options.gim.size > 0) return encode_gim(args, mesh, input_bytes.size());
   std::vector<uint8_t> bytes;
   EncodeStats stats;
   progress.stage("encoding " + std::to_string(mesh.face_count()) + " faces");

@@ -57,13 +57,19 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
                 "(%u seams for handles, the rest close holes), %u vertex identifications, %u loose faces\n",
                 f.polygon_coding, f.polygon_components, f.polygon_virtual_faces, f.polygon_seams,
                 f.polygon_identifications, f.polygon_loose_faces);
+  else if (f.gim.present)
+    std::printf("geometry     %u x %u image (spec 13), %s samples, %s, %u planes, %zu seam pairs%s\n", f.gim.width,
+                f.gim.height, f.gim.format == 0 ? "16-bit" : "binary32",
+                f.gim.face_mode == 0 ? "grid quads" : f.gim.face_mode == 1 ? "grid triangles" : "triangles over pixels",
+                unsigned(f.gim.plane_count), f.gim.seam_pairs.size() / 2, (f.gim.flags & 1) ? ", masked" : "");
   else
     std::printf("connectivity %s\n", connectivity_method_name(f.method));
   if (f.quantization.bits)
     std::printf("positions    %d bits/axis, box (%g %g %g) - (%g %g %g)\n", f.quantization.bits,
                 f.quantization.min[0], f.quantization.min[1], f.quantization.min[2], f.quantization.max[0],
                 f.quantization.max[1], f.quantization.max[2]);
-  std::printf("order        %s\n", f.order_restored ? order_description(f.order_flags).c_str()
+  if (!f.gim.present)
+    std::printf("order        %s\n", f.order_restored ? order_description(f.order_flags).c_str()
                                                      : "coder order (no oRDR chunk)");
   if (f.loop_level_count) {
     std::printf("progressive  %u Loop levels (spec 12), %zu decoded\n", f.loop_level_count,

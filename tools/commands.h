@@ -9,5 +9,6 @@ int run_info(int argc, char** argv);
 int run_verify(int argc, char** argv);
 int run_conform(int argc, char** argv);
 int run_compare(int argc, char** argv);
+int run_gim(int argc, char** argv);
 
 }  // namespace qmc::cli

@@ -25,6 +25,8 @@
 #include "mesh_generators.h"
 #include "quad_disk_generator.h"
 #include "decoder/spirale_reversi_decoder.h"
+#include "encoder/gim_writer.h"
+#include "gim_test_images.h"
 #include "qmc/decoder.h"
 #include "qmc/encoder.h"
 #include "roundtrip_check.h"
@@ -992,6 +994,207 @@ void write_loop_vectors(VectorWriter* w) {
   w->invalid("invalid_loop_pinched_base", join_chunks(c), ErrorCode::kBadChunkPayload);
 }
 
+// Section 13: geometry images, from formula images (gim_test_images.h).
+[[noreturn]] void gim_die(const std::string& what, const std::string& why) {
+  std::fprintf(stderr, "qmc-make-vectors: %s: %s\n", what.c_str(), why.c_str());
+  std::exit(3);
+}
+
+std::vector<uint8_t> gim_file(const qmc::GimSamples& s, bool float_samples, bool quads = false, bool store_blank = false,
+                              const std::vector<qmc::GimExtraPlane>& extra = {}) {
+  qmc::GeometryImageOptions o;
+  o.float_samples = float_samples;
+  o.quads = quads;
+  o.store_blank_pixels = store_blank;
+  std::vector<uint8_t> bytes;
+  qmc::EncodeStats stats;
+  if (qmc::Status st = qmc::write_geometry_image(s, extra, o, {}, &bytes, &stats); !st.ok())
+    gim_die("geometry image", st.to_string());
+  return bytes;
+}
+
+// The bytes of a file the writer refuses to vouch for (its decode check
+// fails): for vectors of samples no valid file holds.
+std::vector<uint8_t> gim_file_unchecked(const qmc::GimSamples& s) {
+  qmc::GeometryImageOptions o;
+  o.float_samples = true;
+  std::vector<uint8_t> bytes;
+  qmc::EncodeStats stats;
+  if (qmc::write_geometry_image(s, {}, o, {}, &bytes, &stats).ok()) gim_die("geometry image", "expected a refused file");
+  return bytes;
+}
+
+std::vector<uint8_t> varints(std::initializer_list<uint64_t> values) {
+  std::vector<uint8_t> p;
+  for (uint64_t v : values) qmc::put_varint(&p, v);
+  return p;
+}
+
+void write_gim_valid(VectorWriter* w) {
+  const qmc::GimSamples torus = qmc::tools::make_torus_geometry_image(9);
+  w->valid("valid_gim_u16_torus_quads", gim_file(torus, false, true), nullptr);
+  w->valid("valid_gim_u16_torus_triangles", gim_file(torus, false), nullptr);
+  w->valid("valid_gim_f32_torus_triangles", gim_file(torus, true), nullptr);
+  const qmc::GimSamples disk = qmc::tools::make_disk_geometry_image(12);
+  w->valid("valid_gim_u16_mask", gim_file(disk, false), nullptr);
+  w->valid("valid_gim_u16_mask_blank_stored", gim_file(disk, false, false, true), nullptr);
+  w->valid("valid_gim_f32_mask_quads", gim_file(disk, true, true), nullptr);
+  // Normals and a curvature-like value as attribute planes (kinds 3..6).
+  std::vector<qmc::GimExtraPlane> extra(4);
+  for (int k = 0; k < 4; ++k) {
+    extra[size_t(k)].kind = uint8_t(3 + k);
+    for (size_t p = 0; p < 81; ++p) extra[size_t(k)].values.push_back(k < 3 ? torus.xyz[3 * p + size_t(k)] / 3 : 0.5 * p);
+  }
+  w->valid("valid_gim_u16_attributes", gim_file(torus, false, false, false, extra), nullptr);
+  w->valid("valid_gim_f32_attributes", gim_file(torus, true, false, false, extra), nullptr);
+  const qmc::GimSamples sparse = qmc::tools::make_sparse_triangle_image(9);
+  w->valid("valid_gim_f32_topology", gim_file(sparse, true), nullptr);
+  w->valid("valid_gim_u16_topology", gim_file(sparse, false), nullptr);
+  w->valid("valid_gim_u16_topology_blank_stored", gim_file(sparse, false, false, true), nullptr);
+  qmc::GimSamples tiny;
+  tiny.width = tiny.height = 1;
+  tiny.xyz = {1, 2, 3};
+  w->valid("valid_gim_one_pixel", gim_file(tiny, false), nullptr);
+}
+
+void write_gim_header_errors(VectorWriter* w, const Chunks& base) {
+  const size_t gimg = find_chunk(base, qmc::kChunkGeometryImage);
+  const std::vector<uint8_t> fields(base[gimg].payload.begin() + 2, base[gimg].payload.end());  // after W, H (9, 9)
+  auto with_header = [&](const std::vector<uint8_t>& size_and_fields) {
+    Chunks c = base;
+    c[gimg].payload = size_and_fields;
+    return join_chunks(c);
+  };
+  auto sized = [&](uint64_t width, uint64_t height) {
+    std::vector<uint8_t> p = varints({width, height});
+    p.insert(p.end(), fields.begin(), fields.end());
+    return p;
+  };
+  w->invalid("invalid_gim_size_overflow", with_header(sized(65535, 65535)), qmc::ErrorCode::kLimitExceeded);
+  w->invalid("invalid_gim_size_unjustified", with_header(sized(4096, 4096)), qmc::ErrorCode::kLimitExceeded);
+  w->invalid("invalid_gim_zero_width", with_header(sized(0, 9)), qmc::ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_gim_width_too_large", with_header(sized(65536, 1)), qmc::ErrorCode::kBadChunkPayload);
+  std::vector<uint8_t> p = sized(9, 9);
+  p[2] = 2;  // format
+  w->invalid("invalid_gim_unknown_format", with_header(p), qmc::ErrorCode::kUnsupportedFeature);
+  p = sized(9, 9);
+  p[3] = 3;  // face mode
+  w->invalid("invalid_gim_unknown_face_mode", with_header(p), qmc::ErrorCode::kUnsupportedFeature);
+  p = sized(9, 9);
+  p[4] |= 4;  // a reserved flag
+  w->invalid("invalid_gim_reserved_flag", with_header(p), qmc::ErrorCode::kBadChunkPayload);
+  p = sized(9, 9);
+  p[5] = 2;  // two planes
+  w->invalid("invalid_gim_two_planes", with_header(p), qmc::ErrorCode::kBadChunkPayload);
+  p = sized(9, 9);
+  p[6] = 1;  // plane 0 says Y
+  w->invalid("invalid_gim_plane_kind", with_header(p), qmc::ErrorCode::kBadChunkPayload);
+  p = sized(9, 9);
+  for (int i = 0; i < 8; ++i) p[size_t(15 + i)] = i == 7 ? 0xBF : 0;  // plane 0 step -1.0
+  w->invalid("invalid_gim_negative_step", with_header(p), qmc::ErrorCode::kBadChunkPayload);
+  p = sized(9, 9);
+  p.push_back(0);
+  w->invalid("invalid_gim_header_trailing_byte", with_header(p), qmc::ErrorCode::kBadChunkPayload);
+}
+
+void write_gim_order_errors(VectorWriter* w, const Chunks& torus, const Chunks& disk) {
+  Chunks c = torus;
+  c.erase(c.end() - 2);  // the last plane
+  w->invalid("invalid_gim_qend_before_last_plane", join_chunks(c), qmc::ErrorCode::kChunkOrder);
+  c = torus;
+  c.insert(c.end() - 1, c[c.size() - 2]);
+  w->invalid("invalid_gim_extra_plane", join_chunks(c), qmc::ErrorCode::kChunkOrder);
+  c = torus;
+  c.insert(c.begin() + 2, c[1]);
+  w->invalid("invalid_gim_second_gimg", join_chunks(c), qmc::ErrorCode::kChunkOrder);
+  c = torus;
+  const Chunks indexed = split_chunks(encode(qmc::tools::make_tetrahedron(), 12));
+  c.insert(c.end() - 1, indexed[find_chunk(indexed, qmc::kChunkConnectivity)]);
+  w->invalid("invalid_gim_with_conn", join_chunks(c), qmc::ErrorCode::kChunkOrder);
+  c = indexed;
+  c.insert(c.begin() + 2, torus[find_chunk(torus, qmc::kChunkGeometryImage)]);
+  w->invalid("invalid_gim_after_conn", join_chunks(c), qmc::ErrorCode::kChunkOrder);
+  c = disk;
+  c.erase(c.begin() + long(find_chunk(c, qmc::kChunkGimMask)));
+  w->invalid("invalid_gim_missing_mask", join_chunks(c), qmc::ErrorCode::kChunkOrder);
+  c = torus;
+  c.insert(c.begin() + 2, disk[find_chunk(disk, qmc::kChunkGimMask)]);
+  w->invalid("invalid_gim_mask_without_flag", join_chunks(c), qmc::ErrorCode::kChunkOrder);
+  c = torus;
+  const size_t seams = find_chunk(c, qmc::kChunkGimSeams);
+  std::swap(c[seams], c[seams + 1]);  // GSEM after the first plane
+  w->invalid("invalid_gim_seams_after_plane", join_chunks(c), qmc::ErrorCode::kChunkOrder);
+  c = torus;
+  c.insert(c.begin() + 1, Chunk{qmc::kChunkGimPlane, c[c.size() - 2].payload});
+  w->invalid("invalid_gim_plane_before_gimg", join_chunks(c), qmc::ErrorCode::kChunkOrder);
+}
+
+void write_gim_payload_errors(VectorWriter* w, const Chunks& torus, const Chunks& disk, const Chunks& sparse) {
+  const size_t seams = find_chunk(torus, qmc::kChunkGimSeams);
+  auto seams_file = [&](const std::vector<uint8_t>& payload) {
+    Chunks c = torus;
+    c[seams].payload = payload;
+    return join_chunks(c);
+  };
+  w->invalid("invalid_gim_seam_self", seams_file(varints({1, 5, 5, 1, 0, 0})), qmc::ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_gim_seam_outside", seams_file(varints({1, 0, 81, 1, 0, 0})), qmc::ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_gim_seam_run_leaves_image", seams_file(varints({1, 0, 8, 10, 2, 18})), qmc::ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_gim_seam_count_overflow", seams_file(varints({1, 0, 8, 82, 2, 2})), qmc::ErrorCode::kLimitExceeded);
+  w->invalid("invalid_gim_seam_runs_overflow", seams_file(varints({1000})), qmc::ErrorCode::kLimitExceeded);
+  w->invalid("invalid_gim_seam_truncated", seams_file(varints({2, 0, 8, 1, 0, 0})), qmc::ErrorCode::kBadChunkPayload);
+  // Masks that do not match: a seam on a blank pixel of the disk image
+  // (pixel 0 is outside its inscribed disk).
+  Chunks c = disk;
+  c.insert(c.begin() + long(find_chunk(c, qmc::kChunkGimMask)) + 1, Chunk{qmc::kChunkGimSeams, varints({1, 0, 70, 1, 0, 0})});
+  w->invalid("invalid_gim_seam_on_blank_pixel", join_chunks(c), qmc::ErrorCode::kBadChunkPayload);
+  // The sparse image's mask with one vertex pixel cleared: a face points at it.
+  const size_t mask = find_chunk(sparse, qmc::kChunkGimMask);
+  qmc::GimSamples holed = qmc::tools::make_sparse_triangle_image(9);
+  holed.occupied[2] = 0;  // pixel (2, 0), a corner of triangles 0 and 2
+  holed.triangles.clear();
+  const Chunks holed_chunks = split_chunks(gim_file(holed, true));
+  c = sparse;
+  c[mask].payload = holed_chunks[find_chunk(holed_chunks, qmc::kChunkGimMask)].payload;
+  w->invalid("invalid_gim_face_on_blank_pixel", join_chunks(c), qmc::ErrorCode::kBadChunkPayload);
+  // Faces whose corners leave the image, or collapse, or run out.
+  const size_t faces = find_chunk(sparse, qmc::kChunkGimFaces);
+  auto faces_file = [&](const std::vector<uint32_t>& triangles, uint64_t count) {
+    const std::vector<uint8_t> payload = qmc::encode_gim_triangles(triangles, 9);
+    Chunks out = sparse;
+    out[faces].payload = varints({count});
+    out[faces].payload.insert(out[faces].payload.end(), payload.begin() + 1, payload.end());
+    return join_chunks(out);
+  };
+  w->invalid("invalid_gim_face_repeated_vertex", faces_file({0, 2, 2}, 1), qmc::ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_gim_face_count_overflow", faces_file({0, 2, 20}, 51), qmc::ErrorCode::kLimitExceeded);
+  w->invalid("invalid_gim_face_stream_truncated", faces_file({0, 2, 20}, 40), qmc::ErrorCode::kTruncated);
+  c = sparse;
+  c[faces].payload.insert(c[faces].payload.end(), 8, 0x55);  // more than the 4 bytes a decoder looks ahead
+  w->invalid("invalid_gim_face_trailing_bytes", join_chunks(c), qmc::ErrorCode::kBadChunkPayload);
+  c = sparse;
+  c[faces].payload = varints({1});
+  c[faces].payload.insert(c[faces].payload.end(), {0xC0, 0, 0, 0, 0});  // dx0 = -1: left of the image
+  w->invalid("invalid_gim_face_outside_image", join_chunks(c), qmc::ErrorCode::kBadSymbol);
+  // Planes: truncated, and a non-finite binary32 sample on a vertex.
+  c = torus;
+  std::vector<uint8_t>& plane = c[c.size() - 2].payload;
+  plane.resize(plane.size() / 2);
+  w->invalid("invalid_gim_plane_truncated", join_chunks(c), qmc::ErrorCode::kTruncated);
+  qmc::GimSamples infinite = qmc::tools::make_torus_geometry_image(9);
+  infinite.xyz[3 * 40] = 1e300;  // rounds to +infinity in binary32
+  w->invalid("invalid_gim_f32_infinite_vertex", gim_file_unchecked(infinite), qmc::ErrorCode::kBadChunkPayload);
+}
+
+void write_geometry_image_vectors(VectorWriter* w) {
+  write_gim_valid(w);
+  const Chunks torus = split_chunks(gim_file(qmc::tools::make_torus_geometry_image(9), false));
+  const Chunks disk = split_chunks(gim_file(qmc::tools::make_disk_geometry_image(12), false));
+  const Chunks sparse = split_chunks(gim_file(qmc::tools::make_sparse_triangle_image(9), true));
+  write_gim_header_errors(w, torus);
+  write_gim_order_errors(w, torus, disk);
+  write_gim_payload_errors(w, torus, disk, sparse);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -1012,6 +1215,7 @@ int main(int argc, char** argv) {
   write_input_order_vectors(&w);
   write_polygon_seam_vectors(&w);
   write_loop_vectors(&w);
+  write_geometry_image_vectors(&w);
   w.finish();
   return 0;
 }

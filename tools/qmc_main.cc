@@ -9,7 +9,7 @@
 namespace {
 
 const char kUsage[] =
-    "qmc - mesh compression codec (format version 1.0, spec/qmc-format.md)\n"
+    "qmc - mesh compression codec (format version 1.4, spec/qmc-format.md)\n"
     "\n"
     "usage: qmc COMMAND [ARGS]\n"
     "\n"
@@ -20,6 +20,8 @@ const char kUsage[] =
     "  verify IN OUT.qmc             decode OUT.qmc and compare it with IN\n"
     "  conform DIR                   check the conformance vectors listed in DIR/MANIFEST\n"
     "  compare A B [--json]          surface distances: Hausdorff, L2 (RMS), mean, PSNR\n"
+    "  gim export IN.qmc DIR         a geometry image's planes as 16-bit PNG / PFM files\n"
+    "  gim import DIR OUT.qmc        ... and back\n"
     "\n"
     "Positions are quantized to 12 bits per axis by default, which keeps every\n"
     "vertex within 1/4096 of the largest bounding-box side (-q to change).\n"
@@ -35,7 +37,7 @@ int main(int argc, char** argv) {
   }
   const std::string command = argv[1];
   if (command == "--version") {
-    std::puts("qmc 0.1.0 (format 1.0)");
+    std::puts("qmc 0.1.0 (format 1.4)");
     return 0;
   }
   if (command == "encode") return qmc::cli::run_encode(argc - 1, argv + 1);
@@ -44,6 +46,7 @@ int main(int argc, char** argv) {
   if (command == "verify") return qmc::cli::run_verify(argc - 1, argv + 1);
   if (command == "conform") return qmc::cli::run_conform(argc - 1, argv + 1);
   if (command == "compare") return qmc::cli::run_compare(argc - 1, argv + 1);
+  if (command == "gim") return qmc::cli::run_gim(argc - 1, argv + 1);
   std::fprintf(stderr, "qmc: unknown command '%s'\n\n%s", command.c_str(), kUsage);
   return qmc::cli::kExitUsage;
 }

@@ -50,6 +50,36 @@ struct LoopLevel {
 // The binary32 mesh of a level (section 12.8).
 Mesh level_mesh(const LoopLevel& level);
 
+// Section 13: a geometry image as decoded so far.
+struct GimPlaneData {
+  uint8_t kind = 0;              // 13.2: 0..2 X Y Z, 3..5 normal, 6 curvature, 7 colour, 8 other
+  double offset = 0, step = 0;   // format 0 (unsigned 16-bit): value = offset + s * step
+  std::vector<uint32_t> samples; // W * H, raster order: u16 values or binary32 bit patterns
+  uint64_t chunk_bytes = 0;      // the GPLN chunk, header and CRC included
+};
+
+struct GeometryImageData {
+  bool present = false;          // the file has GIMG
+  uint32_t width = 0, height = 0;
+  uint8_t format = 0;            // 0 unsigned 16-bit, 1 binary32
+  uint8_t face_mode = 0;         // 0 grid quads, 1 grid triangles, 2 GFAC triangles
+  uint8_t flags = 0;             // bit 0 mask, bit 1 blank samples stored
+  uint8_t plane_count = 0;       // P of GIMG
+  std::vector<GimPlaneData> planes;      // decoded so far, GIMG's kinds and scales for all P
+  std::vector<uint8_t> occupied;         // W * H, 0/1 (all 1 without GMSK)
+  std::vector<uint32_t> seam_pairs;      // a0 b0 a1 b1 ...: pixels joined by GSEM
+  std::vector<uint32_t> triangles;       // face mode 2: 3 raster indices per triangle
+  std::vector<uint32_t> vertex_pixels;   // 13.9: each output vertex's representative pixel
+  uint64_t mask_bytes = 0, seam_bytes = 0, face_bytes = 0;  // chunk sizes, header and CRC included
+  int planes_decoded() const {
+    int n = 0;
+    for (const GimPlaneData& p : planes) n += p.samples.empty() ? 0 : 1;
+    return n;
+  }
+  // The value of sample s of plane i (13.2), in binary64.
+  double value(int plane, uint32_t pixel) const;
+};
+
 struct DecodedFile {
   // Positions dequantized per section 6.4; for a progressive file the mesh
   // of the finest level decoded so far (section 12.8).
@@ -76,6 +106,9 @@ struct DecodedFile {
   // levels decoded so far, levels[0] the base mesh.
   uint8_t loop_level_count = 0;
   std::vector<LoopLevel> levels;
+  // Section 13: the geometry image of a file with GIMG; mesh is its 13.9 mesh
+  // once plane 2 has arrived.
+  GeometryImageData gim;
 };
 
 struct DecoderLimits {

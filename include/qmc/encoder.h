@@ -21,6 +21,32 @@ enum class ConnectivityChoice : uint8_t {
   kPolygon,  // always the polygon coder (section 5.4)
 };
 
+// Section 13: how to make a geometry image (seeds 000 and 002).
+enum class GimSampling : uint8_t {
+  kRegular,    // n x n samples evenly spaced on the parametrization
+  kAdaptive,   // seed 000 section 3.1: vertex-density equalization
+  kHausdorff,  // section 3.1, then the Hausdorff-driven adjustment of 3.2-3.3
+};
+
+struct GeometryImageOptions {
+  // > 0: write a geometry image (section 13) instead of CONN/POSN. For a
+  // sampled image the size is size x size pixels; for a topology-preserving
+  // one it is the largest width or height the generator may use.
+  uint32_t size = 0;
+  GimSampling sampling = GimSampling::kRegular;
+  // Seed 002: every input vertex on its own pixel, the input's triangles in
+  // GFAC; lossless with float samples, within rounding with 16-bit ones.
+  bool topology_preserving = false;
+  bool float_samples = false;        // binary32 planes (format 1) instead of 16-bit
+  bool quads = false;                // grid face mode 0 (quads) instead of 1 (triangles)
+  bool store_blank_pixels = false;   // code the samples of blank pixels (flag bit 1)
+  bool normal_planes = false;        // add unit-normal planes (kinds 3, 4, 5)
+  // Seed 000 section 4: a region of interest (the text format of
+  // src/encoder/gim_roi.h: vertex / face lists or a box); empty: none.
+  std::string roi;
+  uint32_t hausdorff_iterations = 2000;  // bound of seed 000's algorithm 1
+};
+
 struct EncodeOptions {
   int position_bits = kDefaultPositionBits;  // 1..30, section 6.1
   ConnectivityChoice connectivity = ConnectivityChoice::kAuto;
@@ -40,6 +66,7 @@ struct EncodeOptions {
   // the input surface, not its vertices. The input must be a manifold,
   // consistently oriented triangle mesh; position_bits applies to the base.
   int progressive_levels = 0;
+  GeometryImageOptions gim;
   // Called during long operations (the progressive pipeline) with a stage
   // name and the fraction done, 0..1; may be empty.
   std::function<void(const char* stage, double fraction)> progress;
@@ -81,6 +108,21 @@ struct LoopEncodeStats {
   double seconds_simplify = 0, seconds_fit = 0, seconds_remesh = 0, seconds_code = 0;
 };
 
+// Section 13: what the geometry-image encoder did.
+struct GimEncodeStats {
+  uint32_t width = 0, height = 0;
+  int genus = 0, boundary_loops = 0;
+  uint32_t polygons_split = 0;       // input faces of degree > 3 fan-triangulated
+  uint32_t unreferenced_vertices = 0;  // input vertices no face uses: not in the image
+  uint32_t cut_nodes = 0, cut_paths = 0, seam_pairs = 0, occupied = 0;
+  uint32_t hausdorff_iterations = 0;
+  double hausdorff_before = -1, hausdorff_after = -1;  // seed 000 algorithm 1, absolute units
+  double seconds_cut = 0, seconds_parametrize = 0, seconds_sample = 0, seconds_adjust = 0, seconds_code = 0;
+  std::vector<int> plane_predictors;
+  std::vector<uint64_t> plane_bytes;  // GPLN chunks
+  uint64_t mask_bytes = 0, seam_bytes = 0, face_bytes = 0;
+};
+
 struct EncodeStats {
   ConnectivityMethod method = ConnectivityMethod::kIndexed;
   std::string fallback_reason;  // why the quad coder was not used (kAuto), empty if it was
@@ -88,6 +130,7 @@ struct EncodeStats {
   QuadCoderStats quad;          // filled when method == kQuad
   PolygonCoderStats polygon;    // filled when method == kPolygon
   LoopEncodeStats loop;         // filled for a progressive file (progressive_levels > 0)
+  GimEncodeStats gim;           // filled for a geometry image (gim.size > 0)
   std::vector<ChunkStats> chunks;
   uint64_t total_bytes = 0;
   // Vertex order of the file: file_vertex[i] is the input index of the

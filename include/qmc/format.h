@@ -12,10 +12,10 @@ inline constexpr uint8_t kSignature[8] = {0x89, 'Q', 'M', 'C', '\r', '\n', 0x1A,
 
 // Section 4.1: the format version this library writes and reads. Minor 1
 // added connectivity method 1, minor 2 method 2, minor 3 the progressive
-// chunks LOOP and LEVL; a file says the lowest minor version that defines
-// everything it uses.
+// chunks LOOP and LEVL, minor 4 the geometry-image chunks; a file says the
+// lowest minor version that defines everything it uses.
 inline constexpr uint8_t kFormatMajor = 1;
-inline constexpr uint8_t kFormatMinor = 3;
+inline constexpr uint8_t kFormatMinor = 4;
 
 // Section 3.2: a chunk payload is at most 2^31 - 1 bytes.
 inline constexpr uint32_t kMaxChunkLength = 0x7FFFFFFFu;
@@ -35,6 +35,13 @@ inline constexpr uint32_t kChunkOrder = chunk_type('o', 'R', 'D', 'R');
 // Section 12: progressive Loop levels, the header and one chunk per level.
 inline constexpr uint32_t kChunkLoop = chunk_type('L', 'O', 'O', 'P');
 inline constexpr uint32_t kChunkLevel = chunk_type('L', 'E', 'V', 'L');
+// Section 13: geometry images: header, occupancy mask, seams, triangles over
+// pixels, and one chunk per plane.
+inline constexpr uint32_t kChunkGeometryImage = chunk_type('G', 'I', 'M', 'G');
+inline constexpr uint32_t kChunkGimMask = chunk_type('G', 'M', 'S', 'K');
+inline constexpr uint32_t kChunkGimSeams = chunk_type('G', 'S', 'E', 'M');
+inline constexpr uint32_t kChunkGimFaces = chunk_type('G', 'F', 'A', 'C');
+inline constexpr uint32_t kChunkGimPlane = chunk_type('G', 'P', 'L', 'N');
 
 // Section 3.3: bit 5 of the first type byte clear (upper-case letter) = critical.
 constexpr bool chunk_is_critical(uint32_t type) { return ((type >> 24) & 0x20u) == 0; }

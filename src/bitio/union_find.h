@@ -3,6 +3,7 @@
 // vertex identifications of spec 5.4.7, the encoder's fans).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -21,5 +22,15 @@ inline void union_find_join(std::vector<uint32_t>& parent, uint32_t a, uint32_t 
   if (a < b) parent[b] = a;
   else parent[a] = b;
 }
+
+// The same as an object over 0 .. n - 1.
+struct UnionFind {
+  std::vector<uint32_t> parent;
+  explicit UnionFind(size_t n) : parent(n) {
+    for (size_t i = 0; i < n; ++i) parent[i] = uint32_t(i);
+  }
+  uint32_t find(uint32_t x) { return union_find_root(parent, x); }
+  void unite(uint32_t a, uint32_t b) { union_find_join(parent, a, b); }
+};
 
 }  // namespace qmc

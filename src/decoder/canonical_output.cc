@@ -1,5 +1,5 @@
 // The canonical serialization of a decoded file (spec/qmc-format.md sections
-// 10.2 and 12.9), hashed by the conformance manifest.
+// 10.2, 12.9 and 13.10), hashed by the conformance manifest.
 #include <cstring>
 
 #include "bitio/byte_io.h"
@@ -23,10 +23,41 @@ void append_mesh(std::vector<uint8_t>* out, const Mesh& mesh, const std::vector<
   for (uint32_t v : mesh.corners) put_u32le(out, v);
 }
 
+// Section 13.10.
+void append_geometry_image(std::vector<uint8_t>* out, const DecodedFile& file) {
+  const GeometryImageData& g = file.gim;
+  append_tag(out, "QMCGIM01");
+  put_u32le(out, g.width);
+  put_u32le(out, g.height);
+  put_u8(out, g.format);
+  put_u8(out, g.face_mode);
+  put_u8(out, g.flags);
+  put_u8(out, g.plane_count);
+  for (const GimPlaneData& p : g.planes) {
+    put_u8(out, p.kind);
+    put_f64le(out, p.offset);
+    put_f64le(out, p.step);
+  }
+  out->insert(out->end(), g.occupied.begin(), g.occupied.end());
+  for (const GimPlaneData& p : g.planes)
+    for (uint32_t s : p.samples) put_u32le(out, s);
+  const Mesh& mesh = file.mesh;
+  put_u32le(out, uint32_t(mesh.vertex_count()));
+  put_u32le(out, uint32_t(mesh.face_count()));
+  for (float x : mesh.positions) put_f32le(out, x);
+  for (uint32_t p : g.vertex_pixels) put_u32le(out, p);
+  for (uint32_t d : mesh.face_sizes) put_u32le(out, d);
+  for (uint32_t v : mesh.corners) put_u32le(out, v);
+}
+
 }  // namespace
 
 std::vector<uint8_t> canonical_output(const DecodedFile& file) {
   std::vector<uint8_t> out;
+  if (file.gim.present) {
+    append_geometry_image(&out, file);
+    return out;
+  }
   if (file.loop_level_count == 0 || file.levels.empty()) {
     append_mesh(&out, file.mesh, file.quantized);
     return out;

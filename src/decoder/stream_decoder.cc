@@ -7,6 +7,7 @@
 #include "bitio/byte_io.h"
 #include "bitio/crc32.h"
 #include "decoder/connectivity_decoder.h"
+#include "decoder/gim_decoder.h"
 #include "decoder/loop_level_decoder.h"
 #include "decoder/order_decoder.h"
 #include "decoder/position_decoder.h"
@@ -25,6 +26,7 @@ struct StreamDecoder::State {
   uint64_t base_bytes = 0;  // CONN and POSN chunks of a progressive file
   LoopEdges level_edges;    // section 12.3: edges of the finest level so far
   DecodedFile file;
+  GimChunkDecoder gim{&file};  // section 13
   Status error;
 
   Status consume(const uint8_t* data, size_t size, size_t* used);
@@ -134,6 +136,9 @@ Status StreamDecoder::State::handle_chunk(uint32_t type, const uint8_t* payload,
   info.known = true;
   if (!header_seen && type != kChunkHeader)
     return order_error("the first chunk must be QHDR, found " + chunk_type_name(type));
+  if (gim.active() && (type == kChunkConnectivity || type == kChunkPositions || type == kChunkLoop ||
+                       type == kChunkLevel || type == kChunkOrder))
+    return order_error(chunk_type_name(type) + " in a geometry-image file (section 13.1)");
   Status s;
   switch (type) {
     case kChunkHeader: s = handle_header(payload, length); break;
@@ -144,6 +149,13 @@ Status StreamDecoder::State::handle_chunk(uint32_t type, const uint8_t* payload,
     case kChunkOrder: s = handle_order(payload, length); break;
     case kChunkLoop: s = handle_loop(payload, length); break;
     case kChunkLevel: s = handle_level(payload, length); break;
+    case kChunkGeometryImage:
+      s = gim.header(payload, length, connectivity_seen || positions_seen || file.loop_level_count > 0);
+      break;
+    case kChunkGimMask: s = gim.mask(payload, length); break;
+    case kChunkGimSeams: s = gim.seams(payload, length); break;
+    case kChunkGimFaces: s = gim.faces(payload, length); break;
+    case kChunkGimPlane: s = gim.plane(payload, length); break;
     default:
       if (info.critical)
         return Status(ErrorCode::kUnknownCriticalChunk, "unknown critical chunk " + chunk_type_name(type));
@@ -252,6 +264,12 @@ Status StreamDecoder::State::handle_level(const uint8_t* payload, uint32_t lengt
 
 Status StreamDecoder::State::handle_end(uint32_t length) {
   // Section 3.6: order rules before payload checks.
+  if (gim.active()) {
+    if (Status s = gim.check_end(); !s.ok()) return s;
+    if (length != 0) return Status(ErrorCode::kBadChunkPayload, "QEND payload must be empty");
+    complete = true;
+    return Status::Ok();
+  }
   if (!connectivity_seen || !positions_seen)
     return order_error(std::string("QEND before ") + (connectivity_seen ? "POSN" : "CONN"));
   if (file.loop_level_count > 0 && file.levels.size() <= file.loop_level_count)
@@ -294,8 +312,8 @@ Status StreamDecoder::finish() {
 }
 
 bool StreamDecoder::complete() const { return state_->complete; }
-bool StreamDecoder::has_connectivity() const { return state_->connectivity_seen; }
-bool StreamDecoder::has_positions() const { return state_->positions_seen; }
+bool StreamDecoder::has_connectivity() const { return state_->connectivity_seen || state_->gim.mesh_ready(); }
+bool StreamDecoder::has_positions() const { return state_->positions_seen || state_->gim.mesh_ready(); }
 int StreamDecoder::complete_level() const {
   const DecodedFile& f = state_->file;
   return f.loop_level_count > 0 && state_->positions_seen ? int(f.levels.size()) - 1 : -1;

@@ -7,6 +7,7 @@
 
 #include "bitio/byte_io.h"
 #include "encoder/chunk_writer.h"
+#include "encoder/gim_encoder.h"
 #include "encoder/encoder_internal.h"
 #include "encoder/indexed_connectivity_encoder.h"
 #include "encoder/loop_encoder.h"
@@ -177,7 +178,10 @@ Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_
   EncodeStats local;
   EncodeStats& st = stats ? *stats : local;
   st = EncodeStats{};
+  if (options.progressive_levels > 0 && options.gim.size > 0)
+    return invalid("a file is either progressive (section 12) or a geometry image (section 13), not both");
   if (options.progressive_levels > 0) return encode_loop_levels(mesh, options, out, &st);
+  if (options.gim.size > 0) return encode_geometry_image(mesh, options, out, &st);
   FileConnectivity conn;
   if (Status s = choose_connectivity(mesh, options, &conn, &st); !s.ok()) return s;
 
