@@ -1193,6 +1193,20 @@ void write_geometry_image_vectors(VectorWriter* w) {
   write_gim_header_errors(w, torus);
   write_gim_order_errors(w, torus, disk);
   write_gim_payload_errors(w, torus, disk, sparse);
+  // 13.9 step 3's cleaning: seams that join two corners of a block. Pixels
+  // 0 and 1 are one vertex (block (0,0) keeps a triangle), 4 and 8 too
+  // (block (1,1) repeats a vertex across the diagonal and is dropped).
+  qmc::GimSamples joined;
+  joined.width = joined.height = 3;
+  for (uint32_t p = 0; p < 9; ++p) joined.xyz.insert(joined.xyz.end(), {double(p % 3), double(p / 3), 0.125 * (p % 4)});
+  joined.seams = {{0, 1}, {4, 8}};
+  joined.xyz[3] = joined.xyz[0], joined.xyz[4] = joined.xyz[1], joined.xyz[5] = joined.xyz[2];
+  joined.xyz[24] = joined.xyz[12], joined.xyz[25] = joined.xyz[13], joined.xyz[26] = joined.xyz[14];
+  w->valid("valid_gim_u16_seams_collapse_quads", gim_file(joined, false, true), nullptr);
+  w->valid("valid_gim_u16_seams_collapse_triangles", gim_file(joined, false), nullptr);
+  Chunks c = sparse;
+  c.insert(c.begin() + long(find_chunk(c, qmc::kChunkGimFaces)) + 1, Chunk{qmc::kChunkGimSeams, varints({1, 0, 2, 1, 0, 0})});
+  w->invalid("invalid_gim_seams_after_faces", join_chunks(c), qmc::ErrorCode::kChunkOrder);
 }
 
 }  // namespace

@@ -40,6 +40,28 @@ Status read_plane_header(ByteReader* in, int index, uint8_t format, GimPlaneData
   return Status::Ok();
 }
 
+std::vector<SeamPair> seam_list(const GeometryImageData& g) {
+  std::vector<SeamPair> seams(g.seam_pairs.size() / 2);
+  for (size_t i = 0; i < seams.size(); ++i) seams[i] = {g.seam_pairs[2 * i], g.seam_pairs[2 * i + 1]};
+  return seams;
+}
+
+// 13.8: no triangle may collapse once the seams (all known: GSEM comes
+// before GFAC) join its corners.
+Status check_joined_triangles(const GeometryImageData& g) {
+  const std::vector<SeamPair> seams = seam_list(g);
+  GimTopologyInput joined;
+  joined.width = g.width;
+  joined.height = g.height;
+  joined.occupied = g.occupied.empty() ? nullptr : &g.occupied;
+  joined.seams = &seams;
+  joined.mode = GimFaceMode::kExplicitTriangles;
+  joined.triangles = &g.triangles;
+  GimTopology topology;
+  if (Status s = build_gim_topology(joined, &topology); !s.ok()) return Status(s.code(), "GFAC: " + s.message());
+  return Status::Ok();
+}
+
 }  // namespace
 
 double GeometryImageData::value(int plane, uint32_t pixel) const {
@@ -120,6 +142,7 @@ Status GimChunkDecoder::seams(const uint8_t* payload, uint32_t length) {
   if (Status s = require_image("GSEM"); !s.ok()) return s;
   GeometryImageData& g = file_->gim;
   if (seams_seen_) return order_error("a second GSEM");
+  if (faces_seen_) return order_error("GSEM after GFAC");
   if ((g.flags & 1) != 0 && !mask_seen_) return order_error("GSEM before GMSK");
   ByteReader in(payload, length);
   uint64_t runs = 0;
@@ -209,6 +232,7 @@ Status GimChunkDecoder::faces(const uint8_t* payload, uint32_t length) {
   }
   if (rc.overrun()) return Status(ErrorCode::kTruncated, "GFAC: the stream ends early");
   if (rc.unread() != 0) return payload_error("GFAC: " + std::to_string(rc.unread()) + " bytes after the last triangle");
+  if (Status s = check_joined_triangles(g); !s.ok()) return s;
   g.face_bytes = 12 + uint64_t(length);
   faces_seen_ = true;
   return Status::Ok();
@@ -241,8 +265,7 @@ Status GimChunkDecoder::plane(const uint8_t* payload, uint32_t length) {
 Status GimChunkDecoder::build_mesh() {
   GeometryImageData& g = file_->gim;
   const size_t pixels = size_t(g.width) * g.height;
-  std::vector<SeamPair> seams(g.seam_pairs.size() / 2);
-  for (size_t i = 0; i < seams.size(); ++i) seams[i] = {g.seam_pairs[2 * i], g.seam_pairs[2 * i + 1]};
+  const std::vector<SeamPair> seams = seam_list(g);
   GimTopologyInput in;
   in.width = g.width;
   in.height = g.height;
