@@ -125,6 +125,11 @@ contains gim-topology-exact "$work/out" "bit-identical"
 check gim-normals 0 "$qmc" encode "$work/torus.obj" "$work/gimn.qmc" --gim 17 --gim-normals
 check gim-normals-info 0 "$qmc" info "$work/gimn.qmc"
 contains gim-normals-planes "$work/out" "6 planes"
+check gim-info-json 0 "$qmc" info --json "$work/gimn.qmc"
+contains gim-info-json-image "$work/out" '"geometry_image":{"width":17,"height":17'
+check info-json-not-gim 0 "$qmc" info --json "$work/torus.qmc"
+contains info-json-not-gim-null "$work/out" '"geometry_image":null'
+
 check gim-options-need-size 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --sampling adaptive
 check gim-bad-sampling 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --gim 33 --sampling best
 check gim-not-with-progressive 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --gim 33 --progressive

@@ -115,6 +115,13 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
                 l.edge_points, l.zero_displacements, l.step);
   }
   std::printf("],");
+  if (f.gim.present)
+    std::printf("\"geometry_image\":{\"width\":%u,\"height\":%u,\"format\":%u,\"face_mode\":%u,\"flags\":%u,"
+                "\"planes\":%u,\"seam_pairs\":%zu},",
+                f.gim.width, f.gim.height, unsigned(f.gim.format), unsigned(f.gim.face_mode), unsigned(f.gim.flags),
+                unsigned(f.gim.plane_count), f.gim.seam_pairs.size() / 2);
+  else
+    std::printf("\"geometry_image\":null,");
   std::printf("\"bits_per_vertex\":%.4f,\"chunks\":[",
               f.mesh.vertex_count() ? 8.0 * double(size) / double(f.mesh.vertex_count()) : 0.0);
   for (size_t i = 0; i < f.chunks.size(); ++i) {

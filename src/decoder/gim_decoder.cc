@@ -277,11 +277,13 @@ Status GimChunkDecoder::build_mesh() {
   // steps 2 and 3; blank pixels are never read.
   std::vector<double> xyz(pixels * 3, 0.0);
   GimTopology topology;
-  // Vertex numbering first, so positions are checked in vertex order.
+  // Vertex numbering first (no faces: an empty triangle list), so positions
+  // are checked in vertex order before the faces need them.
   {
+    const std::vector<uint32_t> no_triangles;
     GimTopologyInput numbering = in;
-    numbering.mode = GimFaceMode::kGridQuads;
-    numbering.xyz = nullptr;
+    numbering.mode = GimFaceMode::kExplicitTriangles;
+    numbering.triangles = &no_triangles;
     if (Status s = build_gim_topology(numbering, &topology); !s.ok()) return Status(s.code(), "GSEM: " + s.message());
   }
   Mesh& mesh = file_->mesh;
