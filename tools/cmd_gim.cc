@@ -172,7 +172,7 @@ Status import_image(const std::string& dir, GimRawImage* g) {
   std::string text;
   if (!std::getline(f, text) || text != "qmc-geometry-image 1")
     return bad(manifest, "the first line must be 'qmc-geometry-image 1'");
-  for (int n = 0; std::getline(f, text); ++n) {
+  while (std::getline(f, text)) {
     std::istringstream line(text);
     std::string key;
     if (!(line >> key)) continue;

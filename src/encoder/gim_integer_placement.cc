@@ -59,21 +59,6 @@ int64_t orient(Pt a, Pt b, Pt c) { return (b.x - a.x) * (c.y - a.y) - (c.x - a.x
 
 uint64_t key(int64_t x, int64_t y) { return (uint64_t(x) << 32) ^ uint64_t(y); }
 
-struct Incidence {
-  std::vector<uint32_t> offset, tri;
-};
-
-Incidence incidence(const std::vector<uint32_t>& tris, size_t nv) {
-  Incidence in;
-  in.offset.assign(nv + 1, 0);
-  for (uint32_t v : tris) ++in.offset[v + 1];
-  for (size_t v = 0; v < nv; ++v) in.offset[v + 1] += in.offset[v];
-  in.tri.resize(tris.size());
-  std::vector<uint32_t> fill(in.offset.begin(), in.offset.end() - 1);
-  for (size_t c = 0; c < tris.size(); ++c) in.tri[fill[tris[c]]++] = uint32_t(c / 3);
-  return in;
-}
-
 // Eq. (3): min over vertices of min over neighbours of max(|dx|, |dy|).
 double grid_spacing(const std::vector<uint32_t>& tris, const std::vector<double>& uv) {
   double s = INFINITY;
@@ -89,7 +74,7 @@ double grid_spacing(const std::vector<uint32_t>& tris, const std::vector<double>
 // The layout being built at one scale.
 struct Grid {
   const PlanarDisk* disk = nullptr;
-  const Incidence* inc = nullptr;
+  const VertexCorners* inc = nullptr;
   int64_t X = 0, Y = 0;              // border lines x = 0, X and y = 0, Y
   std::vector<Pt> p;
   std::vector<double> target;        // 2 per vertex, scaled parametrization
@@ -126,7 +111,7 @@ Pt snap(const Grid& g, uint8_t sides, int64_t x, int64_t y) {
 
 bool triangles_positive(const Grid& g, uint32_t v, Pt at) {
   for (uint32_t k = g.inc->offset[v]; k < g.inc->offset[v + 1]; ++k) {
-    const uint32_t* c = g.tri(g.inc->tri[k]);
+    const uint32_t* c = g.tri(g.inc->corner[k] / 3);
     Pt q[3];
     for (int i = 0; i < 3; ++i) q[i] = c[i] == v ? at : g.p[c[i]];
     if (orient(q[0], q[1], q[2]) <= 0) return false;
@@ -174,7 +159,7 @@ struct Pocket {
 };
 
 // The outward interior vertices reached from the run through triangles.
-void flood_pocket(const PlanarDisk& disk, const Incidence& inc, const std::vector<uint8_t>& on_loop, Pocket* pk) {
+void flood_pocket(const PlanarDisk& disk, const VertexCorners& inc, const std::vector<uint8_t>& on_loop, Pocket* pk) {
   std::vector<uint32_t> stack = pk->run;
   std::unordered_set<uint32_t> seen(stack.begin(), stack.end());
   while (!stack.empty()) {
@@ -182,14 +167,14 @@ void flood_pocket(const PlanarDisk& disk, const Incidence& inc, const std::vecto
     stack.pop_back();
     for (uint32_t k = inc.offset[v]; k < inc.offset[v + 1]; ++k)
       for (int i = 0; i < 3; ++i) {
-        const uint32_t u = (*disk.triangles)[3 * size_t(inc.tri[k]) + i];
+        const uint32_t u = (*disk.triangles)[3 * size_t(inc.corner[k] / 3) + i];
         if (on_loop[u] || !(disk.sides[u] & kSideOutward) || !seen.insert(u).second) continue;
         pk->inner.push_back(u), stack.push_back(u);
       }
   }
 }
 
-std::vector<Pocket> find_pockets(const PlanarDisk& disk, const Incidence& inc) {
+std::vector<Pocket> find_pockets(const PlanarDisk& disk, const VertexCorners& inc) {
   const std::vector<uint32_t>& loop = disk.boundary_loop;
   const size_t n = loop.size();
   std::vector<uint8_t> on_loop(disk.sides.size(), 0);
@@ -226,7 +211,7 @@ void place_pocket_inner(const Pocket& pk, Grid* g) {
       double sx = 0, sy = 0, m = 0;
       for (uint32_t k = g->inc->offset[v]; k < g->inc->offset[v + 1]; ++k)
         for (int j = 0; j < 3; ++j) {
-          const uint32_t u = g->tri(g->inc->tri[k])[j];
+          const uint32_t u = g->tri(g->inc->corner[k] / 3)[j];
           if (u != v) sx += pos(u, 0), sy += pos(u, 1), m += 1;  // each neighbour twice: same average
         }
       if (m == 0) continue;
@@ -528,7 +513,7 @@ Status place_on_integer_grid(const PlanarDisk& disk, const std::vector<double>& 
   if (uint64_t(nv) > opt.max_pixels || uint64_t(nv) > uint64_t(opt.max_side) * opt.max_side)
     return invalid("an image of at most " + std::to_string(opt.max_side) + " x " + std::to_string(opt.max_side) + " and " +
                    std::to_string(opt.max_pixels) + " pixels cannot hold " + std::to_string(nv) + " vertices");
-  const Incidence inc = incidence(tris, nv);
+  const VertexCorners inc = vertex_corners(tris, nv);
   const std::vector<Pocket> pockets = find_pockets(disk, inc);
   const double S = grid_spacing(tris, uv);
   st.grid_spacing = S;

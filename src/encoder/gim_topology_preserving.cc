@@ -46,21 +46,6 @@ struct Wedge {
   double alpha, beta, gamma;
 };
 
-struct OneRing {
-  std::vector<uint32_t> offset, corner;  // corner: 3 * t + position of v
-};
-
-OneRing one_rings(const std::vector<uint32_t>& tris, size_t nv) {
-  OneRing r;
-  r.offset.assign(nv + 1, 0);
-  for (uint32_t v : tris) ++r.offset[v + 1];
-  for (size_t v = 0; v < nv; ++v) r.offset[v + 1] += r.offset[v];
-  r.corner.resize(tris.size());
-  std::vector<uint32_t> fill(r.offset.begin(), r.offset.end() - 1);
-  for (size_t c = 0; c < tris.size(); ++c) r.corner[fill[tris[c]]++] = uint32_t(c);
-  return r;
-}
-
 // The point minimizing the variance of the incident areas (eq. 2); the
 // coordinates fixed by the border stay. False when the system is singular.
 bool equal_area_point(const std::vector<Wedge>& w, uint8_t sides, double x0, double y0, double* x, double* y) {
@@ -93,7 +78,7 @@ bool equal_area_point(const std::vector<Wedge>& w, uint8_t sides, double x0, dou
 }
 
 // Smallest height (doubled area / longest edge) of v's triangles with v at (x, y).
-double min_altitude(const PlanarDisk& disk, const OneRing& ring, uint32_t v, const std::vector<double>& p, double x, double y) {
+double min_altitude(const PlanarDisk& disk, const VertexCorners& ring, uint32_t v, const std::vector<double>& p, double x, double y) {
   const std::vector<uint32_t>& tris = *disk.triangles;
   double best = INFINITY;
   for (uint32_t k = ring.offset[v]; k < ring.offset[v + 1]; ++k) {
@@ -109,7 +94,7 @@ double min_altitude(const PlanarDisk& disk, const OneRing& ring, uint32_t v, con
 
 // Moves vertex v towards its equal-area point, halving the move until no
 // incident triangle that was positive loses more than its floor.
-bool relax_vertex(const PlanarDisk& disk, const OneRing& ring, uint32_t v, double w_rect, double h_rect,
+bool relax_vertex(const PlanarDisk& disk, const VertexCorners& ring, uint32_t v, double w_rect, double h_rect,
                   std::vector<double>* uv, std::vector<Wedge>* wedges) {
   const std::vector<uint32_t>& tris = *disk.triangles;
   std::vector<double>& p = *uv;
@@ -250,7 +235,7 @@ void equalize_triangle_areas(const PlanarDisk& disk, const TopologyPreservingOpt
   const size_t nv = disk.sides.size();
   double w = 0, h = 0;
   for (size_t v = 0; v < nv; ++v) w = std::max(w, (*uv)[2 * v]), h = std::max(h, (*uv)[2 * v + 1]);
-  const OneRing ring = one_rings(tris, nv);
+  const VertexCorners ring = vertex_corners(tris, nv);
   // Outward vertices keep their place, and so do the other corners of their
   // triangles: sliding one past the outward vertex would undo its pocket.
   std::vector<uint8_t> pinned(nv, 0);
@@ -329,6 +314,17 @@ Status make_topology_preserving_image(const GimTriMesh& mesh, const DiskCut& cut
   *out = std::move(result);
   if (progress) progress(1.0);
   return Status::Ok();
+}
+
+VertexCorners vertex_corners(const std::vector<uint32_t>& triangles, size_t vertex_count) {
+  VertexCorners r;
+  r.offset.assign(vertex_count + 1, 0);
+  for (uint32_t v : triangles) ++r.offset[v + 1];
+  for (size_t v = 0; v < vertex_count; ++v) r.offset[v + 1] += r.offset[v];
+  r.corner.resize(triangles.size());
+  std::vector<uint32_t> fill(r.offset.begin(), r.offset.end() - 1);
+  for (size_t c = 0; c < triangles.size(); ++c) r.corner[fill[triangles[c]]++] = uint32_t(c);
+  return r;
 }
 
 }  // namespace qmc

@@ -115,6 +115,12 @@ struct PlanarDisk {
   std::vector<uint32_t> boundary_loop;               // positive orientation
 };
 
+// The corners (3 t + i) at every vertex, in triangle order; CSR over vertices.
+struct VertexCorners {
+  std::vector<uint32_t> offset, corner;
+};
+VertexCorners vertex_corners(const std::vector<uint32_t>& triangles, size_t vertex_count);
+
 // Step 1 on uv (2 per vertex, in a [0, w] x [0, h] rectangle): Xu et al.'s
 // geometry phase of CCDT. Each free vertex moves to the point that minimizes
 // the variance of its incident triangle areas (a 2 x 2 solve; 1-D along the

@@ -26,16 +26,18 @@ struct PlaneScale {
   double offset = 0, step = 1;
 };
 
-// 13.2 format 0: one step for X, Y and Z (the largest extent over 65535), so
-// the grid is quantized isotropically, as POSN does (6.1).
-PlaneScale geometry_scale(const std::vector<double>& xyz, int axis, double* common_step) {
-  double lo = INFINITY, hi = -INFINITY;
-  for (size_t p = 0; p < xyz.size() / 3; ++p) {
-    lo = std::min(lo, xyz[3 * p + size_t(axis)]);
-    hi = std::max(hi, xyz[3 * p + size_t(axis)]);
-  }
-  *common_step = std::max(*common_step, (hi - lo) / 65535.0);
-  return {lo, 0};
+// 13.2 format 0: each axis from its minimum, one step for X, Y and Z (the
+// largest extent over 65535), so the grid is quantized isotropically, as
+// POSN does (6.1).
+void geometry_scales(const std::vector<double>& xyz, PlaneScale out[3]) {
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  for (size_t p = 0; p < xyz.size() / 3; ++p)
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], xyz[3 * p + size_t(a)]);
+      hi[a] = std::max(hi[a], xyz[3 * p + size_t(a)]);
+    }
+  const double step = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) / 65535.0;
+  for (int a = 0; a < 3; ++a) out[a] = {lo[a], step > 0 ? step : 1.0};
 }
 
 uint32_t quantize16(double value, const PlaneScale& scale) {
@@ -245,9 +247,7 @@ Status write_geometry_image(const GimSamples& s, const std::vector<GimExtraPlane
   }
   std::vector<PlaneScale> scales(values.size());
   if (g.format == 0) {
-    double common = 0;
-    for (int a = 0; a < 3; ++a) scales[size_t(a)] = geometry_scale(s.xyz, a, &common);
-    for (int a = 0; a < 3; ++a) scales[size_t(a)].step = common > 0 ? common : 1.0;
+    geometry_scales(s.xyz, scales.data());
     for (size_t i = 3; i < values.size(); ++i) {
       const auto [lo, hi] = std::minmax_element(values[i].begin(), values[i].end());
       scales[i] = {*lo, *hi > *lo ? (*hi - *lo) / 65535.0 : 1.0};
