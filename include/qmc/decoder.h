@@ -47,7 +47,7 @@ struct LoopLevel {
   uint32_t face_count() const { return uint32_t(triangles.size() / 3); }
 };
 
-// The binary32 mesh of a level (section 12.8).
+// The binary32 mesh of a level (section 12.8); empty if memory runs out.
 Mesh level_mesh(const LoopLevel& level);
 
 // Section 13: a geometry image as decoded so far.
@@ -111,13 +111,56 @@ struct DecodedFile {
   GeometryImageData gim;
 };
 
+// What an embedder lets one file cost (spec section 8.1). Each limit is
+// checked before memory is reserved for what it counts; a file beyond one is
+// rejected with kLimitExceeded, naming the limit. The defaults let a browser
+// tab survive any file: at most 256 MiB of output, a mesh of about 9 M
+// triangles. Raise them for bigger meshes (`qmc ... --max-output-mb`);
+// kNoLimit switches one off.
+inline constexpr uint64_t kNoLimit = UINT64_MAX;
 struct DecoderLimits {
-  // Largest chunk payload this decoder buffers. The format allows 2^31 - 1;
-  // an embedder may lower it to bound memory.
+  // Largest chunk payload this decoder buffers. The format allows 2^31 - 1.
   uint32_t max_chunk_length = kMaxChunkLength;
+  // Vertices and faces of any mesh the file yields: CONN's counts (5.1),
+  // every progressive level (12.5), a geometry image's mesh (13.9).
+  uint64_t max_vertices = uint64_t(1) << 24;
+  uint64_t max_faces = uint64_t(1) << 25;
+  // W x H of a geometry image (13.2); the format allows 2^24.
+  uint64_t max_pixels = uint64_t(1) << 24;
+  // LEVL chunks decoded; the levels before the limit stay in file().
+  uint32_t max_levels = 8;
+  // The size of the canonical output (10.2, 12.9, 13.10) of everything the
+  // file yields; the decoder's memory is a small multiple of it.
+  uint64_t max_output_bytes = uint64_t(256) << 20;
+
+  static DecoderLimits unlimited();
 };
 
-// Decodes a complete file held in memory.
+// What a file's first chunks say it will cost, read without decoding
+// (spec 8.1): from QHDR, LOOP, the CONN header and the GIMG header. Counts a
+// file does not have yet are 0.
+struct FileSummary {
+  uint8_t version_major = 0, version_minor = 0;
+  bool has_connectivity = false;      // the CONN header was read
+  ConnectivityMethod method = ConnectivityMethod::kIndexed;
+  uint64_t vertex_count = 0, face_count = 0;  // CONN (the base mesh of a progressive file)
+  uint8_t loop_level_count = 0;       // LOOP's K
+  uint64_t finest_face_count = 0;     // progressive: 4^K faces of the base
+  bool has_geometry_image = false;
+  uint32_t gim_width = 0, gim_height = 0;
+  uint8_t gim_plane_count = 0;
+  // A lower bound of the canonical output's size, what max_output_bytes
+  // is compared with.
+  uint64_t min_output_bytes = 0;
+};
+
+// Reads the chunks of `data` up to the CONN or GIMG header: kOk with the
+// summary, kTruncated if more bytes are needed, or the error of a chunk read
+// so far (signature, framing, CRC, QHDR, LOOP, those headers).
+Status peek(const uint8_t* data, size_t size, FileSummary* out);
+
+// Decodes a complete file held in memory. Never throws: running out of
+// memory is kLimitExceeded.
 Status decode(const uint8_t* data, size_t size, DecodedFile* out, const DecoderLimits& limits = {});
 
 // Decodes a file whose bytes arrive in pieces (section 3.5). Each complete
@@ -153,7 +196,7 @@ class StreamDecoder {
 };
 
 // The canonical byte serialization of a decoded mesh (section 10.2), whose
-// SHA-256 the conformance manifest records.
+// SHA-256 the conformance manifest records; empty if memory runs out.
 std::vector<uint8_t> canonical_output(const DecodedFile& file);
 
 }  // namespace qmc

@@ -3,6 +3,7 @@
 #include <cstring>
 
 #include "bitio/byte_io.h"
+#include "decoder/no_throw.h"
 #include "qmc/decoder.h"
 
 namespace qmc {
@@ -50,17 +51,15 @@ void append_geometry_image(std::vector<uint8_t>* out, const DecodedFile& file) {
   for (uint32_t v : mesh.corners) put_u32le(out, v);
 }
 
-}  // namespace
-
-std::vector<uint8_t> canonical_output(const DecodedFile& file) {
-  std::vector<uint8_t> out;
+void append_canonical_output(std::vector<uint8_t>* out_bytes, const DecodedFile& file) {
+  std::vector<uint8_t>& out = *out_bytes;
   if (file.gim.present) {
     append_geometry_image(&out, file);
-    return out;
+    return;
   }
   if (file.loop_level_count == 0 || file.levels.empty()) {
     append_mesh(&out, file.mesh, file.quantized);
-    return out;
+    return;
   }
   // Section 12.9: the base mesh as in 10.2, then every level in binary64.
   append_tag(&out, "QMCLOOP1");
@@ -73,6 +72,14 @@ std::vector<uint8_t> canonical_output(const DecodedFile& file) {
     for (double x : level.positions) put_f64le(&out, x);
     for (uint32_t v : level.triangles) put_u32le(&out, v);
   }
+}
+
+}  // namespace
+
+std::vector<uint8_t> canonical_output(const DecodedFile& file) {
+  std::vector<uint8_t> out;
+  QMC_TRY { append_canonical_output(&out, file); }
+  QMC_CATCH_ALL(out.clear(); out.shrink_to_fit())
   return out;
 }
 

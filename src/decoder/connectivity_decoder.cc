@@ -10,20 +10,28 @@
 
 namespace qmc {
 
+Status read_connectivity_header(const uint8_t* payload, size_t size, uint8_t* method, uint64_t* vertex_count,
+                                uint64_t* face_count, size_t* method_data) {
+  ByteReader in(payload, size);
+  if (!in.get_u8(method)) return Status(ErrorCode::kBadChunkPayload, "CONN payload is empty");
+  if (*method > uint8_t(ConnectivityMethod::kPolygon))
+    return Status(ErrorCode::kUnsupportedFeature, "connectivity method " + std::to_string(*method));
+  if (!in.get_varint(vertex_count) || *vertex_count > UINT32_MAX)
+    return Status(ErrorCode::kBadChunkPayload, "CONN vertex_count missing, malformed or above 2^32 - 1");
+  if (!in.get_varint(face_count) || *face_count > UINT32_MAX)
+    return Status(ErrorCode::kBadChunkPayload, "CONN face_count missing, malformed or above 2^32 - 1");
+  *method_data = size - in.remaining();
+  return Status::Ok();
+}
+
 Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex_count,
                            ConnectivityMethod* method, Mesh* mesh, QuadConnectivityInfo* quad_info,
                            PolygonConnectivityInfo* polygon_info) {
-  ByteReader in(payload, size);
   uint8_t method_id = 0;
   uint64_t vertices = 0, faces = 0;
-  // Fields are checked in the order of section 5.1.
-  if (!in.get_u8(&method_id)) return Status(ErrorCode::kBadChunkPayload, "CONN payload is empty");
-  if (method_id > uint8_t(ConnectivityMethod::kPolygon))
-    return Status(ErrorCode::kUnsupportedFeature, "connectivity method " + std::to_string(method_id));
-  if (!in.get_varint(&vertices) || vertices > UINT32_MAX)
-    return Status(ErrorCode::kBadChunkPayload, "CONN vertex_count missing, malformed or above 2^32 - 1");
-  if (!in.get_varint(&faces) || faces > UINT32_MAX)
-    return Status(ErrorCode::kBadChunkPayload, "CONN face_count missing, malformed or above 2^32 - 1");
+  size_t start = 0;
+  if (Status s = read_connectivity_header(payload, size, &method_id, &vertices, &faces, &start); !s.ok()) return s;
+  ByteReader in(payload + start, size - start);
   Status s;
   if (method_id == uint8_t(ConnectivityMethod::kIndexed)) {
     s = decode_indexed_connectivity(in.cursor(), in.remaining(), uint32_t(vertices), uint32_t(faces), mesh);

@@ -12,6 +12,11 @@
 
 namespace qmc {
 
+// Section 5.1: the method and the counts, checked in that section's order.
+// `method_data` receives the offset of the method data.
+Status read_connectivity_header(const uint8_t* payload, size_t size, uint8_t* method, uint64_t* vertex_count,
+                                uint64_t* face_count, size_t* method_data);
+
 // Decodes a CONN payload into mesh->face_sizes / mesh->corners. For method
 // 1, `quad` (if given) receives the flags and coding; for method 2,
 // `polygon` its coding and record counts.

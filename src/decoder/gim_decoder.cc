@@ -1,13 +1,16 @@
 // Geometry-image chunks, spec/qmc-format.md section 13 (seeds 000 and 002).
 #include "decoder/gim_decoder.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
 
 #include "bitio/byte_io.h"
+#include "bitio/exact_arith.h"
 #include "bitio/gim_face_code.h"
 #include "bitio/range_coder.h"
+#include "bitio/union_find.h"
 #include "decoder/gim_mesh_builder.h"
 #include "decoder/plane_decoder.h"
 
@@ -46,19 +49,27 @@ std::vector<SeamPair> seam_list(const GeometryImageData& g) {
   return seams;
 }
 
-// 13.8: no triangle may collapse once the seams (all known: GSEM comes
-// before GFAC) join its corners.
+// 13.8, the last check: once the seams (all known: GSEM comes before GFAC)
+// join pixels, no triangle may have two corners on one vertex. Only pixels
+// named by a seam or a triangle matter, so the union-find runs over those:
+// memory follows the two chunks, not W H, which no chunk may have justified
+// yet (13.3).
 Status check_joined_triangles(const GeometryImageData& g) {
-  const std::vector<SeamPair> seams = seam_list(g);
-  GimTopologyInput joined;
-  joined.width = g.width;
-  joined.height = g.height;
-  joined.occupied = g.occupied.empty() ? nullptr : &g.occupied;
-  joined.seams = &seams;
-  joined.mode = GimFaceMode::kExplicitTriangles;
-  joined.triangles = &g.triangles;
-  GimTopology topology;
-  if (Status s = build_gim_topology(joined, &topology); !s.ok()) return Status(s.code(), "GFAC: " + s.message());
+  std::vector<uint32_t> named(g.seam_pairs);
+  named.insert(named.end(), g.triangles.begin(), g.triangles.end());
+  std::sort(named.begin(), named.end());
+  named.erase(std::unique(named.begin(), named.end()), named.end());
+  const auto id = [&named](uint32_t pixel) {
+    return uint32_t(std::lower_bound(named.begin(), named.end(), pixel) - named.begin());
+  };
+  UnionFind classes(named.size());
+  for (size_t i = 0; i + 1 < g.seam_pairs.size(); i += 2) classes.unite(id(g.seam_pairs[i]), id(g.seam_pairs[i + 1]));
+  for (size_t t = 0; t < g.triangles.size() / 3; ++t) {
+    uint32_t v[3];
+    for (int k = 0; k < 3; ++k) v[k] = classes.find(id(g.triangles[3 * t + size_t(k)]));
+    if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0])
+      return payload_error("GFAC: triangle " + std::to_string(t) + " has two corners on the same vertex");
+  }
   return Status::Ok();
 }
 
@@ -67,7 +78,7 @@ Status check_joined_triangles(const GeometryImageData& g) {
 double GeometryImageData::value(int plane, uint32_t pixel) const {
   const GimPlaneData& p = planes[size_t(plane)];
   const uint32_t s = p.samples[pixel];
-  if (format == 0) return p.offset + double(s) * p.step;
+  if (format == 0) return p.offset + mul(double(s), p.step);
   float f;
   std::memcpy(&f, &s, sizeof f);
   return double(f);
@@ -97,6 +108,8 @@ Status GimChunkDecoder::header(const uint8_t* payload, uint32_t length, bool oth
   for (int i = 0; i < g.plane_count; ++i)
     if (Status s = read_plane_header(&in, i, g.format, &g.planes[size_t(i)]); !s.ok()) return s;
   if (in.remaining() != 0) return payload_error("GIMG: " + std::to_string(in.remaining()) + " bytes after the planes");
+  if (Status s = check_limit("GIMG: pixels", w * h, limits_->max_pixels, "max_pixels"); !s.ok()) return s;
+  if (Status s = budget_->charge(gim_image_output_bytes(w * h, g.plane_count), "GIMG"); !s.ok()) return s;
   g.width = uint32_t(w);
   g.height = uint32_t(h);
   g.present = true;
@@ -150,6 +163,9 @@ Status GimChunkDecoder::seams(const uint8_t* payload, uint32_t length) {
   if (runs > length) return Status(ErrorCode::kLimitExceeded, "GSEM: " + std::to_string(runs) + " runs in " +
                                                                   std::to_string(length) + " bytes");
   const int64_t pixels = int64_t(g.width) * g.height;
+  // 13.7: without a mask nothing has justified W H memory (13.3); a run
+  // along a row or column has at most max(W, H) pairs and takes 5 bytes.
+  const uint64_t max_unmasked_pairs = uint64_t(std::max(g.width, g.height)) * length;
   uint64_t total = 0;
   g.seam_pairs.clear();
   for (uint64_t r = 0; r < runs; ++r) {
@@ -160,6 +176,10 @@ Status GimChunkDecoder::seams(const uint8_t* payload, uint32_t length) {
     total += count;
     if (total > uint64_t(pixels))
       return Status(ErrorCode::kLimitExceeded, name + ": more seam pairs than pixels");
+    if (g.occupied.empty() && total > max_unmasked_pairs)
+      return Status(ErrorCode::kLimitExceeded, name + ": " + std::to_string(total) + " seam pairs in " +
+                                                   std::to_string(length) +
+                                                   " bytes of an image without a mask (13.7: max(W, H) per byte)");
     if (!in.get_varint(&za) || !in.get_varint(&zb)) return payload_error(name + ": a step is missing or malformed");
     const int64_t sa = zigzag_decode(za), sb = zigzag_decode(zb);
     if (a >= uint64_t(pixels) || b >= uint64_t(pixels)) return payload_error(name + ": a pixel outside the image");
@@ -204,6 +224,11 @@ Status GimChunkDecoder::faces(const uint8_t* payload, uint32_t length) {
   if (count > 2 * occupied)
     return Status(ErrorCode::kLimitExceeded, "GFAC: " + std::to_string(count) + " triangles over " +
                                                  std::to_string(occupied) + " occupied pixels");
+  // 13.8: six coded values a triangle, at most 512 decisions a byte (13.5.1).
+  if (6 * count > 512 * (uint64_t(in.remaining()) + 1))
+    return Status(ErrorCode::kLimitExceeded, "GFAC: " + std::to_string(count) + " triangles cannot fit in " +
+                                                 std::to_string(in.remaining()) + " stream bytes");
+  if (Status s = check_limit("GFAC: faces", count, limits_->max_faces, "max_faces"); !s.ok()) return s;
   RangeDecoder rc(in.cursor(), in.remaining());
   if (rc.bad_start()) return payload_error("GFAC: the stream starts with four 0xFF bytes");
   GimSignedContexts contexts[kGimFaceContextSets];
@@ -286,6 +311,10 @@ Status GimChunkDecoder::build_mesh() {
     numbering.triangles = &no_triangles;
     if (Status s = build_gim_topology(numbering, &topology); !s.ok()) return Status(s.code(), "GSEM: " + s.message());
   }
+  const uint64_t vertices = topology.pixel_of_vertex.size();
+  if (Status s = check_limit("GPLN 2: mesh vertices", vertices, limits_->max_vertices, "max_vertices"); !s.ok())
+    return s;
+  if (Status s = budget_->charge(gim_mesh_output_bytes(vertices, 0, 0), "GPLN 2: mesh"); !s.ok()) return s;
   Mesh& mesh = file_->mesh;
   mesh.positions.assign(topology.pixel_of_vertex.size() * 3, 0.0f);
   for (size_t v = 0; v < topology.pixel_of_vertex.size(); ++v) {
@@ -301,6 +330,9 @@ Status GimChunkDecoder::build_mesh() {
   }
   in.xyz = xyz.data();
   if (Status s = build_gim_topology(in, &topology); !s.ok()) return Status(s.code(), "GFAC: " + s.message());
+  const uint64_t faces = topology.face_sizes.size();
+  if (Status s = check_limit("GPLN 2: mesh faces", faces, limits_->max_faces, "max_faces"); !s.ok()) return s;
+  if (Status s = budget_->charge(4 * (faces + topology.corners.size()), "GPLN 2: mesh faces"); !s.ok()) return s;
   mesh.face_sizes = std::move(topology.face_sizes);
   mesh.corners = std::move(topology.corners);
   g.vertex_pixels = std::move(topology.pixel_of_vertex);

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 
+#include "decoder/output_budget.h"
 #include "qmc/decoder.h"
 #include "qmc/status.h"
 
@@ -13,8 +14,10 @@ namespace qmc {
 
 class GimChunkDecoder {
  public:
-  // `file` receives the image (file->gim) and, after plane 2, the mesh.
-  explicit GimChunkDecoder(DecodedFile* file) : file_(file) {}
+  // `file` receives the image (file->gim) and, after plane 2, the mesh;
+  // `limits` and `budget` are the decoder's (section 8.1).
+  GimChunkDecoder(DecodedFile* file, const DecoderLimits* limits, OutputBudget* budget)
+      : file_(file), limits_(limits), budget_(budget) {}
 
   // 13.1: what the other chunks may do once GIMG has (not) been seen.
   bool active() const { return file_->gim.present; }
@@ -33,6 +36,8 @@ class GimChunkDecoder {
   Status build_mesh();
 
   DecodedFile* file_;
+  const DecoderLimits* limits_;
+  OutputBudget* budget_;
   bool mask_seen_ = false, seams_seen_ = false, faces_seen_ = false, mesh_built_ = false;
   bool size_justified_ = false;
 };

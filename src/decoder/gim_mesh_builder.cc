@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "bitio/exact_arith.h"
 #include "bitio/union_find.h"
 
 namespace qmc {
@@ -74,7 +75,7 @@ double squared_distance(const double* xyz, uint32_t p, uint32_t q) {
   const double dx = xyz[3 * size_t{p}] - xyz[3 * size_t{q}];
   const double dy = xyz[3 * size_t{p} + 1] - xyz[3 * size_t{q} + 1];
   const double dz = xyz[3 * size_t{p} + 2] - xyz[3 * size_t{q} + 2];
-  return dx * dx + dy * dy + dz * dz;
+  return mul(dx, dx) + mul(dy, dy) + mul(dz, dz);
 }
 
 // 13.9 step 3: one 2 x 2 block. Corner order (x,y) (x+1,y) (x+1,y+1) (x,y+1)

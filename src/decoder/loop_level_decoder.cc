@@ -8,6 +8,8 @@
 
 #include "bitio/bit_reader.h"
 #include "bitio/byte_io.h"
+#include "bitio/exact_arith.h"
+#include "decoder/no_throw.h"
 #include "decoder/position_decoder.h"
 
 namespace qmc {
@@ -32,12 +34,19 @@ Status decode_loop_header(const uint8_t* payload, size_t size, uint8_t* level_co
 }
 
 Status loop_base_connectivity(const Mesh& mesh, uint32_t vertex_count, LoopMesh* base, LoopEdges* edges) {
-  base->positions.assign(3 * size_t(vertex_count), 0.0);
+  base->positions.clear();
   base->triangles.clear();
   for (size_t f = 0; f < mesh.face_count(); ++f)
     if (mesh.face_sizes[f] != 3)
       return bad_payload("CONN", "progressive base mesh face " + std::to_string(f) + " has " +
                                      std::to_string(mesh.face_sizes[f]) + " corners, not 3 (section 12.2)");
+  // 12.2: more vertices than corners breaks rule 4 whatever else holds;
+  // said before anything of size V is reserved (V is not tied to the bits).
+  if (vertex_count > mesh.corners.size())
+    return bad_payload("CONN", "progressive base mesh: " + std::to_string(vertex_count) + " vertices but " +
+                                   std::to_string(mesh.corners.size()) + " corners, so a vertex is in no face " +
+                                   "(section 12.2 rule 4)");
+  base->positions.assign(3 * size_t(vertex_count), 0.0);
   base->triangles = mesh.corners;
   if (Status s = build_loop_edges(*base, edges); !s.ok())
     return bad_payload("CONN", "progressive base mesh: " + s.message() + " (section 12.2)");
@@ -48,7 +57,7 @@ void loop_base_positions(const QuantizationInfo& info, const std::vector<uint32_
   double lo[3], step[3];
   dequantization_steps(info, lo, step);
   base->positions.resize(quantized.size());
-  for (size_t i = 0; i < quantized.size(); ++i) base->positions[i] = lo[i % 3] + double(quantized[i]) * step[i % 3];
+  for (size_t i = 0; i < quantized.size(); ++i) base->positions[i] = lo[i % 3] + mul(double(quantized[i]), step[i % 3]);
 }
 
 Status decode_level_code(const uint8_t* payload, size_t size, uint8_t expected_level, uint32_t edge_count,
@@ -94,9 +103,9 @@ void displace_edge_points(const std::vector<double>& normals, const LevelCode& c
                           LoopMesh* fine) {
   for (size_t e = 0; e < code.m.size(); ++e) {
     if (code.m[e] == 0) continue;  // 12.7: unchanged, even where w * N would not be finite
-    const double w = double(code.m[e]) * code.step;
+    const double w = mul(double(code.m[e]), code.step);
     double* x = &fine->positions[3 * (size_t(coarse_vertices) + e)];
-    for (int k = 0; k < 3; ++k) x[k] = x[k] + w * normals[3 * e + k];
+    for (int k = 0; k < 3; ++k) x[k] = x[k] + mul(w, normals[3 * e + k]);
   }
 }
 
@@ -127,12 +136,16 @@ Status decode_level(const uint8_t* payload, size_t size, uint8_t expected_level,
   return Status::Ok();
 }
 
+// Empty if memory runs out (no exception leaves the API: decoder.h).
 Mesh level_mesh(const LoopLevel& level) {
   Mesh mesh;
-  mesh.positions.resize(level.positions.size());
-  for (size_t i = 0; i < level.positions.size(); ++i) mesh.positions[i] = float(level.positions[i]);
-  mesh.face_sizes.assign(level.face_count(), 3);
-  mesh.corners = level.triangles;
+  QMC_TRY {
+    mesh.positions.resize(level.positions.size());
+    for (size_t i = 0; i < level.positions.size(); ++i) mesh.positions[i] = float(level.positions[i]);
+    mesh.face_sizes.assign(level.face_count(), 3);
+    mesh.corners = level.triangles;
+  }
+  QMC_CATCH_ALL(mesh = Mesh())
   return mesh;
 }
 

@@ -1,12 +1,13 @@
 // Loop subdivision, spec/qmc-format.md sections 12.3-12.6 (seed 003 §3.1.1
 // masks and §3.1.2 limit normals; C. Loop 1987; Hoppe et al. 1994 for the
 // boundary tangents). The arithmetic is binary64, one rounding per
-// operation, in the order written: the project builds with
-// -ffp-contract=off so that no multiply-add is fused.
+// operation, in the order written; every product goes through mul()
+// (bitio/exact_arith.h) so that no compiler flag fuses a multiply-add.
 #include "decoder/loop_subdivision.h"
 
 #include <string>
 
+#include "bitio/exact_arith.h"
 #include "bitio/union_find.h"
 
 namespace qmc {
@@ -158,14 +159,14 @@ double loop_beta(uint32_t n) {
     case 6: c = 0.5; break;
     default: {
       const double x = kTwoPi / double(n);
-      const double y = x * x;
+      const double y = mul(x, x);
       double h = kCos[9];
-      for (int k = 8; k >= 0; --k) h = kCos[k] + y * h;
-      c = 1.0 + y * h;
+      for (int k = 8; k >= 0; --k) h = kCos[k] + mul(y, h);
+      c = 1.0 + mul(y, h);
     }
   }
-  const double inner = 0.375 + 0.25 * c;
-  return (0.625 - inner * inner) / double(n);
+  const double inner = 0.375 + mul(0.25, c);
+  return (0.625 - mul(inner, inner)) / double(n);
 }
 
 void loop_subdivide(const LoopMesh& coarse, const LoopEdges& e, LoopMesh* fine) {
@@ -179,19 +180,19 @@ void loop_subdivide(const LoopMesh& coarse, const LoopEdges& e, LoopMesh* fine) 
     if (e.boundary_prev[v] != kNoVertex) {  // boundary vertex mask 1/8, 3/4, 1/8
       const double* q = p + 3 * size_t(e.boundary_prev[v]);
       const double* r = p + 3 * size_t(e.boundary_next[v]);
-      for (int k = 0; k < 3; ++k) x[k] = 0.75 * p[3 * size_t(v) + k] + 0.125 * (q[k] + r[k]);
+      for (int k = 0; k < 3; ++k) x[k] = mul(0.75, p[3 * size_t(v) + k]) + mul(0.125, q[k] + r[k]);
       continue;
     }
     const uint32_t n = e.valence[v];
     if (beta_of_valence.size() <= n) beta_of_valence.resize(n + 1, -1.0);
     if (beta_of_valence[n] < 0) beta_of_valence[n] = loop_beta(n);
     const double beta = beta_of_valence[n];
-    const double alpha = 1.0 - double(n) * beta;
+    const double alpha = 1.0 - mul(double(n), beta);
     const uint32_t* ring = &e.neighbours[e.neighbour_offset[v]];
     for (int k = 0; k < 3; ++k) {
       double sum = p[3 * size_t(ring[0]) + k];
       for (uint32_t j = 1; j < n; ++j) sum = sum + p[3 * size_t(ring[j]) + k];
-      x[k] = alpha * p[3 * size_t(v) + k] + beta * sum;
+      x[k] = mul(alpha, p[3 * size_t(v) + k]) + mul(beta, sum);
     }
   }
   for (uint32_t i = 0; i < edges; ++i) {
@@ -199,12 +200,12 @@ void loop_subdivide(const LoopMesh& coarse, const LoopEdges& e, LoopMesh* fine) 
     const double* pa = p + 3 * size_t(e.a[i]);
     const double* pb = p + 3 * size_t(e.b[i]);
     if (e.is_boundary(i)) {
-      for (int k = 0; k < 3; ++k) x[k] = 0.5 * (pa[k] + pb[k]);
+      for (int k = 0; k < 3; ++k) x[k] = mul(0.5, pa[k] + pb[k]);
       continue;
     }
     const double* pc = p + 3 * size_t(e.c[i]);
     const double* pd = p + 3 * size_t(e.d[i]);
-    for (int k = 0; k < 3; ++k) x[k] = 0.375 * (pa[k] + pb[k]) + 0.125 * (pc[k] + pd[k]);
+    for (int k = 0; k < 3; ++k) x[k] = mul(0.375, pa[k] + pb[k]) + mul(0.125, pc[k] + pd[k]);
   }
   fine->triangles.resize(coarse.triangles.size() * 4);
   uint32_t* t = fine->triangles.data();
@@ -220,9 +221,9 @@ void loop_subdivide(const LoopMesh& coarse, const LoopEdges& e, LoopMesh* fine) 
 namespace {
 
 void cross(const double* s, const double* t, double* n) {
-  n[0] = s[1] * t[2] - s[2] * t[1];
-  n[1] = s[2] * t[0] - s[0] * t[2];
-  n[2] = s[0] * t[1] - s[1] * t[0];
+  n[0] = mul(s[1], t[2]) - mul(s[2], t[1]);
+  n[1] = mul(s[2], t[0]) - mul(s[0], t[2]);
+  n[2] = mul(s[0], t[1]) - mul(s[1], t[0]);
 }
 
 }  // namespace
@@ -254,8 +255,8 @@ void edge_point_normals(const LoopMesh& fine, const LoopEdges& e, uint32_t coars
     const double* Edb = p + 3 * (size_t(coarse_vertices) + e.face_edge[g + (l + 2) % 3]);
     double u[3], v[3];
     for (int x = 0; x < 3; ++x) {
-      u[x] = B[x] + 0.5 * Ebc[x] - 0.5 * Eca[x] - A[x] - 0.5 * Ead[x] + 0.5 * Edb[x];
-      v[x] = 0.5 * B[x] - 0.5 * Ebc[x] - Eca[x] - 0.5 * A[x] + 0.5 * Ead[x] + Edb[x];
+      u[x] = B[x] + mul(0.5, Ebc[x]) - mul(0.5, Eca[x]) - A[x] - mul(0.5, Ead[x]) + mul(0.5, Edb[x]);
+      v[x] = mul(0.5, B[x]) - mul(0.5, Ebc[x]) - Eca[x] - mul(0.5, A[x]) + mul(0.5, Ead[x]) + Edb[x];
     }
     cross(v, u, &(*normals)[3 * size_t(i)]);
   }

@@ -7,6 +7,7 @@
 
 #include "bitio/bit_reader.h"
 #include "bitio/byte_io.h"
+#include "bitio/exact_arith.h"
 #include "bitio/huffman.h"
 #include "bitio/magnitude_code.h"
 
@@ -41,15 +42,6 @@ void dequantization_steps(const QuantizationInfo& info, double lo[3], double ste
     lo[a] = double(info.min[a]);
     step[a] = (double(info.max[a]) - lo[a]) / double((uint64_t(1) << info.bits) - 1);
   }
-}
-
-float dequantize(uint32_t q, float min, float max, int bits) {
-  // Binary64 throughout, one rounding per operation, then one to binary32;
-  // the build disables contraction into fused multiply-add (section 6.4).
-  const double step = (double(max) - double(min)) / double((uint64_t(1) << bits) - 1);
-  const double scaled = double(q) * step;
-  const double sum = double(min) + scaled;
-  return float(sum);
 }
 
 Status decode_positions(const uint8_t* payload, size_t size, uint32_t vertex_count, QuantizationInfo* info,
@@ -89,14 +81,14 @@ Status decode_positions(const uint8_t* payload, size_t size, uint32_t vertex_cou
     (*quantized)[i] = uint32_t(q);
   }
   if (!bits.at_clean_end()) return bad_payload("bits left over after the last vertex");
-  // Section 6.4 with the step of each axis computed once: the same binary64
-  // operations as dequantize(), hence the same results.
+  // Section 6.4, the step of each axis computed once; mul() keeps the
+  // product out of any fused multiply-add.
   double step[3], lo[3];
   dequantization_steps(*info, lo, step);
   positions->resize(quantized->size());
   for (size_t i = 0; i < quantized->size(); i += 3)
     for (int a = 0; a < 3; ++a) {
-      const double scaled = double((*quantized)[i + a]) * step[a];
+      const double scaled = mul(double((*quantized)[i + a]), step[a]);
       (*positions)[i + a] = float(lo[a] + scaled);
     }
   return Status::Ok();

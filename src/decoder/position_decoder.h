@@ -19,7 +19,4 @@ Status decode_positions(const uint8_t* payload, size_t size, uint32_t vertex_cou
 // Section 6.4: per axis, the binary64 min and step of x = min + q * step.
 void dequantization_steps(const QuantizationInfo& info, double lo[3], double step[3]);
 
-// Section 6.4: the reconstruction every conforming decoder performs.
-float dequantize(uint32_t q, float min, float max, int bits);
-
 }  // namespace qmc

@@ -2,21 +2,26 @@
 // framing, CRC, the required chunk order, and dispatch to the chunk
 // decoders. decode() is the streaming decoder fed all bytes at once.
 #include <cstring>
+#include <new>
 #include <string>
 
 #include "bitio/byte_io.h"
-#include "bitio/crc32.h"
+#include "decoder/chunk_frame.h"
 #include "decoder/connectivity_decoder.h"
 #include "decoder/gim_decoder.h"
 #include "decoder/loop_level_decoder.h"
+#include "decoder/no_throw.h"
 #include "decoder/order_decoder.h"
+#include "decoder/output_budget.h"
 #include "decoder/position_decoder.h"
 #include "qmc/decoder.h"
 
 namespace qmc {
 
 struct StreamDecoder::State {
+  explicit State(const DecoderLimits& l) : limits(l), budget(l.max_output_bytes) {}
   DecoderLimits limits;
+  OutputBudget budget;      // section 8.1
   std::vector<uint8_t> pending;  // bytes of a unit (signature or chunk) not yet complete
   uint64_t offset = 0;           // file offset of the first byte not yet consumed
   bool signature_seen = false, header_seen = false, connectivity_seen = false, positions_seen = false;
@@ -26,7 +31,7 @@ struct StreamDecoder::State {
   uint64_t base_bytes = 0;  // CONN and POSN chunks of a progressive file
   LoopEdges level_edges;    // section 12.3: edges of the finest level so far
   DecodedFile file;
-  GimChunkDecoder gim{&file};  // section 13
+  GimChunkDecoder gim{&file, &limits, &budget};  // section 13
   Status error;
 
   Status consume(const uint8_t* data, size_t size, size_t* used);
@@ -34,6 +39,8 @@ struct StreamDecoder::State {
   Status handle_chunk(uint32_t type, const uint8_t* payload, uint32_t length);
   Status handle_header(const uint8_t* payload, uint32_t length);
   Status handle_connectivity(const uint8_t* payload, uint32_t length);
+  Status check_connectivity_counts(const uint8_t* payload, uint32_t length);
+  Status check_level_counts(uint8_t level);
   Status handle_positions(const uint8_t* payload, uint32_t length);
   Status handle_order(const uint8_t* payload, uint32_t length);
   Status handle_loop(const uint8_t* payload, uint32_t length);
@@ -42,8 +49,6 @@ struct StreamDecoder::State {
 };
 
 namespace {
-
-bool is_ascii_letter(uint8_t c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'); }
 
 Status order_error(const std::string& message) { return Status(ErrorCode::kChunkOrder, message); }
 
@@ -76,6 +81,7 @@ const char* connectivity_method_name(ConnectivityMethod method) {
 
 Status StreamDecoder::State::consume_signature(const uint8_t* data, size_t size, size_t* used) {
   const size_t n = size < sizeof(kSignature) ? size : sizeof(kSignature);
+  if (n == 0) return Status::Ok();  // nothing to compare (and data may be null)
   if (std::memcmp(data, kSignature, n) != 0)
     return Status(ErrorCode::kBadSignature, "the file does not start with the qmc signature (section 3.1)");
   if (n == sizeof(kSignature)) {
@@ -95,28 +101,12 @@ Status StreamDecoder::State::consume(const uint8_t* data, size_t size, size_t* u
   while (pos < size) {
     if (complete)
       return Status(ErrorCode::kTrailingData, "at byte " + std::to_string(offset) + ": data after QEND");
-    if (size - pos < 8) break;
+    ChunkFrame frame;
+    if (Status s = read_chunk_frame(data + pos, size - pos, offset, limits.max_chunk_length, &frame); !s.ok())
+      return s;
+    if (!frame.complete) break;
+    const uint32_t type = frame.type, length = frame.length;
     const uint8_t* chunk = data + pos;
-    const uint32_t type = load_u32be(chunk);
-    const uint32_t length = load_u32le(chunk + 4);
-    for (int i = 0; i < 4; ++i)
-      if (!is_ascii_letter(chunk[i]))
-        return Status(ErrorCode::kBadChunkType, "at byte " + std::to_string(offset) + ": chunk type " +
-                                                     chunk_type_name(type) + " is not four ASCII letters");
-    if (length > kMaxChunkLength)
-      return Status(ErrorCode::kBadChunkLength, "at byte " + std::to_string(offset) + ": chunk " +
-                                                    chunk_type_name(type) + " length " + std::to_string(length) +
-                                                    " exceeds 2^31 - 1");
-    if (length > limits.max_chunk_length)
-      return Status(ErrorCode::kLimitExceeded, "at byte " + std::to_string(offset) + ": chunk " +
-                                                   chunk_type_name(type) + " length " + std::to_string(length) +
-                                                   " exceeds this decoder's limit");
-    if (size - pos < 12 + uint64_t(length)) break;
-    const uint32_t stored = load_u32le(chunk + 8 + length);
-    const uint32_t computed = crc32(chunk, 8 + size_t(length));
-    if (stored != computed)
-      return Status(ErrorCode::kBadCrc, "at byte " + std::to_string(offset) + ": chunk " + chunk_type_name(type) +
-                                            " CRC mismatch");
     if (Status s = handle_chunk(type, chunk + 8, length); !s.ok())
       return Status(s.code(), "at byte " + std::to_string(offset) + ": " + s.message());
     pos += 12 + size_t(length);
@@ -179,13 +169,30 @@ Status StreamDecoder::State::handle_header(const uint8_t* payload, uint32_t leng
   return Status::Ok();
 }
 
+// Section 8.1: CONN's counts against the embedder's limits before any memory
+// is reserved for them; the output is charged at its smallest (3 corners a
+// face), the corners beyond that once decoded.
+Status StreamDecoder::State::check_connectivity_counts(const uint8_t* payload, uint32_t length) {
+  uint8_t method = 0;
+  uint64_t vertices = 0, faces = 0;
+  size_t start = 0;
+  if (Status s = read_connectivity_header(payload, length, &method, &vertices, &faces, &start); !s.ok()) return s;
+  if (Status s = check_limit("CONN: vertices", vertices, limits.max_vertices, "max_vertices"); !s.ok()) return s;
+  if (Status s = check_limit("CONN: faces", faces, limits.max_faces, "max_faces"); !s.ok()) return s;
+  const uint64_t header = file.loop_level_count > 0 ? kLoopOutputHeaderBytes : 0;
+  return budget.charge(header + mesh_output_bytes(vertices, faces, 3 * faces), "CONN");
+}
+
 Status StreamDecoder::State::handle_connectivity(const uint8_t* payload, uint32_t length) {
   if (connectivity_seen) return order_error("a second CONN");
+  if (Status s = check_connectivity_counts(payload, length); !s.ok()) return s;
   QuadConnectivityInfo quad;
   PolygonConnectivityInfo polygon;
   if (Status s = decode_connectivity(payload, length, &vertex_count, &file.method, &file.mesh, &quad, &polygon);
       !s.ok())
     return s;
+  const uint64_t extra_corners = file.mesh.corners.size() - 3 * uint64_t(file.mesh.face_count());
+  if (Status s = budget.charge(4 * extra_corners, "CONN"); !s.ok()) return s;
   if (file.method == ConnectivityMethod::kPolygon) {
     file.polygon_coding = polygon.coding;
     file.polygon_components = polygon.components;
@@ -250,6 +257,7 @@ Status StreamDecoder::State::handle_level(const uint8_t* payload, uint32_t lengt
   if (file.levels.size() > file.loop_level_count)
     return order_error("LEVL beyond the " + std::to_string(file.loop_level_count) + " levels LOOP declared");
   const uint8_t j = uint8_t(file.levels.size());
+  if (Status s = check_level_counts(j); !s.ok()) return s;
   LoopLevel fine;
   if (Status s = decode_level(payload, length, j, file.levels.back(), level_edges, &fine); !s.ok()) return s;
   fine.chunk_bytes = 12 + uint64_t(length);
@@ -260,6 +268,18 @@ Status StreamDecoder::State::handle_level(const uint8_t* payload, uint32_t lengt
   file.levels.push_back(std::move(fine));
   file.mesh = level_mesh(file.levels.back());
   return Status::Ok();
+}
+
+// Section 8.1: level j has V + E vertices and 4 F faces of level j - 1.
+Status StreamDecoder::State::check_level_counts(uint8_t level) {
+  const std::string what = "LEVL: level " + std::to_string(level);
+  if (Status s = check_limit(what + ": levels", level, limits.max_levels, "max_levels"); !s.ok()) return s;
+  const LoopLevel& coarse = file.levels.back();
+  const uint64_t vertices = uint64_t(coarse.vertex_count()) + level_edges.edge_count();
+  const uint64_t faces = 4 * uint64_t(coarse.face_count());
+  if (Status s = check_limit(what + ": vertices", vertices, limits.max_vertices, "max_vertices"); !s.ok()) return s;
+  if (Status s = check_limit(what + ": faces", faces, limits.max_faces, "max_faces"); !s.ok()) return s;
+  return budget.charge(level_output_bytes(vertices, faces), what);
 }
 
 Status StreamDecoder::State::handle_end(uint32_t length) {
@@ -280,25 +300,39 @@ Status StreamDecoder::State::handle_end(uint32_t length) {
   return Status::Ok();
 }
 
-StreamDecoder::StreamDecoder(const DecoderLimits& limits) : state_(new State) { state_->limits = limits; }
+namespace {
+
+Status out_of_memory(uint64_t offset) {
+  return Status(ErrorCode::kLimitExceeded,
+                "at byte " + std::to_string(offset) + ": out of memory (section 8.1: lower DecoderLimits)");
+}
+
+}  // namespace
+
+StreamDecoder::StreamDecoder(const DecoderLimits& limits) : state_(new (std::nothrow) State(limits)) {}
 StreamDecoder::~StreamDecoder() = default;
 
 Status StreamDecoder::feed(const uint8_t* data, size_t size) {
+  if (!state_) return out_of_memory(0);
   State& st = *state_;
   if (!st.error.ok()) return st.error;
   size_t used = 0;
-  if (st.pending.empty()) {
-    st.error = st.consume(data, size, &used);
-    if (st.error.ok()) st.pending.assign(data + used, data + size);
-  } else {
-    st.pending.insert(st.pending.end(), data, data + size);
-    st.error = st.consume(st.pending.data(), st.pending.size(), &used);
-    if (st.error.ok()) st.pending.erase(st.pending.begin(), st.pending.begin() + std::ptrdiff_t(used));
+  QMC_TRY {
+    if (st.pending.empty()) {
+      st.error = st.consume(data, size, &used);
+      if (st.error.ok() && used < size) st.pending.assign(data + used, data + size);
+    } else {
+      if (size > 0) st.pending.insert(st.pending.end(), data, data + size);
+      st.error = st.consume(st.pending.data(), st.pending.size(), &used);
+      if (st.error.ok()) st.pending.erase(st.pending.begin(), st.pending.begin() + std::ptrdiff_t(used));
+    }
   }
+  QMC_CATCH_ALL(st.error = out_of_memory(st.offset))
   return st.error;
 }
 
 Status StreamDecoder::finish() {
+  if (!state_) return out_of_memory(0);
   State& st = *state_;
   if (!st.error.ok()) return st.error;
   if (st.complete) return Status::Ok();
@@ -311,16 +345,23 @@ Status StreamDecoder::finish() {
   return st.error;
 }
 
-bool StreamDecoder::complete() const { return state_->complete; }
-bool StreamDecoder::has_connectivity() const { return state_->connectivity_seen || state_->gim.mesh_ready(); }
-bool StreamDecoder::has_positions() const { return state_->positions_seen || state_->gim.mesh_ready(); }
+namespace {
+const DecodedFile kNoFile;
+}  // namespace
+
+bool StreamDecoder::complete() const { return state_ && state_->complete; }
+bool StreamDecoder::has_connectivity() const {
+  return state_ && (state_->connectivity_seen || state_->gim.mesh_ready());
+}
+bool StreamDecoder::has_positions() const { return state_ && (state_->positions_seen || state_->gim.mesh_ready()); }
 int StreamDecoder::complete_level() const {
+  if (!state_) return -1;
   const DecodedFile& f = state_->file;
   return f.loop_level_count > 0 && state_->positions_seen ? int(f.levels.size()) - 1 : -1;
 }
-int StreamDecoder::level_count() const { return state_->file.loop_level_count; }
-const DecodedFile& StreamDecoder::file() const { return state_->file; }
-DecodedFile StreamDecoder::take_file() { return std::move(state_->file); }
+int StreamDecoder::level_count() const { return state_ ? state_->file.loop_level_count : 0; }
+const DecodedFile& StreamDecoder::file() const { return state_ ? state_->file : kNoFile; }
+DecodedFile StreamDecoder::take_file() { return state_ ? std::move(state_->file) : DecodedFile(); }
 
 Status decode(const uint8_t* data, size_t size, DecodedFile* out, const DecoderLimits& limits) {
   StreamDecoder decoder(limits);

@@ -1,0 +1,50 @@
+// Binary64 arithmetic that stays exact under any compiler flags an embedder
+// builds the decoder with (spec 6.4, 12.4-12.7, 13.2, 13.9: one rounding per
+// operation, no fused multiply-add, no extended precision).
+//
+// A build flag such as -ffp-contract=off holds only in our own CMake build;
+// GCC ignores `#pragma STDC FP_CONTRACT`, and clang's -ffp-contract=fast
+// fuses in the back end whatever the pragmas say. So every product the spec
+// defines goes through mul(), whose result the compiler must treat as an
+// opaque, already rounded value: it cannot fuse it into a following addition.
+// What no barrier can repair (-ffast-math, x87 extended precision) stops the
+// build instead.
+#pragma once
+
+#include <cfloat>
+
+#if defined(__FAST_MATH__)
+#error "qmc's decoder needs IEEE 754 arithmetic (spec 6.4): build it without -ffast-math"
+#endif
+#if defined(FLT_EVAL_METHOD) && FLT_EVAL_METHOD != 0 && FLT_EVAL_METHOD != -1
+#error "qmc's decoder needs binary64 evaluation (spec 6.4): on 32-bit x86 build it with -msse2 -mfpmath=sse"
+#endif
+#if defined(_MSC_VER) && !defined(__clang__)
+#pragma fp_contract(off)
+#pragma float_control(precise, on)
+#endif
+
+namespace qmc {
+
+// x, as a value the optimizer knows nothing about: the product or sum that
+// made it has been rounded to binary64 and cannot be fused with what follows.
+inline double rounded(double x) {
+#if defined(__wasm__)
+  // WebAssembly's base instruction set has no fused multiply-add.
+#elif (defined(__GNUC__) || defined(__clang__)) && (defined(__x86_64__) || (defined(__i386__) && defined(__SSE2__)))
+  __asm__("" : "+x"(x));
+#elif (defined(__GNUC__) || defined(__clang__)) && defined(__aarch64__)
+  __asm__("" : "+w"(x));
+#elif defined(__GNUC__) || defined(__clang__)
+  __asm__("" : "+m"(x));
+#else
+  volatile double opaque = x;
+  x = opaque;
+#endif
+  return x;
+}
+
+// a * b rounded once to binary64, never fused into an addition.
+inline double mul(double a, double b) { return rounded(a * b); }
+
+}  // namespace qmc

@@ -1,0 +1,23 @@
+// Section 8.1: decoder-imposed limits.
+#include "decoder/output_budget.h"
+
+namespace qmc {
+
+Status check_limit(const std::string& what, uint64_t count, uint64_t limit, const char* field) {
+  if (count <= limit) return Status::Ok();
+  return Status(ErrorCode::kLimitExceeded, what + ": " + std::to_string(count) + " exceed this decoder's limit of " +
+                                               std::to_string(limit) + " (DecoderLimits::" + field + ", section 8.1)");
+}
+
+Status OutputBudget::charge(uint64_t bytes, const std::string& what) {
+  // Charges stay below 2^56 (counts below 2^48, small factors), and the
+  // comparison is written so that it cannot wrap.
+  if (bytes > limit_ || used_ > limit_ - bytes)
+    return Status(ErrorCode::kLimitExceeded, what + ": the output would reach " + std::to_string(used_ + bytes) +
+                                                 " bytes, above this decoder's limit of " + std::to_string(limit_) +
+                                                 " (DecoderLimits::max_output_bytes, section 8.1)");
+  used_ += bytes;
+  return Status::Ok();
+}
+
+}  // namespace qmc

@@ -1,0 +1,46 @@
+// Decoder limits of spec/qmc-format.md section 8.1: the counts an embedder
+// caps, and the size of the canonical output (10.2, 12.9, 13.10) charged as
+// each chunk is decoded, before memory is reserved for it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "qmc/decoder.h"
+#include "qmc/status.h"
+
+namespace qmc {
+
+// kLimitExceeded naming the count and the DecoderLimits field, or kOk.
+Status check_limit(const std::string& what, uint64_t count, uint64_t limit, const char* field);
+
+// 10.2: "QMCMESH1", V, F, q and x per vertex, a degree per face, the corners.
+inline uint64_t mesh_output_bytes(uint64_t vertices, uint64_t faces, uint64_t corners) {
+  return 16 + 24 * vertices + 4 * faces + 4 * corners;
+}
+// 12.9: "QMCLOOP1" and K before the base mesh.
+inline constexpr uint64_t kLoopOutputHeaderBytes = 12;
+// 12.9: one level j >= 1: V_j, F_j, binary64 positions, three corners a face.
+inline uint64_t level_output_bytes(uint64_t vertices, uint64_t faces) { return 8 + 24 * vertices + 12 * faces; }
+// 13.10 up to the mesh: header, plane headers, occupancy, every plane's samples.
+inline uint64_t gim_image_output_bytes(uint64_t pixels, uint64_t planes) {
+  return 20 + 17 * planes + pixels + 4 * pixels * planes;
+}
+// 13.10 from V on: V and F, then per vertex x and its pixel, degrees, corners.
+inline uint64_t gim_mesh_output_bytes(uint64_t vertices, uint64_t faces, uint64_t corners) {
+  return 8 + 16 * vertices + 4 * faces + 4 * corners;
+}
+
+class OutputBudget {
+ public:
+  explicit OutputBudget(uint64_t limit) : limit_(limit) {}
+  // Adds `bytes` (what `what` will output); kLimitExceeded past the limit.
+  Status charge(uint64_t bytes, const std::string& what);
+  uint64_t used() const { return used_; }
+
+ private:
+  uint64_t limit_;
+  uint64_t used_ = 0;
+};
+
+}  // namespace qmc
