@@ -1314,6 +1314,43 @@ void write_polygon_reading_vectors(VectorWriter* w) {
              ErrorCode::kLimitExceeded);
 }
 
+void write_gim_reading_vectors(VectorWriter* w) {
+  // 13.9 step 3: when the repeated corners of a block wrap around (c3 and
+  // c0 are one vertex), the copy at c0 is kept and the face starts there:
+  // block (0, 0) becomes (v0 v1 v4), not (v1 v4 v0). Pixels 0 and 3 are
+  // joined by a seam.
+  qmc::GimSamples wrapped;
+  wrapped.width = wrapped.height = 3;
+  for (uint32_t p = 0; p < 9; ++p) wrapped.xyz.insert(wrapped.xyz.end(), {double(p % 3), double(p / 3), 0.25 * (p % 2)});
+  wrapped.seams = {{0, 3}};
+  for (int a = 0; a < 3; ++a) wrapped.xyz[size_t(9 + a)] = wrapped.xyz[size_t(a)];
+  w->valid("valid_gim_u16_seam_wraps_quad", gim_file(wrapped, false, true), nullptr);
+  // 13.7: a run whose count is 0 is bad_chunk_payload.
+  Chunks c = split_chunks(gim_file(qmc::tools::make_torus_geometry_image(9), false));
+  c[find_chunk(c, qmc::kChunkGimSeams)].payload = varints({1, 0, 8, 0, 0, 0});
+  w->invalid("invalid_gim_seam_zero_count", join_chunks(c), qmc::ErrorCode::kBadChunkPayload);
+  // 13.5.2: an empty stream is zero bytes. No triangle (T = 0) with the
+  // empty stream decodes; with one byte after it, that byte is trailing data.
+  const Chunks sparse = split_chunks(gim_file(qmc::tools::make_sparse_triangle_image(9), false));
+  const size_t faces = find_chunk(sparse, qmc::kChunkGimFaces);
+  c = sparse;
+  c[faces].payload = varints({0});
+  w->valid("valid_gim_u16_topology_no_triangles", join_chunks(c), nullptr);
+  c[faces].payload.push_back(0);
+  w->invalid("invalid_gim_empty_face_stream_with_byte", join_chunks(c), qmc::ErrorCode::kBadChunkPayload);
+  // The same for a plane: every pixel of the mask blank and not stored
+  // (N = 0), so plane 0 is its predictor byte alone; one more byte is
+  // trailing data.
+  qmc::GimSamples blank;
+  blank.width = blank.height = 2;
+  blank.xyz.assign(12, 0.5);
+  blank.occupied.assign(4, 0);
+  c = split_chunks(gim_file(blank, false));
+  w->valid("valid_gim_u16_all_blank", join_chunks(c), nullptr);
+  c[find_chunk(c, qmc::kChunkGimPlane)].payload.push_back(0);
+  w->invalid("invalid_gim_empty_plane_stream_with_byte", join_chunks(c), qmc::ErrorCode::kBadChunkPayload);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -1336,6 +1373,7 @@ int main(int argc, char** argv) {
   write_loop_vectors(&w);
   write_geometry_image_vectors(&w);
   write_polygon_reading_vectors(&w);
+  write_gim_reading_vectors(&w);
   w.finish();
   return 0;
 }
