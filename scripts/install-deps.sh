@@ -4,7 +4,7 @@
 set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config      # build
-  libgtest-dev                          # tests
+  libgtest-dev python3                  # tests (python3: conformance/run.py)
   clang-14 libfuzzer-14-dev libclang-rt-14-dev   # fuzzing (ASan, UBSan, libFuzzer)
   libopenmesh-dev libeigen3-dev libzstd-dev      # encoder-side tools
   libdraco-dev draco                    # baseline comparison only (bench/)

@@ -17,6 +17,10 @@ contains() {  # contains NAME FILE PATTERN
   if grep -q -- "$3" "$2"; then passed=$((passed + 1)); else
     failed=$((failed + 1)); echo "FAIL $1: '$3' not in output:"; cat "$2"; fi
 }
+starts_with() {  # starts_with NAME FILE TAG: the file's first bytes are TAG
+  if [ "$(head -c ${#3} "$2")" = "$3" ]; then passed=$((passed + 1)); else
+    failed=$((failed + 1)); echo "FAIL $1: $2 does not start with $3"; fi
+}
 
 "$meshgen" torus 24 12 "$work/torus.obj" >/dev/null
 "$meshgen" soup 5 "$work/soup.off" >/dev/null
@@ -99,6 +103,15 @@ check progressive-decode-finest 0 "$qmc" decode "$work/prog.qmc" "$work/l2.obj"
 contains progressive-decode-finest-note "$work/out" "finest level 2"
 check progressive-decode-beyond 2 "$qmc" decode "$work/prog.qmc" "$work/x.obj" --level 3
 check progressive-level-not-progressive 2 "$qmc" decode "$work/torus.qmc" "$work/x.obj" --level 1
+# --canonical (spec 10.2, 12.9): the bytes the conformance manifest hashes, for
+# conformance/run.py; a progressive file's start with QMCLOOP1, every level included.
+check decode-canonical 0 "$qmc" decode --canonical --quiet "$work/torus.qmc" "$work/torus.canonical"
+starts_with decode-canonical-tag "$work/torus.canonical" QMCMESH1
+check decode-canonical-progressive 0 "$qmc" decode --canonical --quiet "$work/prog.qmc" "$work/prog.canonical"
+starts_with decode-canonical-progressive-tag "$work/prog.canonical" QMCLOOP1
+check decode-canonical-no-level 2 "$qmc" decode --canonical "$work/prog.qmc" "$work/x.canonical" --level 1
+check decode-canonical-rejects 3 "$qmc" decode --canonical "$work/cut.qmc" "$work/x.canonical"
+contains decode-canonical-rejects-identifier "$work/err" "truncated"
 check progressive-levels-alone 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --levels 2
 check progressive-verify-says-why 1 "$qmc" verify "$work/torus.obj" "$work/prog.qmc"
 contains progressive-verify-message "$work/out" "qmc compare"

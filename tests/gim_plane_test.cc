@@ -123,6 +123,24 @@ TEST(GimRangeCoder, EmptyStreamHasNoBytes) {
   RangeDecoder dec(nullptr, 0);
   EXPECT_FALSE(dec.overrun());
   EXPECT_EQ(dec.invented(), 4u);
+  EXPECT_EQ(dec.unread(), 0u);
+}
+
+// 13.5.2: an empty stream is zero bytes. Bytes given to a stream in which
+// nothing is decoded are unread, i.e. trailing data (bad_chunk_payload),
+// even though the decoder's initial 4 bytes would have covered them.
+TEST(GimRangeCoder, EmptyStreamWithBytesLeavesThemUnread) {
+  const uint8_t four_zeros[4] = {0, 0, 0, 0};
+  for (size_t size = 1; size <= 4; ++size) {
+    RangeDecoder dec(four_zeros, size);
+    EXPECT_FALSE(dec.bad_start());
+    EXPECT_FALSE(dec.overrun());
+    EXPECT_EQ(dec.unread(), size) << size << " bytes";
+  }
+  RangeDecoder one_decision(four_zeros, 4);
+  uint16_t p = 1024;
+  EXPECT_EQ(one_decision.code(0, &p), 0);
+  EXPECT_EQ(one_decision.unread(), 0u) << "once a decision is decoded the 4 bytes are read";
 }
 
 TEST(GimPlane, RoundTripShapesAndContents) {

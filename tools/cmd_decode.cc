@@ -11,17 +11,35 @@ namespace qmc::cli {
 
 static const char kDecodeHelp[] =
     "usage: qmc decode IN.qmc OUT.{obj,off,ply} [--level J] [--quiet]\n"
+    "       qmc decode --canonical IN.qmc OUT [--quiet]\n"
     "\n"
     "Decodes IN.qmc and writes the mesh, vertices in the file's order (spec 5.2.1).\n"
+    "A rejected file exits with status 3 and prints the error identifier (spec 9).\n"
     "\n"
     "options:\n"
-    "  --level J   progressive files (spec 12): write level J, 0 = the base mesh\n"
-    "              (default: the finest level)\n";
+    "  --level J     progressive files (spec 12): write level J, 0 = the base mesh\n"
+    "                (default: the finest level)\n"
+    "  --canonical   write the canonical output (spec 10.2, 12.9, 13.10) that the\n"
+    "                conformance manifest hashes, whatever the extension of OUT;\n"
+    "                this is the decoder command conformance/run.py expects\n";
+
+// The bytes the manifest hashes (spec 10.2): every level of a progressive
+// file and every plane of a geometry image, so --level does not apply.
+static int write_canonical(const CommandLine& cl, const DecodedFile& file, const std::string& input,
+                           const std::string& output) {
+  const std::vector<uint8_t> bytes = canonical_output(file);
+  if (Status s = write_file(output, bytes); !s.ok()) return fail("decode", s);
+  if (!cl.has("--quiet"))
+    std::printf("decoded %s: canonical output, %zu bytes -> %s\n", input.c_str(), bytes.size(), output.c_str());
+  return kExitOk;
+}
 
 int run_decode(int argc, char** argv) {
   CommandLine cl;
-  const CommandSpec spec{"decode", kDecodeHelp, {"--quiet"}, {{"--level"}}, 2, 2};
+  const CommandSpec spec{"decode", kDecodeHelp, {"--quiet", "--canonical"}, {{"--level"}}, 2, 2};
   if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
+  if (cl.has("--canonical") && !cl.options.empty())
+    return usage_error("decode", "--canonical covers every level; --level does not apply");
   const std::string& input = cl.positional[0];
   const std::string& output = cl.positional[1];
   std::vector<uint8_t> bytes;
@@ -29,6 +47,7 @@ int run_decode(int argc, char** argv) {
   DecodedFile file;
   if (Status s = decode(bytes.data(), bytes.size(), &file); !s.ok())
     return fail("decode", Status(s.code(), input + ": " + s.message()));
+  if (cl.has("--canonical")) return write_canonical(cl, file, input, output);
   std::string level_note;
   for (const auto& [name, value] : cl.options) {  // --level
     long level = 0;

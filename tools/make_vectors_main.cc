@@ -1209,6 +1209,148 @@ void write_geometry_image_vectors(VectorWriter* w) {
   w->invalid("invalid_gim_seams_after_faces", join_chunks(c), qmc::ErrorCode::kChunkOrder);
 }
 
+// Issue #12 item 10: vectors for readings of the spec that could differ.
+// Each settles one sentence of the spec; the comment names it.
+
+// One component (first face a triangle) whose two coded faces, in the
+// mixed Huffman coding (5.4.4), are Q13 then a pentagon of anchors only.
+// Undone from the last: the pentagon makes a loop of 5 edges; Q13 cuts two
+// of its vertices off (n = 5 >= fj + 2 = 4), leaving the triangle's loop.
+// The surface has 5 vertices (N = 5) and 3 faces.
+void q13_on_pentagon(qmc::BitWriter* b) {
+  b->write_exp_golomb(1);  // C
+  b->write_exp_golomb(1);  // n - 2: three faces
+  b->write_exp_golomb(0);  // d - 3: the first face is a triangle
+  b->write_bit(false);     // no table for class A
+  b->write_bit(true);      // class B: symbols 12 (Q13) and 18, one bit each
+  std::vector<uint8_t> lengths(qmc::kPolygonSymbolCount, 0);
+  lengths[12] = lengths[qmc::kPolygonOtherSymbol] = 1;
+  qmc::write_code_lengths(b, lengths);
+  b->write_bit(false);      // Q13 (context B: the first symbol)
+  b->write_bit(true);       // symbol 18 (context B: Q13's class)
+  b->write_exp_golomb(0);   // d - 5: a pentagon
+  b->write_bits(0x7, 3);    // w1..w3 anchors
+  b->write_bits(0xF, 4);    // its four gaps are edge gaps: D = 0
+}
+
+void write_polygon_reading_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  const Chunks base = split_chunks(encode_polygons(qmc::tools::make_cube()));
+  auto with_conn = [&](std::vector<uint8_t> payload) {
+    Chunks c = base;
+    c[find_chunk(base, qmc::kChunkConnectivity)].payload = std::move(payload);
+    return join_chunks(c);
+  };
+  auto no_records = [](qmc::BitWriter* b) {
+    for (int i = 0; i < 4; ++i) b->write_exp_golomb(0);  // H, S, I, L
+  };
+  // 5.4.5: method 1's "Q13 on a loop of fewer than 6 edges" (5.3.6) is not
+  // a rule of method 2; here Q13 cuts a loop of 5 edges.
+  w->valid("polygon_q13_on_pentagon_loop", with_conn(polygon_conn(8, 3, 0, qmc::kPolygonMixedHuffman,
+                                                                   [&](qmc::BitWriter* b) {
+                                                                     q13_on_pentagon(b);
+                                                                     no_records(b);
+                                                                   })),
+           nullptr);
+  // 5.4.1: "bits remaining" are counted after the field just read, up to
+  // the end of the payload, padding bits included. C = 3 in one byte
+  // leaves 3 bits (limit_exceeded); C = 2 leaves 5 >= 4 (then truncated).
+  w->invalid("invalid_polygon_components_count_after_field",
+             with_conn(polygon_conn(8, 2, 0, 0, [](qmc::BitWriter* b) { b->write_exp_golomb(3); })),
+             ErrorCode::kLimitExceeded);
+  w->invalid("invalid_polygon_components_padding_counts",
+             with_conn(polygon_conn(8, 2, 0, 0, [](qmc::BitWriter* b) { b->write_exp_golomb(2); })),
+             ErrorCode::kTruncated);
+  // 5.4.7: H above the number of surface faces is bad_symbol before any v_i
+  // is read (the pillow has 2 faces; the stream ends after H = 3).
+  w->invalid("invalid_polygon_virtual_faces_above_face_count",
+             with_conn(polygon_conn(8, 2, 0, 0, [](qmc::BitWriter* b) {
+               pillow(b, 1, 1, [](qmc::BitWriter* t) { t->write_exp_golomb(3); });
+             })),
+             ErrorCode::kBadSymbol);
+  // 5.4.7: H greater than the bits remaining is limit_exceeded. Ten faces
+  // (the first and nine Q1), H = 9, and the stream ends on a byte boundary.
+  w->invalid("invalid_polygon_virtual_faces_unjustified", with_conn(polygon_conn(8, 10, 0, 0, [](qmc::BitWriter* b) {
+               b->write_exp_golomb(1);
+               b->write_exp_golomb(8);
+               b->write_exp_golomb(1);
+               for (int i = 0; i < 9; ++i) b->write_bits(0, 4);  // Q1
+               b->write_exp_golomb(9);
+             })),
+             ErrorCode::kLimitExceeded);
+  // 5.4.7: p and q are both read before either is checked. N = 5 (w = 3);
+  // the last identification's p = 7 is complete and its q is cut by the
+  // end of the stream: truncated, not bad_symbol. Valid identifications
+  // (0, 1) in front place the end inside q.
+  auto identifications = [](qmc::BitWriter* b, int valid_pairs) {
+    q13_on_pentagon(b);
+    b->write_exp_golomb(0);  // H
+    b->write_exp_golomb(0);  // S
+    b->write_exp_golomb(uint32_t(valid_pairs + 1));  // I
+    for (int i = 0; i < valid_pairs; ++i) b->write_bits(0x01, 6);  // p = 0, q = 1
+    b->write_bits(7, 3);  // p = 7, then the stream ends
+  };
+  int valid_pairs = 0;
+  for (;; ++valid_pairs) {  // the padding after p must be shorter than q's 3 bits
+    qmc::BitWriter probe;
+    identifications(&probe, valid_pairs);
+    if ((8 - probe.bit_count() % 8) % 8 < 3) break;
+  }
+  w->invalid("invalid_polygon_identification_cut_after_bad_label",
+             with_conn(polygon_conn(8, 3, 0, qmc::kPolygonMixedHuffman,
+                                    [&](qmc::BitWriter* b) { identifications(b, valid_pairs); })),
+             ErrorCode::kTruncated);
+  // 5.4.8: a loose face's d w' is checked against the bits remaining before
+  // its first label: limit_exceeded although that label (7 >= V = 6) is bad.
+  w->invalid("invalid_polygon_loose_face_unjustified_before_label",
+             with_conn(polygon_conn(6, 3, 0, 0, [](qmc::BitWriter* b) {
+               pillow(b, 1, 1, [](qmc::BitWriter* t) {
+                 for (int i = 0; i < 3; ++i) t->write_exp_golomb(0);  // H, S, I
+                 t->write_exp_golomb(1);   // L
+                 t->write_exp_golomb(97);  // d = 100: 300 bits of labels
+                 t->write_bits(7, 3);
+               });
+             })),
+             ErrorCode::kLimitExceeded);
+}
+
+void write_gim_reading_vectors(VectorWriter* w) {
+  // 13.9 step 3: when the repeated corners of a block wrap around (c3 and
+  // c0 are one vertex), the copy at c0 is kept and the face starts there:
+  // block (0, 0) becomes (v0 v1 v4), not (v1 v4 v0). Pixels 0 and 3 are
+  // joined by a seam.
+  qmc::GimSamples wrapped;
+  wrapped.width = wrapped.height = 3;
+  for (uint32_t p = 0; p < 9; ++p) wrapped.xyz.insert(wrapped.xyz.end(), {double(p % 3), double(p / 3), 0.25 * (p % 2)});
+  wrapped.seams = {{0, 3}};
+  for (int a = 0; a < 3; ++a) wrapped.xyz[size_t(9 + a)] = wrapped.xyz[size_t(a)];
+  w->valid("valid_gim_u16_seam_wraps_quad", gim_file(wrapped, false, true), nullptr);
+  // 13.7: a run whose count is 0 is bad_chunk_payload.
+  Chunks c = split_chunks(gim_file(qmc::tools::make_torus_geometry_image(9), false));
+  c[find_chunk(c, qmc::kChunkGimSeams)].payload = varints({1, 0, 8, 0, 0, 0});
+  w->invalid("invalid_gim_seam_zero_count", join_chunks(c), qmc::ErrorCode::kBadChunkPayload);
+  // 13.5.2: an empty stream is zero bytes. No triangle (T = 0) with the
+  // empty stream decodes; with one byte after it, that byte is trailing data.
+  const Chunks sparse = split_chunks(gim_file(qmc::tools::make_sparse_triangle_image(9), false));
+  const size_t faces = find_chunk(sparse, qmc::kChunkGimFaces);
+  c = sparse;
+  c[faces].payload = varints({0});
+  w->valid("valid_gim_u16_topology_no_triangles", join_chunks(c), nullptr);
+  c[faces].payload.push_back(0);
+  w->invalid("invalid_gim_empty_face_stream_with_byte", join_chunks(c), qmc::ErrorCode::kBadChunkPayload);
+  // The same for a plane: every pixel of the mask blank and not stored
+  // (N = 0), so plane 0 is its predictor byte alone; one more byte is
+  // trailing data.
+  qmc::GimSamples blank;
+  blank.width = blank.height = 2;
+  blank.xyz.assign(12, 0.5);
+  blank.occupied.assign(4, 0);
+  c = split_chunks(gim_file(blank, false));
+  w->valid("valid_gim_u16_all_blank", join_chunks(c), nullptr);
+  c[find_chunk(c, qmc::kChunkGimPlane)].payload.push_back(0);
+  w->invalid("invalid_gim_empty_plane_stream_with_byte", join_chunks(c), qmc::ErrorCode::kBadChunkPayload);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -1230,6 +1372,8 @@ int main(int argc, char** argv) {
   write_polygon_seam_vectors(&w);
   write_loop_vectors(&w);
   write_geometry_image_vectors(&w);
+  write_polygon_reading_vectors(&w);
+  write_gim_reading_vectors(&w);
   w.finish();
   return 0;
 }

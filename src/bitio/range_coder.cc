@@ -59,6 +59,7 @@ uint8_t RangeDecoder::next_byte() {
 }
 
 int RangeDecoder::decode(uint32_t prob) {
+  decided_ = true;
   const uint32_t bound = (range_ >> kRangeProbabilityBits) * prob;
   int bit;
   if (code_ < bound) {

@@ -71,8 +71,13 @@ class RangeDecoder {
   bool bad_start() const { return bad_start_; }
   // More than kRangeMaxInventedBytes bytes past the end were read.
   bool overrun() const { return invented_ > kRangeMaxInventedBytes; }
-  // Bytes of the data never read (non-zero: trailing data).
-  size_t unread() const { return consumed_ >= size_ ? 0 : size_ - consumed_; }
+  // Bytes of the data never read (non-zero: trailing data). A stream with
+  // no decision decoded needs no byte at all (13.5.2: its canonical form is
+  // empty), so then every byte of it counts as unread.
+  size_t unread() const {
+    if (!decided_) return size_;
+    return consumed_ >= size_ ? 0 : size_ - consumed_;
+  }
   uint64_t invented() const { return invented_; }
 
  private:
@@ -86,6 +91,7 @@ class RangeDecoder {
   uint32_t range_ = 0xFFFFFFFFu;
   uint32_t code_ = 0;
   bool bad_start_ = false;
+  bool decided_ = false;  // some decision was decoded
 };
 
 }  // namespace qmc

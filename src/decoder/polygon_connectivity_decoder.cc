@@ -151,6 +151,8 @@ Status read_virtual_faces(BitReader* in, const std::vector<uint32_t>& degree, Re
   uint32_t count = 0;
   if (Status s = read_ue(in, &count); !s.ok()) return s;
   if (count > degree.size()) return symbol_error("more virtual faces than surface faces");
+  // Each v_i takes at least one bit (5.4.7, section 8).
+  if (count > in->bits_remaining()) return limit_error("virtual faces cannot fit in the stream");
   r->is_virtual.assign(degree.size(), 0);
   r->virtual_count = count;
   uint64_t index = 0;
