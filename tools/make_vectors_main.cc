@@ -1246,7 +1246,7 @@ void write_polygon_reading_vectors(VectorWriter* w) {
   };
   // 5.4.5: method 1's "Q13 on a loop of fewer than 6 edges" (5.3.6) is not
   // a rule of method 2; here Q13 cuts a loop of 5 edges.
-  w->valid("polygon_q13_on_pentagon_loop", with_conn(polygon_conn(8, 3, 0, qmc::kPolygonMixedHuffman,
+  w->valid("valid_polygon_q13_on_pentagon_loop", with_conn(polygon_conn(8, 3, 0, qmc::kPolygonMixedHuffman,
                                                                    [&](qmc::BitWriter* b) {
                                                                      q13_on_pentagon(b);
                                                                      no_records(b);
@@ -1351,6 +1351,36 @@ void write_gim_reading_vectors(VectorWriter* w) {
   w->invalid("invalid_gim_empty_plane_stream_with_byte", join_chunks(c), qmc::ErrorCode::kBadChunkPayload);
 }
 
+
+// Issue 12: counts that no chunk had justified (spec 8, 12.2, 13.3, 13.7, 13.8).
+void write_hardening_vectors(VectorWriter* w) {
+  // 12.2: a base mesh of 4 triangles (12 corners) claiming 13 vertices.
+  const Chunks tetrahedron = split_chunks(encode(qmc::tools::make_tetrahedron(), 12));
+  std::vector<uint8_t> conn = tetrahedron[find_chunk(tetrahedron, qmc::kChunkConnectivity)].payload;
+  conn[1] = 13;  // method 0, vertex_count 4 -> 13 (one byte either way), face_count 4
+  w->invalid("invalid_loop_base_more_vertices_than_corners",
+             join_chunks({Chunk{qmc::kChunkHeader, {1, 3}}, Chunk{qmc::kChunkLoop, {1, 0}},
+                          Chunk{qmc::kChunkConnectivity, conn}, Chunk{qmc::kChunkEnd, {}}}),
+             qmc::ErrorCode::kBadChunkPayload);
+  // 13.7, 13.8: a 1024 x 1024 image without a mask (binary32, GFAC triangles, X Y Z).
+  std::vector<uint8_t> gimg = varints({1024, 1024});
+  gimg.insert(gimg.end(), {1, 2, 0, 3, 0, 1, 2});
+  const Chunks image = {Chunk{qmc::kChunkHeader, {1, 4}}, Chunk{qmc::kChunkGeometryImage, gimg}};
+  Chunks c = image;
+  // One run of 2^19 pairs (k, 2^19 + k), all inside the image, in 12 bytes.
+  c.push_back(Chunk{qmc::kChunkGimSeams, varints({1, 0, 1 << 19, 1 << 19, 2, 2})});
+  c.push_back(Chunk{qmc::kChunkEnd, {}});
+  w->invalid("invalid_gim_unmasked_seam_pairs_unjustified", join_chunks(c), qmc::ErrorCode::kLimitExceeded);
+  // 2^21 triangles (twice the pixels) in a stream of 40 bytes.
+  c = image;
+  c.push_back(Chunk{qmc::kChunkGimSeams, varints({0})});
+  std::vector<uint8_t> gfac = varints({1 << 21});
+  gfac.insert(gfac.end(), 40, 0);
+  c.push_back(Chunk{qmc::kChunkGimFaces, gfac});
+  c.push_back(Chunk{qmc::kChunkEnd, {}});
+  w->invalid("invalid_gim_faces_unjustified", join_chunks(c), qmc::ErrorCode::kLimitExceeded);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -1374,6 +1404,7 @@ int main(int argc, char** argv) {
   write_geometry_image_vectors(&w);
   write_polygon_reading_vectors(&w);
   write_gim_reading_vectors(&w);
+  write_hardening_vectors(&w);
   w.finish();
   return 0;
 }
