@@ -24,16 +24,14 @@
 #include "encoder/triangle_bvh.h"
 #include "mesh_generators.h"
 #include "mesh_io.h"
+#include "corpus_dir.h"
 
 namespace qmc {
 namespace {
 
 namespace fs = std::filesystem;
 
-const char* corpus_dir() {
-  const char* env = std::getenv("QMC_CORPUS_DIR");
-  return env ? env : QMC_SOURCE_DIR "/../shared/corpus";
-}
+using testing::corpus_dir;
 
 bool read_corpus(const std::string& name, GimTriMesh* out) {
   Mesh m;

@@ -1,4 +1,4 @@
-// Lossless plane and mask coding of geometry images (spec/drafts/gim_planes.md):
+// Lossless plane and mask coding of geometry images (spec 13.5, 13.6):
 // the range coder, round trips of every predictor and sample format, the
 // blank-pixel rule, rejection of damaged payloads, and known answers.
 #include <gtest/gtest.h>
@@ -330,7 +330,7 @@ TEST(GimPlane, OverflowingResidualIsBadSymbol) {
 }
 
 // Fixed inputs and their exact bytes, so that the specification and the code
-// cannot drift apart unnoticed (spec/drafts/gim_planes.md, examples).
+// cannot drift apart unnoticed (spec 13.6.1, examples).
 TEST(GimPlane, KnownAnswers) {
   const std::vector<uint32_t> u16 = {100, 102, 104, 101, 103, 106};  // 3 x 2
   const std::vector<uint8_t> plane = encode_plane_with(u16, layout(3, 2), kPredictParallelogram);

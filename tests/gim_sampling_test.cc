@@ -24,6 +24,7 @@
 #include "encoder/gim_sampling.h"
 #include "mesh_distance.h"
 #include "mesh_io.h"
+#include "corpus_dir.h"
 
 namespace qmc {
 namespace {
@@ -166,10 +167,7 @@ TEST(GimHausdorff, DistanceTypeGivesTheExactDistance) {
 
 // ------------------------------------------------------------ corpus meshes
 
-const char* corpus_dir() {
-  const char* env = std::getenv("QMC_CORPUS_DIR");
-  return env ? env : QMC_SOURCE_DIR "/../shared/corpus";
-}
+using testing::corpus_dir;
 
 struct Pipeline {
   Mesh input;

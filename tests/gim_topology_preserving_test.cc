@@ -20,6 +20,7 @@
 #include "encoder/gim_topology_preserving.h"
 #include "mesh_generators.h"
 #include "mesh_io.h"
+#include "corpus_dir.h"
 
 namespace qmc {
 namespace {
@@ -329,7 +330,7 @@ TEST(GimTopoTest, StraightBorderTriangleIsAnError) {
             ErrorCode::kInvalidArgument);
 }
 
-std::string corpus(const char* name) { return std::string(QMC_SOURCE_DIR) + "/../shared/corpus/tri/" + name; }
+std::string corpus(const char* name) { return (testing::corpus_dir() / "tri" / name).string(); }
 
 TEST(GimTopoTest, CatheadTutte) {
   const std::string path = corpus("cathead.obj");

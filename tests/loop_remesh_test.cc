@@ -27,6 +27,7 @@
 #include "mesh_io.h"
 #include "mesh_test_support.h"
 #include "random_polygon_mesh.h"
+#include "corpus_dir.h"
 
 namespace qmc {
 namespace {
@@ -519,10 +520,7 @@ TEST(LoopRemesh, RemeshOfASphereLiesOnTheSphere) {
 
 // ---------------------------------------------------------------- corpus
 
-const char* corpus_dir() {
-  const char* env = std::getenv("QMC_CORPUS_DIR");
-  return env ? env : QMC_SOURCE_DIR "/../shared/corpus";
-}
+using testing::corpus_dir;
 
 // Steps II-VI on the corpus's triangle meshes: topology kept, the remesh on
 // the original surface, the control meshes consistent; times printed.

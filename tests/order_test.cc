@@ -408,6 +408,27 @@ TEST_F(InvalidOrder, InvalidChunkIsAnErrorNotIgnored) {
   EXPECT_FALSE(stream.feed(file.data(), file.size()).ok());
 }
 
+// Section 4.5: input face face_input[f] is file face f, its labels mapped by
+// vertex_input, starting at the file face's corner rotation[f]; a map the
+// flags leave out is the identity.
+void expect_faces_moved_as_the_maps_say(const Mesh& file, const OrderMaps& maps, const Mesh& input) {
+  ASSERT_EQ(input.face_count(), file.face_count());
+  const auto vertex = [&](uint32_t v) { return maps.vertex_input.empty() ? v : maps.vertex_input[v]; };
+  std::vector<size_t> input_start(input.face_count() + 1, 0);
+  for (size_t g = 0; g < input.face_count(); ++g) input_start[g + 1] = input_start[g] + input.face_sizes[g];
+  size_t file_start = 0;
+  for (size_t f = 0; f < file.face_count(); ++f) {
+    const uint32_t d = file.face_sizes[f];
+    const size_t g = maps.face_input.empty() ? f : maps.face_input[f];
+    const uint32_t r = maps.rotation.empty() ? 0 : maps.rotation[f];
+    ASSERT_EQ(input.face_sizes[g], d) << "face " << f;
+    for (uint32_t i = 0; i < d; ++i)
+      EXPECT_EQ(input.corners[input_start[g] + i], vertex(file.corners[file_start + (r + i) % d]))
+          << "face " << f << " corner " << i;
+    file_start += d;
+  }
+}
+
 TEST(Order, RandomPayloadsAreRejectedOrApplied) {
   // Bytes after a valid header: whatever decodes must be a valid set of maps.
   const Mesh sphere = tools::make_quad_sphere(2);
@@ -428,9 +449,26 @@ TEST(Order, RandomPayloadsAreRejectedOrApplied) {
     ++accepted;
     Mesh m = coder.mesh;
     apply_order(maps, &m, nullptr);
-    EXPECT_EQ(m.corners.size(), coder.mesh.corners.size());
+    expect_faces_moved_as_the_maps_say(coder.mesh, maps, m);
   }
   SUCCEED() << accepted << " random payloads accepted";
+}
+
+TEST(Order, MapsOfRealFilesMoveEveryFaceAsSection45Says) {
+  for (uint64_t seed : {1, 2, 3}) {
+    const Mesh scrambled = tools::make_scrambled(tools::make_quad_sphere(3), seed);
+    const std::vector<Chunk> chunks = split_chunks(encode_mesh(scrambled, true));
+    const std::vector<uint8_t> order = chunks[tools::find_chunk(chunks, kChunkOrder)].payload;
+    DecodedFile coder;
+    const std::vector<uint8_t> plain = encode_mesh(scrambled, false);
+    ASSERT_TRUE(decode(plain.data(), plain.size(), &coder).ok());
+    OrderMaps maps;
+    ASSERT_TRUE(decode_order(order.data(), order.size(), uint32_t(scrambled.vertex_count()), coder.mesh, &maps).ok());
+    Mesh m = coder.mesh;
+    apply_order(maps, &m, nullptr);
+    expect_faces_moved_as_the_maps_say(coder.mesh, maps, m);
+    EXPECT_EQ(m.corners, scrambled.corners) << "seed " << seed;  // and that is the input
+  }
 }
 
 }  // namespace

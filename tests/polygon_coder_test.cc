@@ -19,6 +19,7 @@
 #include "qmc/encoder.h"
 #include "random_polygon_mesh.h"
 #include "roundtrip_check.h"
+#include "corpus_dir.h"
 
 namespace qmc {
 namespace {
@@ -193,8 +194,7 @@ TEST(PolygonCoder, RandomNonManifoldMeshesRoundTrip) {
 }
 
 TEST(PolygonCoder, EveryCorpusMeshGoesThroughAStructuredCoder) {
-  const char* env = std::getenv("QMC_CORPUS_DIR");
-  const fs::path root = env ? fs::path(env) : fs::path(QMC_SOURCE_DIR) / ".." / "shared" / "corpus";
+  const fs::path root = testing::corpus_dir();
   if (!fs::is_directory(root)) GTEST_SKIP() << "corpus not found at " << root;
   int seen = 0;
   for (const char* sub : {"quad", "tri"})

@@ -18,6 +18,7 @@
 #include "qmc/encoder.h"
 #include "quad_disk_generator.h"
 #include "roundtrip_check.h"
+#include "corpus_dir.h"
 
 namespace qmc {
 namespace {
@@ -283,8 +284,7 @@ TEST(SpiraleReversi, FixedCodingsRejectBadWords) {
 
 TEST(QuadCorpus, EveryInScopeCorpusQuadMeshUsesTheQuadCoder) {
   namespace fs = std::filesystem;
-  const char* env = std::getenv("QMC_CORPUS_DIR");
-  const fs::path dir = fs::path(env ? env : QMC_SOURCE_DIR "/../shared/corpus") / "quad";
+  const fs::path dir = testing::corpus_dir() / "quad";
   if (!fs::is_directory(dir)) GTEST_SKIP() << "corpus not found at " << dir;
   size_t quad_coded = 0;
   for (const char* name : {"cube.off", "fandisk_quads.off", "horse_quad.obj"}) {

@@ -11,16 +11,14 @@
 #include "qmc/decoder.h"
 #include "qmc/encoder.h"
 #include "roundtrip_check.h"
+#include "corpus_dir.h"
 
 namespace qmc {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path corpus_dir() {
-  if (const char* env = std::getenv("QMC_CORPUS_DIR")) return env;
-  return fs::path(QMC_SOURCE_DIR) / ".." / "shared" / "corpus";
-}
+using testing::corpus_dir;
 
 std::vector<fs::path> corpus_files() {
   std::vector<fs::path> files;

@@ -24,6 +24,7 @@
 
 #include "mesh_generators.h"
 #include "mesh_io.h"
+#include "corpus_dir.h"
 
 namespace qmc::tools {
 namespace {
@@ -417,10 +418,7 @@ TEST(SphereSeries, OutputIsPinned) {
   EXPECT_EQ(fingerprint(subdivide(make_grid(4, 3))), 0xa13fb4c0ba546476ull);
 }
 
-fs::path corpus_dir() {
-  if (const char* env = std::getenv("QMC_CORPUS_DIR")) return env;
-  return fs::path(QMC_SOURCE_DIR) / ".." / "shared" / "corpus";
-}
+using testing::corpus_dir;
 
 // The thesis's 17412-quad cow. cow.obj is closed with one pinched vertex;
 // splitting it gives V + F + E + 1 = 2903 + 5804 + 8706 + 1 = 17414 vertices,

@@ -150,7 +150,11 @@ Status read_line(const std::string& dir, const std::string& key, std::istringstr
   if (!(line >> file)) return bad(manifest, key + " needs a file name");
   if (key == "mask") {
     std::vector<uint32_t> mask;
-    if (Status s = read_plane(dir + "/" + file, GimRawImage{g->width, g->height, 0}, &mask); !s.ok()) return s;
+    GimRawImage mask_image;  // a 16-bit plane of the image's size
+    mask_image.width = g->width;
+    mask_image.height = g->height;
+    mask_image.format = 0;
+    if (Status s = read_plane(dir + "/" + file, mask_image, &mask); !s.ok()) return s;
     g->occupied.resize(mask.size());
     for (size_t p = 0; p < mask.size(); ++p) g->occupied[p] = mask[p] != 0;
     return Status::Ok();

@@ -426,7 +426,10 @@ std::vector<uint8_t> encode_quads(const Mesh& mesh, int coding = -1) {
 
 Mesh decoded_disk(const std::vector<uint8_t>& types) {
   Mesh m;
-  qmc::spirale_reversi_decode(types, false, UINT32_MAX, &m);
+  if (qmc::Status s = qmc::spirale_reversi_decode(types, false, UINT32_MAX, &m); !s.ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: a generated disk does not decode: %s\n", s.to_string().c_str());
+    std::exit(3);
+  }
   uint32_t n = 0;
   for (uint32_t v : m.corners) n = std::max(n, v + 1);
   for (uint32_t i = 0; i < n; ++i) m.positions.insert(m.positions.end(), {float(i % 7), float(i / 7), float(i % 3)});

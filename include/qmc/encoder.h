@@ -134,7 +134,7 @@ struct EncodeStats {
   std::vector<ChunkStats> chunks;
   uint64_t total_bytes = 0;
   // Vertex order of the file: file_vertex[i] is the input index of the
-  // vertex the decoder will output as vertex i (sections 5.2.1, 5.3.4) in
+  // vertex the decoder will output as vertex i (sections 5.2.1, 5.3.4, 5.4.6) in
   // coder order, i.e. before an oRDR chunk (keep_order) is applied.
   std::vector<uint32_t> file_vertex;
   // Face order of the file: face_source[i] is the input index of the face

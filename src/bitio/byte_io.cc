@@ -7,11 +7,6 @@ namespace qmc {
 
 void put_u8(std::vector<uint8_t>* out, uint8_t v) { out->push_back(v); }
 
-void put_u16le(std::vector<uint8_t>* out, uint16_t v) {
-  out->push_back(uint8_t(v));
-  out->push_back(uint8_t(v >> 8));
-}
-
 void put_u32le(std::vector<uint8_t>* out, uint32_t v) {
   for (int i = 0; i < 4; ++i) out->push_back(uint8_t(v >> (8 * i)));
 }
@@ -51,13 +46,6 @@ uint32_t load_u32be(const uint8_t* p) {
 bool ByteReader::get_u8(uint8_t* v) {
   if (remaining() < 1) return false;
   *v = data_[pos_++];
-  return true;
-}
-
-bool ByteReader::get_u16le(uint16_t* v) {
-  if (remaining() < 2) return false;
-  *v = uint16_t(data_[pos_] | (data_[pos_ + 1] << 8));
-  pos_ += 2;
   return true;
 }
 

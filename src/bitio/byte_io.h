@@ -9,7 +9,6 @@
 namespace qmc {
 
 void put_u8(std::vector<uint8_t>* out, uint8_t v);
-void put_u16le(std::vector<uint8_t>* out, uint16_t v);
 void put_u32le(std::vector<uint8_t>* out, uint32_t v);
 void put_u32be(std::vector<uint8_t>* out, uint32_t v);
 void put_f32le(std::vector<uint8_t>* out, float v);
@@ -27,7 +26,6 @@ class ByteReader {
   ByteReader(const uint8_t* data, size_t size) : data_(data), size_(size) {}
 
   bool get_u8(uint8_t* v);
-  bool get_u16le(uint16_t* v);
   bool get_u32le(uint32_t* v);
   bool get_f32le(float* v);
   bool get_f64le(double* v);

@@ -1,5 +1,5 @@
 // The model shared by the plane encoder and decoder of geometry images
-// (spec/drafts/gim_planes.md, to become spec/qmc-format.md section 13.5):
+// (spec/qmc-format.md section 13.5):
 // the order-preserving float mapping, the pixel predictors with their edge
 // rules, the activity context, and the binarisation of a residual over the
 // range coder. The binarisation is one template run by both sides, so the

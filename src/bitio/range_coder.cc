@@ -1,4 +1,4 @@
-// Adaptive binary range coder (spec/drafts/gim_planes.md, "Range coder").
+// Adaptive binary range coder (spec/qmc-format.md section 13.5.2).
 #include "bitio/range_coder.h"
 
 #include <utility>

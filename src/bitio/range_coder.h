@@ -1,5 +1,5 @@
 // Adaptive binary range coder of the geometry-image planes (spec/qmc-format.md
-// section 13.5.2, spec/drafts/gim_planes.md): LZMA-style, a 32-bit range,
+// section 13.5.2): LZMA-style, a 32-bit range,
 // 11-bit probabilities of a 0 bit adapting by a shift of 5, carries resolved
 // through a cache byte and a count of pending 0xFF bytes. Unlike LZMA the
 // always-zero first byte is not written, and the flush writes only as many

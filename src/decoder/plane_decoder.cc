@@ -1,6 +1,6 @@
-// Plane and mask payloads of geometry images (spec/drafts/gim_planes.md,
-// "Plane payload" and "Mask payload"): pixels in raster order, each
-// predicted from decoded neighbours and corrected by a range-coded residual.
+// Plane and mask payloads of geometry images (spec/qmc-format.md 13.5 and
+// 13.6): pixels in raster order, each predicted from decoded neighbours and
+// corrected by a range-coded residual.
 #include "decoder/plane_decoder.h"
 
 #include <string>

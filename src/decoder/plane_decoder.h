@@ -1,5 +1,5 @@
 // Lossless plane coding of geometry images (spec/qmc-format.md sections
-// 13.5 and 13.6, drafted in spec/drafts/gim_planes.md): one plane of W x H
+// 13.5 and 13.6): one plane of W x H
 // samples, or the occupancy mask, as a predictor byte and an adaptive binary
 // range-coded stream.
 #pragma once

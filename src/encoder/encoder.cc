@@ -94,7 +94,7 @@ std::string self_check(const FileConnectivity& c, size_t vertex_count, const cha
 }
 
 // The quad coder (section 5.3), checked by decoding its own output: a mesh
-// it would get wrong goes to the indexed coding instead, with the reason.
+// it would get wrong goes to the polygon coder instead, with the reason.
 std::string quad_connectivity(const Mesh& mesh, int forced_coding, FileConnectivity* c, QuadCoderStats* stats) {
   QuadTraversal traversal;
   if (std::string why = encode_quad_traversal(mesh, &traversal); !why.empty()) return why;

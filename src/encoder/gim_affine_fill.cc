@@ -89,6 +89,7 @@ void rasterize(const Filler& f, uint32_t t, std::vector<uint32_t>* owner, uint64
 void clamped_barycentric(const Filler& f, uint32_t t, double x, double y, double l[3]) {
   const Corner c[3] = {f.corner(t, 0), f.corner(t, 1), f.corner(t, 2)};
   const double det = double(orient(c[0], c[1], c[2]));
+  l[0] = 1, l[1] = 0, l[2] = 0;  // replaced by the first edge unless its distance is NaN
   double best = INFINITY;
   for (int e = 0; e < 3; ++e) {  // closest point on each edge
     const Corner a = c[e], b = c[(e + 1) % 3];

@@ -1,4 +1,4 @@
-// Plane and mask payloads of geometry images (spec/drafts/gim_planes.md):
+// Plane and mask payloads of geometry images (spec/qmc-format.md 13.5, 13.6):
 // the mirror of decoder/plane_decoder.cc over the range encoder.
 #include "encoder/plane_encoder.h"
 

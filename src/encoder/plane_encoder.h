@@ -1,6 +1,6 @@
 // Encoder of the geometry-image plane and mask payloads (spec/qmc-format.md
-// sections 13.5 and 13.6, drafted in spec/drafts/gim_planes.md). It codes
-// the plane with every predictor and keeps the shortest.
+// sections 13.5 and 13.6). It codes the plane with every predictor and keeps
+// the shortest.
 #pragma once
 
 #include <cstddef>
