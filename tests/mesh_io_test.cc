@@ -685,10 +685,14 @@ TEST(MeshIo, WriteMeshReplacesTheFileKeepingItsPermissions) {
   std::filesystem::create_directories(directory);
   const std::string path = directory + "/mesh.obj";
   ASSERT_TRUE(write_mesh(path, make_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {{0, 1, 2}})).ok());
+  struct stat st;
+  ASSERT_EQ(stat(path.c_str(), &st), 0);
+  const mode_t umask_now = umask(0);
+  umask(umask_now);
+  EXPECT_EQ(st.st_mode & 0777, 0666u & ~umask_now);  // a new file, as any other (not 0600)
   ASSERT_EQ(chmod(path.c_str(), 0640), 0);
   ASSERT_TRUE(write_mesh(path, make_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {{2, 1, 0}})).ok());
   EXPECT_EQ(file_text(path), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 3 2 1\n");
-  struct stat st;
   ASSERT_EQ(stat(path.c_str(), &st), 0);
   EXPECT_EQ(st.st_mode & 0777, 0640u);
   EXPECT_TRUE(other_files(directory, "mesh.obj").empty());

@@ -1,10 +1,12 @@
 // qmc tools: output files replaced in one step. See atomic_file.h.
 #include "atomic_file.h"
 
+#include <atomic>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -39,14 +41,16 @@ std::string destination_of(const std::string& path) {
   return target;
 }
 
-// A replaced file keeps its permissions; a new one gets the usual 0666
-// less the umask (mkstemp alone would leave 0600).
-mode_t mode_for(const std::string& path) {
-  struct stat existing;
-  if (stat(path.c_str(), &existing) == 0) return existing.st_mode & 07777;
-  const mode_t mask = umask(0);
-  umask(mask);
-  return 0666 & ~mask;
+// A new file beside `target`, created like any new file (0666 less the
+// umask; mkstemp would give 0600), under a name no other writer uses.
+int create_temporary(const std::string& target, std::string* name) {
+  static std::atomic<unsigned> serial{0};
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    *name = target + ".tmp-" + std::to_string(getpid()) + "-" + std::to_string(serial++);
+    const int fd = open(name->c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0 || errno != EEXIST) return fd;
+  }
+  return -1;
 }
 
 }  // namespace
@@ -59,18 +63,20 @@ bool same_file(const std::string& a, const std::string& b) {
 Status write_file_atomically(const std::string& path, const std::function<bool(std::FILE*)>& fill) {
   const std::string target = destination_of(path);
   struct stat existing;
-  if (stat(target.c_str(), &existing) == 0 && !S_ISREG(existing.st_mode)) {
+  const bool replacing = stat(target.c_str(), &existing) == 0;
+  if (replacing && !S_ISREG(existing.st_mode)) {
     std::FILE* file = std::fopen(target.c_str(), "wb");
     if (file == nullptr) return cannot_write(path, errno);
     const int error = fill_and_close(file, fill, false);
     return error != 0 ? cannot_write(path, error) : Status::Ok();
   }
   // Same directory, so that the rename stays on one file system.
-  std::string temporary = target + ".tmp-XXXXXX";
-  const int fd = mkstemp(temporary.data());
+  std::string temporary;
+  const int fd = create_temporary(target, &temporary);
   if (fd < 0) return cannot_write(path, errno);
+  // A replaced file keeps its permissions.
   int error = 0;
-  std::FILE* file = fchmod(fd, mode_for(target)) == 0 ? fdopen(fd, "wb") : nullptr;
+  std::FILE* file = !replacing || fchmod(fd, existing.st_mode & 07777) == 0 ? fdopen(fd, "wb") : nullptr;
   if (file == nullptr) {
     error = errno;
     close(fd);
