@@ -149,5 +149,62 @@ check gim-not-with-progressive 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" -
 check gim-soup-rejected 3 "$qmc" encode "$work/soup.off" "$work/x.qmc" --gim 33
 check gim-export-not-gim 3 "$qmc" gim export "$work/torus.qmc" "$work/gimdir"
 contains gim-export-not-gim-message "$work/err" "not a geometry image"
+
+# Issue #12 item 7: the output is never the input, and a failed write leaves
+# the old output whole, no temporary file behind, and names the reason.
+cp "$work/torus.obj" "$work/self.obj"
+check encode-onto-input 2 "$qmc" encode "$work/self.obj" "$work/self.obj"
+contains encode-onto-input-message "$work/err" "is the input file"
+check encode-onto-input-intact 0 cmp "$work/self.obj" "$work/torus.obj"
+ln "$work/self.obj" "$work/hard-link.obj"
+check encode-onto-hard-link 2 "$qmc" encode "$work/self.obj" "$work/hard-link.obj"
+check encode-onto-dot-path 2 "$qmc" encode "$work/self.obj" "$work/./self.obj"
+check encode-onto-input-intact-still 0 cmp "$work/self.obj" "$work/torus.obj"
+cp "$work/torus.qmc" "$work/self.qmc"
+check decode-onto-input 2 "$qmc" decode "$work/self.qmc" "$work/self.qmc"
+check decode-onto-input-intact 0 cmp "$work/self.qmc" "$work/torus.qmc"
+check gim-import-onto-input 2 "$qmc" gim import "$work/gimdir" "$work/gimdir/plane0.png"
+mkdir -p "$work/gimself" && cp "$work/gim.qmc" "$work/gimself/gim.txt"
+check gim-export-onto-input 2 "$qmc" gim export "$work/gimself/gim.txt" "$work/gimself"
+check gim-export-onto-input-intact 0 cmp "$work/gimself/gim.txt" "$work/gim.qmc"
+"$meshgen" sphere 80 "$work/big.obj" >/dev/null
+echo old >"$work/limited.qmc"
+check encode-past-file-size-limit 3 bash -c 'ulimit -f 8; exec "$0" encode "$1" "$2" --quiet' "$qmc" "$work/big.obj" "$work/limited.qmc"
+contains encode-past-file-size-limit-reason "$work/err" "cannot write $work/limited.qmc: File too large"
+check encode-past-file-size-limit-old-kept 0 grep -qx old "$work/limited.qmc"
+echo old >"$work/limited.obj"
+check decode-past-file-size-limit 3 bash -c 'ulimit -f 8; exec "$0" decode "$1" "$2" --quiet' "$qmc" "$work/torus.qmc" "$work/limited.obj"
+check decode-past-file-size-limit-old-kept 0 grep -qx old "$work/limited.obj"
+check no-temporary-left 0 test -z "$(ls "$work" | grep -F .tmp-)"
+if [ -w /dev/full ]; then
+  check encode-disk-full 3 "$qmc" encode "$work/torus.obj" /dev/full --quiet
+  contains encode-disk-full-reason "$work/err" "cannot write /dev/full: No space left on device"
+fi
+
+# Issue #12 item 8: nothing dropped silently.
+: >"$work/empty.obj"
+check encode-empty-file 3 "$qmc" encode "$work/empty.obj" "$work/x.qmc"
+contains encode-empty-file-message "$work/err" "no vertices and no faces (pass --allow-empty"
+check encode-empty-file-allowed 0 "$qmc" encode "$work/empty.obj" "$work/empty.qmc" --allow-empty --quiet
+printf 'PK\003\004\024\000\010\000binary' >"$work/garbage.obj"  # a zip header: NUL at byte 5
+check encode-binary-obj 3 "$qmc" encode "$work/garbage.obj" "$work/x.qmc"
+contains encode-binary-obj-message "$work/err" "garbage.obj byte 5: a NUL byte"
+printf 'mtllib scene.mtl\no nothing\n' >"$work/nogeometry.obj"
+check encode-obj-without-geometry 3 "$qmc" encode "$work/nogeometry.obj" "$work/x.qmc"
+contains encode-obj-without-geometry-message "$work/err" "nogeometry.obj line 1: no vertex (v) or face (f) line"
+{ head -c 80 /dev/zero; printf '\0\0\0\0'; head -c 150 /dev/zero; } >"$work/count0.stl"
+check encode-stl-count-0 3 "$qmc" encode "$work/count0.stl" "$work/x.qmc"
+contains encode-stl-count-0-message "$work/err" "header says 0 triangles but the file's 234 bytes hold 3"
+{ printf 'mtllib m.mtl\ng side\nusemtl red\ns 1\no cube\n'; cat "$work/torus.obj"; } >"$work/groups.obj"
+check encode-groups-noted 0 "$qmc" encode "$work/groups.obj" "$work/groups.qmc"
+contains encode-groups-noted-g "$work/err" "note: .*groups.obj: ignored group (g) lines: 1"
+contains encode-groups-noted-usemtl "$work/err" "ignored material (usemtl) lines: 1"
+contains encode-groups-noted-mtllib "$work/err" "ignored material library (mtllib) lines: 1"
+contains encode-groups-noted-s "$work/err" "ignored smoothing group (s) lines: 1"
+contains encode-groups-noted-o "$work/err" "ignored object name (o) lines: 1"
+check encode-groups-quiet 0 "$qmc" encode "$work/groups.obj" "$work/groups.qmc" --quiet
+cp "$work/err" "$work/quiet.err"
+check encode-groups-quiet-says-nothing 0 test ! -s "$work/quiet.err"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -3,15 +3,23 @@
 #include "mesh_io.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
+
+#include "atomic_file.h"
+#include "mesh_generators.h"
+#include "splitmix64.h"
 
 namespace qmc::tools {
 namespace {
@@ -199,7 +207,65 @@ TEST(MeshIo, ObjReadsAllFaceFormsAndWarns) {
   EXPECT_TRUE(has_warning(warnings, "(l) elements: 1")) << joined(warnings);
   EXPECT_TRUE(has_warning(warnings, "(p) elements: 1")) << joined(warnings);
   EXPECT_TRUE(has_warning(warnings, "unknown keyword 'curv': 1")) << joined(warnings);
-  EXPECT_EQ(warnings.size(), 9u) << joined(warnings);
+  EXPECT_TRUE(has_warning(warnings, "group (g) lines: 1")) << joined(warnings);  // and o, s, usemtl, mtllib
+  EXPECT_EQ(warnings.size(), 14u) << joined(warnings);
+}
+
+// Issue #12 item 8: groups, objects, materials and smoothing groups are not
+// kept yet, and never vanish without a counted note.
+TEST(MeshIo, ObjGroupsObjectsAndMaterialsAreCounted) {
+  const std::string obj =
+      "mtllib a.mtl b.mtl\no box\ng left\nusemtl red\ns 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+      "f 1 2 3\ng right\nusemtl blue\ns off\nf 2 4 3\nusemtl red\n";
+  Mesh mesh;
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(read_text(obj, "obj", &mesh, &warnings).ok());
+  EXPECT_EQ(mesh.face_count(), 2u);
+  EXPECT_TRUE(has_warning(warnings, "ignored group (g) lines: 2")) << joined(warnings);
+  EXPECT_TRUE(has_warning(warnings, "ignored object name (o) lines: 1")) << joined(warnings);
+  EXPECT_TRUE(has_warning(warnings, "ignored smoothing group (s) lines: 2")) << joined(warnings);
+  EXPECT_TRUE(has_warning(warnings, "ignored material (usemtl) lines: 3")) << joined(warnings);
+  EXPECT_TRUE(has_warning(warnings, "ignored material library (mtllib) lines: 1")) << joined(warnings);
+  EXPECT_EQ(warnings.size(), 5u) << joined(warnings);
+}
+
+// Issue #12 item 8: a file named .obj that is not an OBJ mesh is an error
+// naming where, never an empty mesh.
+TEST(MeshIo, ObjWithBinaryDataIsAnError) {
+  Mesh mesh;
+  expect_invalid(read_text(std::string("v 0 0 0\nv 1\0\xff", 13), "obj", &mesh), "<obj data> byte 11:", "NUL byte");
+  std::string random(4096, ' ');
+  SplitMix64 rng(12);
+  for (char& c : random) c = static_cast<char>(rng.next() & 0xff);
+  const Status status = read_text(random, "obj", &mesh);
+  expect_invalid(status, "<obj data> byte ", "NUL byte");
+  EXPECT_EQ(mesh.vertex_count(), 0u);
+}
+
+TEST(MeshIo, ObjWithoutVertexOrFaceLinesIsAnError) {
+  Mesh mesh;
+  expect_invalid(read_text("# exported\n\nmtllib scene.mtl\no empty\n", "obj", &mesh), "line 3:",
+                 "no vertex (v) or face (f) line in the whole file, which starts 'mtllib scene.mtl'");
+  expect_invalid(read_text("vt 0 0\nvn 0 0 1\n", "obj", &mesh), "line 1:", "no vertex (v) or face (f) line");
+  // Printable garbage: words and newlines, but no NUL byte.
+  std::string text;
+  SplitMix64 rng(7);
+  for (int i = 0; i < 2000; ++i) text += rng.below(8) == 0 ? '\n' : static_cast<char>('!' + rng.below(94));
+  const Status status = read_text(text, "obj", &mesh);
+  EXPECT_EQ(status.code(), ErrorCode::kInvalidArgument);
+  EXPECT_TRUE(contains(status.message(), "<obj data> line ")) << status.message();
+}
+
+TEST(MeshIo, ObjOfOnlyCommentsAndBlankLinesIsAnEmptyMesh) {
+  for (const char* text : {"", "\n\n", "# nothing here\n   \n# at all\n"}) {
+    Mesh mesh = make_mesh({1, 2, 3}, {});
+    ASSERT_TRUE(read_text(text, "obj", &mesh).ok()) << text;
+    EXPECT_EQ(mesh.vertex_count(), 0u);
+    EXPECT_EQ(mesh.face_count(), 0u);
+  }
+  Mesh points;  // vertices alone are a point cloud, not garbage
+  ASSERT_TRUE(read_text("v 0 0 0\nv 1 1 1\n", "obj", &points).ok());
+  EXPECT_EQ(points.vertex_count(), 2u);
 }
 
 TEST(MeshIo, ObjKeepsSoupExactly) {
@@ -534,6 +600,32 @@ TEST(MeshIo, StlBinaryEvenWithSolidHeader) {
   }
 }
 
+// Issue #12 item 8: the count field (bytes 80-83) must agree with the file
+// size; a count of 0 or too small would otherwise drop triangles silently.
+TEST(MeshIo, StlBinaryCountDisagreeingWithTheSizeIsAnError) {
+  const std::string two = binary_stl("binary", {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {1, 0, 0, 1, 1, 0, 0, 1, 0}});
+  for (const char* header : {"binary", "solid but actually binary"}) {
+    for (char count : {0, 1}) {
+      std::string data = two;
+      data.replace(0, std::strlen(header), header);
+      data[80] = count;
+      Mesh mesh;
+      expect_invalid(read_text(data, "stl", &mesh), "<stl data> byte 80:",
+                     "header says " + std::to_string(count) + " triangles but the file's 184 bytes hold 2");
+      EXPECT_EQ(mesh.face_count(), 0u);
+    }
+  }
+}
+
+TEST(MeshIo, StlBinaryPaddingShorterThanATriangleIsANote) {
+  const std::string two = binary_stl("binary", {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {1, 0, 0, 1, 1, 0, 0, 1, 0}});
+  Mesh mesh;
+  std::vector<std::string> warnings;
+  ASSERT_TRUE(read_text(two + std::string(49, '\0'), "stl", &mesh, &warnings).ok());
+  EXPECT_EQ(mesh.face_count(), 2u);
+  EXPECT_TRUE(has_warning(warnings, "ignored trailing bytes after the STL triangles: 49")) << joined(warnings);
+}
+
 TEST(MeshIo, StlErrors) {
   const std::string full = binary_stl("binary", {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {1, 0, 0, 1, 1, 0, 0, 1, 0}});
   Mesh mesh;
@@ -570,6 +662,90 @@ TEST(MeshIo, FileErrors) {
   std::filesystem::create_directory(directory);
   EXPECT_EQ(read_mesh(directory, &mesh, nullptr).code(), ErrorCode::kIo);
   std::filesystem::remove(directory);
+}
+
+// ---------------------------------------------------------------------------
+// Writing in one step (issue #12 item 7)
+
+std::string file_text(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// Names in `directory` other than `keep`: a left-over temporary file shows here.
+std::vector<std::string> other_files(const std::string& directory, const std::string& keep) {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(directory))
+    if (entry.path().filename() != keep) names.push_back(entry.path().filename().string());
+  return names;
+}
+
+TEST(MeshIo, WriteMeshReplacesTheFileKeepingItsPermissions) {
+  const std::string directory = temp_path("replace");
+  std::filesystem::create_directories(directory);
+  const std::string path = directory + "/mesh.obj";
+  ASSERT_TRUE(write_mesh(path, make_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {{0, 1, 2}})).ok());
+  struct stat st;
+  ASSERT_EQ(stat(path.c_str(), &st), 0);
+  const mode_t umask_now = umask(0);
+  umask(umask_now);
+  EXPECT_EQ(st.st_mode & 0777, 0666u & ~umask_now);  // a new file, as any other (not 0600)
+  ASSERT_EQ(chmod(path.c_str(), 0640), 0);
+  ASSERT_TRUE(write_mesh(path, make_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {{2, 1, 0}})).ok());
+  EXPECT_EQ(file_text(path), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 3 2 1\n");
+  ASSERT_EQ(stat(path.c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0640u);
+  EXPECT_TRUE(other_files(directory, "mesh.obj").empty());
+  std::filesystem::remove_all(directory);
+}
+
+// A write that fails midway (here: past a file-size limit, as `ulimit -f`
+// sets) leaves the old file whole and no temporary behind, and names errno.
+TEST(MeshIo, WriteMeshFailingMidwayLeavesTheOldFile) {
+  const std::string directory = temp_path("limit");
+  std::filesystem::create_directories(directory);
+  const std::string path = directory + "/mesh.obj";
+  { std::ofstream(path) << "old content\n"; }
+  const Mesh big = make_quad_sphere(20);  // about 100 KB of OBJ text
+  rlimit saved;
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+  rlimit small = saved;
+  small.rlim_cur = 16384;
+  auto previous_handler = std::signal(SIGXFSZ, SIG_IGN);
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  const Status status = write_mesh(path, big);
+  setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, previous_handler);
+  EXPECT_EQ(status.code(), ErrorCode::kIo);
+  EXPECT_EQ(status.message(), "cannot write " + path + ": " + std::strerror(EFBIG));
+  EXPECT_EQ(file_text(path), "old content\n");
+  EXPECT_TRUE(other_files(directory, "mesh.obj").empty());
+  std::filesystem::remove_all(directory);
+}
+
+TEST(MeshIo, WriteFailuresNameTheReason) {
+  const Status missing = write_mesh("/nonexistent/dir/mesh.obj", make_mesh({0, 0, 0, 1, 0, 0, 0, 1, 0}, {{0, 1, 2}}));
+  EXPECT_EQ(missing.message(), std::string("cannot write /nonexistent/dir/mesh.obj: ") + std::strerror(ENOENT));
+  if (!std::filesystem::exists("/dev/full")) GTEST_SKIP() << "no /dev/full";
+  // A device is written in place (never replaced), and a full disk is named.
+  const Status full = write_file_atomically("/dev/full", "x", 1);
+  EXPECT_EQ(full.code(), ErrorCode::kIo);
+  EXPECT_EQ(full.message(), std::string("cannot write /dev/full: ") + std::strerror(ENOSPC));
+}
+
+TEST(MeshIo, SameFileComparesDeviceAndInodeNotNames) {
+  const std::string directory = temp_path("same");
+  std::filesystem::create_directories(directory);
+  const std::string a = directory + "/a.obj", b = directory + "/b.obj", link = directory + "/link.obj";
+  { std::ofstream(a) << "v 0 0 0\n"; }
+  { std::ofstream(b) << "v 0 0 0\n"; }
+  std::filesystem::create_hard_link(a, link);
+  EXPECT_TRUE(same_file(a, a));
+  EXPECT_TRUE(same_file(a, directory + "/./a.obj"));
+  EXPECT_TRUE(same_file(a, link));
+  EXPECT_FALSE(same_file(a, b));  // same content, another file
+  EXPECT_FALSE(same_file(a, directory + "/missing.obj"));
+  std::filesystem::remove_all(directory);
 }
 
 TEST(MeshIo, WriterRejectsBrokenMeshes) {

@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include "atomic_file.h"
 #include "mesh_io.h"
 
 namespace qmc::cli {
@@ -22,19 +23,20 @@ Status read_file(const std::string& path, std::vector<uint8_t>* bytes) {
 }
 
 Status write_file(const std::string& path, const std::vector<uint8_t>& bytes) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) return Status(ErrorCode::kIo, "cannot create " + path + ": " + std::strerror(errno));
-  out.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-  out.close();
-  if (!out) return Status(ErrorCode::kIo, "error writing " + path);
-  return Status::Ok();
+  return tools::write_file_atomically(path, bytes.data(), bytes.size());
 }
 
-Status load_mesh(const std::string& path, Mesh* mesh) {
+Status load_mesh(const std::string& path, Mesh* mesh, bool quiet) {
   std::vector<std::string> warnings;
   Status s = tools::read_mesh(path, mesh, &warnings);
-  for (const std::string& w : warnings) std::fprintf(stderr, "note: %s: %s\n", path.c_str(), w.c_str());
+  if (!quiet)
+    for (const std::string& w : warnings) std::fprintf(stderr, "note: %s: %s\n", path.c_str(), w.c_str());
   return s;
+}
+
+int refuse_overwriting_input(const char* command, const std::string& input, const std::string& output) {
+  if (!tools::same_file(input, output)) return -1;
+  return usage_error(command, "the output " + output + " is the input file " + input + "; refusing to overwrite it");
 }
 
 int fail(const char* command, const Status& status) {

@@ -19,8 +19,12 @@ inline constexpr int kExitOk = 0, kExitCheckFailed = 1, kExitUsage = 2, kExitErr
 Status read_file(const std::string& path, std::vector<uint8_t>* bytes);
 Status write_file(const std::string& path, const std::vector<uint8_t>& bytes);
 
-// Reads a mesh and prints the reader's warnings to stderr.
-Status load_mesh(const std::string& path, Mesh* mesh);
+// Reads a mesh and prints the reader's notes to stderr unless `quiet`.
+Status load_mesh(const std::string& path, Mesh* mesh, bool quiet = false);
+
+// Refuses (returns the usage exit code, having said why) when `output` is
+// the same file as `input` however spelled (device and inode); -1 otherwise.
+int refuse_overwriting_input(const char* command, const std::string& input, const std::string& output);
 
 // Prints "qmc CMD: message" to stderr and returns kExitError.
 int fail(const char* command, const Status& status);

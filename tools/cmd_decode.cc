@@ -42,6 +42,7 @@ int run_decode(int argc, char** argv) {
     return usage_error("decode", "--canonical covers every level; --level does not apply");
   const std::string& input = cl.positional[0];
   const std::string& output = cl.positional[1];
+  if (int rc = refuse_overwriting_input("decode", input, output); rc >= 0) return rc;
   std::vector<uint8_t> bytes;
   if (Status s = read_file(input, &bytes); !s.ok()) return fail("decode", s);
   DecodedFile file;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <string>
 
 #include "cli_common.h"
@@ -62,19 +63,22 @@ const char kHelp[] =
     "  --gim-normals       add three planes of unit normals (attribute kinds 3-5)\n"
     "  --gim-store-blank   also code the samples of blank pixels (smooth planes\n"
     "                      for image tools, at some cost in bytes)\n"
-    "  --quiet             print nothing on success\n";
+    "  --allow-empty       accept an input without vertices or faces (an empty\n"
+    "                      mesh file); without it such an input is an error\n"
+    "  --quiet             print nothing on success, not even the notes about\n"
+    "                      what the reader ignored (texture coordinates, groups)\n";
 
 struct EncodeArgs {
   std::string input, output;
   EncodeOptions options;
-  bool quiet = false, progressive = false;
+  bool quiet = false, progressive = false, allow_empty = false;
   std::string roi_path;
 };
 
 const CommandSpec kSpec{"encode",
                         kHelp,
-                        {"--quiet", "--keep-order", "--progressive", "--topology-preserving", "--gim-float",
-                         "--gim-quads", "--gim-store-blank", "--gim-normals"},
+                        {"--quiet", "--allow-empty", "--keep-order", "--progressive", "--topology-preserving",
+                         "--gim-float", "--gim-quads", "--gim-store-blank", "--gim-normals"},
                         {{"--bits", "-q"}, {"--text"}, {"--connectivity"}, {"--levels"}, {"--gim"}, {"--sampling"},
                          {"--roi"}},
                         2,
@@ -121,6 +125,7 @@ int parse(int argc, char** argv, EncodeArgs* args) {
   args->input = cl.positional[0];
   args->output = cl.positional[1];
   args->quiet = cl.has("--quiet");
+  args->allow_empty = cl.has("--allow-empty");
   args->options.keep_order = cl.has("--keep-order");
   args->progressive = cl.has("--progressive");
   if (args->progressive) args->options.progressive_levels = 3;
@@ -348,14 +353,24 @@ int encode_gim(EncodeArgs& args, const Mesh& mesh, uint64_t input_bytes) {
 int run_encode(int argc, char** argv) {
   EncodeArgs args;
   if (int rc = parse(argc, argv, &args); rc >= 0) return rc;
-  std::vector<uint8_t> input_bytes;
-  if (Status s = read_file(args.input, &input_bytes); !s.ok()) return fail("encode", s);
-  Progress progress(input_bytes.size() > (16u << 20));  // big inputs take seconds
+  if (int rc = refuse_overwriting_input("encode", args.input, args.output); rc >= 0) return rc;
+  if (!args.roi_path.empty())
+    if (int rc = refuse_overwriting_input("encode", args.roi_path, args.output); rc >= 0) return rc;
+  // Only the size is reported; the reader below opens the file (and says
+  // why it cannot), so the file is not read twice.
+  std::error_code size_error;
+  const uint64_t input_size = std::filesystem::file_size(args.input, size_error);
+  Progress progress(!size_error && input_size > (16u << 20));  // big inputs take seconds
   progress.stage("reading " + args.input);
   Mesh mesh;
-  if (Status s = load_mesh(args.input, &mesh); !s.ok()) return fail("encode", s);
-  if (args.progressive) return encode_progressive(args, std::move(mesh), input_bytes.size());
-  if (args.options.gim.size > 0) return encode_gim(args, mesh, input_bytes.size());
+  if (Status s = load_mesh(args.input, &mesh, args.quiet); !s.ok()) return fail("encode", s);
+  // An empty mesh is a valid file (the valid_empty_mesh vector), but from a
+  // mesh file it is far more often a mistake than an intention.
+  if (mesh.vertex_count() == 0 && mesh.face_count() == 0 && !args.allow_empty)
+    return fail("encode", Status(ErrorCode::kInvalidArgument,
+                                 args.input + ": no vertices and no faces (pass --allow-empty to encode an empty mesh)"));
+  if (args.progressive) return encode_progressive(args, std::move(mesh), input_size);
+  if (args.options.gim.size > 0) return encode_gim(args, mesh, input_size);
   std::vector<uint8_t> bytes;
   EncodeStats stats;
   progress.stage("encoding " + std::to_string(mesh.face_count()) + " faces");
@@ -376,7 +391,7 @@ int run_encode(int argc, char** argv) {
     return fail("encode", Status(ErrorCode::kInvalidArgument, "internal error, round trip mismatch: " +
                                                                   check.face_mismatch + check.position_mismatch));
   if (Status s = write_file(args.output, bytes); !s.ok()) return fail("encode", s);
-  if (!args.quiet) print_report(args, mesh, stats, check, input_bytes.size());
+  if (!args.quiet) print_report(args, mesh, stats, check, input_size);
   return kExitOk;
 }
 

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "atomic_file.h"
 #include "cli_common.h"
 #include "commands.h"
 #include "encoder/gim_writer.h"
@@ -34,11 +35,7 @@ const char kHelp[] =
 std::string plane_file(int i, uint8_t format) { return "plane" + std::to_string(i) + (format == 0 ? ".png" : ".pfm"); }
 
 Status write_text(const std::string& path, const std::string& text) {
-  std::ofstream f(path, std::ios::binary);
-  f << text;
-  f.close();
-  if (!f) return Status(ErrorCode::kIo, path + ": cannot write");
-  return Status::Ok();
+  return tools::write_file_atomically(path, text.data(), text.size());
 }
 
 Status export_image(const GeometryImageData& g, const std::string& dir) {
@@ -122,8 +119,9 @@ Status read_plane(const std::string& path, const GimRawImage& g, std::vector<uin
   return Status::Ok();
 }
 
-// One line of gim.txt.
-Status read_line(const std::string& dir, const std::string& key, std::istringstream& line, GimRawImage* g) {
+// One line of gim.txt; the file it names (if any) is added to `files`.
+Status read_line(const std::string& dir, const std::string& key, std::istringstream& line, GimRawImage* g,
+                 std::vector<std::string>* files) {
   const std::string manifest = dir + "/gim.txt";
   uint64_t v = 0;
   if (key == "width" || key == "height" || key == "format" || key == "face_mode" || key == "store_blank") {
@@ -145,9 +143,11 @@ Status read_line(const std::string& dir, const std::string& key, std::istringstr
     g->offsets.push_back(std::strtod(offset.c_str(), nullptr));
     g->steps.push_back(std::strtod(step.c_str(), nullptr));
     g->planes.emplace_back();
-    return read_plane(dir + "/" + file, *g, &g->planes.back());
+    files->push_back(dir + "/" + file);
+    return read_plane(files->back(), *g, &g->planes.back());
   }
   if (!(line >> file)) return bad(manifest, key + " needs a file name");
+  files->push_back(dir + "/" + file);
   if (key == "mask") {
     std::vector<uint32_t> mask;
     GimRawImage mask_image;  // a 16-bit plane of the image's size
@@ -169,8 +169,10 @@ Status read_line(const std::string& dir, const std::string& key, std::istringstr
   return bad(manifest, "unknown line '" + key + "'");
 }
 
-Status import_image(const std::string& dir, GimRawImage* g) {
+// `files` gets every file read, gim.txt first.
+Status import_image(const std::string& dir, GimRawImage* g, std::vector<std::string>* files) {
   const std::string manifest = dir + "/gim.txt";
+  files->push_back(manifest);
   std::ifstream f(manifest);
   if (!f) return Status(ErrorCode::kIo, manifest + ": cannot read");
   std::string text;
@@ -180,10 +182,17 @@ Status import_image(const std::string& dir, GimRawImage* g) {
     std::istringstream line(text);
     std::string key;
     if (!(line >> key)) continue;
-    if (Status s = read_line(dir, key, line, g); !s.ok()) return s;
+    if (Status s = read_line(dir, key, line, g, files); !s.ok()) return s;
   }
   if (g->format == 1) g->offsets.clear(), g->steps.clear();
   return Status::Ok();
+}
+
+// Every file export_image may write into `dir`.
+std::vector<std::string> export_paths(const GeometryImageData& g, const std::string& dir) {
+  std::vector<std::string> paths{dir + "/gim.txt", dir + "/mask.png", dir + "/seams.txt", dir + "/triangles.txt"};
+  for (size_t i = 0; i < g.planes.size(); ++i) paths.push_back(dir + "/" + plane_file(int(i), g.format));
+  return paths;
 }
 
 int run_export(const std::string& input, const std::string& dir) {
@@ -194,6 +203,8 @@ int run_export(const std::string& input, const std::string& dir) {
     return fail("gim export", Status(s.code(), input + ": " + s.message()));
   if (!file.gim.present)
     return fail("gim export", Status(ErrorCode::kInvalidArgument, input + " is not a geometry image (no GIMG chunk)"));
+  for (const std::string& path : export_paths(file.gim, dir))
+    if (int rc = refuse_overwriting_input("gim export", input, path); rc >= 0) return rc;
   if (Status s = export_image(file.gim, dir); !s.ok()) return fail("gim export", s);
   std::printf("exported %s: %u x %u, %u planes -> %s/gim.txt\n", input.c_str(), file.gim.width, file.gim.height,
               unsigned(file.gim.plane_count), dir.c_str());
@@ -202,7 +213,10 @@ int run_export(const std::string& input, const std::string& dir) {
 
 int run_import(const std::string& dir, const std::string& output) {
   GimRawImage image;
-  if (Status s = import_image(dir, &image); !s.ok()) return fail("gim import", s);
+  std::vector<std::string> inputs;
+  if (Status s = import_image(dir, &image, &inputs); !s.ok()) return fail("gim import", s);
+  for (const std::string& input : inputs)
+    if (int rc = refuse_overwriting_input("gim import", input, output); rc >= 0) return rc;
   std::vector<uint8_t> bytes;
   EncodeStats stats;
   if (Status s = write_raw_geometry_image(image, {}, &bytes, &stats); !s.ok()) return fail("gim import", s);

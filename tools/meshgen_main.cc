@@ -16,6 +16,7 @@ namespace {
 const char kUsage[] =
     "usage: qmc-meshgen KIND [PARAMS] OUT.{obj,off,ply}\n"
     "  tetrahedron | cube | sphere N | torus MAJOR MINOR | grid NX NY | prism N | soup SEED\n"
+    "  polygon N | book N | star N   one N-gon; N triangles on one edge; N triangles on one vertex\n"
     "  deltoidal                the 60-quad sphere (deltoidal hexecontahedron)\n"
     "  sphere-series LEVELS     it after LEVELS Catmull-Clark steps, on the unit sphere (0..10)\n"
     "  catmull-clark IN         IN (a mesh file) after one Catmull-Clark step\n";
@@ -64,6 +65,9 @@ int main(int argc, char** argv) {
   else if (kind == "torus") mesh = make_torus(param(argc, argv, 2), param(argc, argv, 3));
   else if (kind == "grid") mesh = make_grid(param(argc, argv, 2), param(argc, argv, 3));
   else if (kind == "prism") mesh = make_prism(param(argc, argv, 2));
+  else if (kind == "polygon") mesh = make_polygon(uint32_t(param(argc, argv, 2)));
+  else if (kind == "book") mesh = make_book(uint32_t(param(argc, argv, 2)));
+  else if (kind == "star") mesh = make_vertex_star(uint32_t(param(argc, argv, 2)));
   else if (kind == "soup") mesh = make_random_soup(uint64_t(param(argc, argv, 2)), RandomSoupOptions{});
   else if (kind == "deltoidal") mesh = make_deltoidal_hexecontahedron();
   else if (kind == "sphere-series") mesh = make_refined_sphere(levels_param(argc, argv, 2));

@@ -1,4 +1,5 @@
 // qmc: command-line front end of the codec.
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -31,6 +32,10 @@ const char kUsage[] =
 }  // namespace
 
 int main(int argc, char** argv) {
+  // Past a file-size limit (ulimit -f) a write then fails with EFBIG, which
+  // is reported and cleaned up, instead of the signal killing the process
+  // with a half-written temporary file left behind.
+  std::signal(SIGXFSZ, SIG_IGN);
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);
     return argc < 2 ? qmc::cli::kExitUsage : qmc::cli::kExitOk;

@@ -57,6 +57,33 @@ bool is_permutation(const std::vector<uint32_t>& map) {
   return true;
 }
 
+constexpr uint32_t kNoRotation = UINT32_MAX;
+
+// The smallest s such that input face `in` reads like the file face started
+// at its corner (m + s) mod d, or kNoRotation (section 4.5 rotations).
+// Knuth-Morris-Pratt over the file face read twice around: linear in d even
+// for a face that repeats a vertex, where trying each rotation in turn costs
+// up to d^2 comparisons. `border` is scratch space, kept between faces.
+uint32_t rotation_after_min(const uint32_t* in, const uint32_t* file, const std::vector<uint32_t>& file_vertex,
+                            uint32_t d, uint32_t m, std::vector<uint32_t>* border) {
+  // border[i]: length of the longest proper prefix of in[0..i] that is also its suffix.
+  border->assign(d, 0);
+  for (uint32_t i = 1, k = 0; i < d; ++i) {
+    while (k > 0 && in[i] != in[k]) k = (*border)[k - 1];
+    if (in[i] == in[k]) ++k;
+    (*border)[i] = k;
+  }
+  uint32_t matched = 0, corner = m;
+  for (uint32_t j = 0; j + 1 < 2 * d; ++j) {
+    const uint32_t v = file_vertex[file[corner]];
+    corner = corner + 1 == d ? 0 : corner + 1;
+    while (matched > 0 && v != in[matched]) matched = (*border)[matched - 1];
+    if (v == in[matched]) ++matched;
+    if (matched == d) return j + 1 - d;
+  }
+  return kNoRotation;
+}
+
 }  // namespace
 
 Status encode_order(const Mesh& input, const Mesh& file_mesh, const std::vector<uint32_t>& file_vertex,
@@ -74,6 +101,7 @@ Status encode_order(const Mesh& input, const Mesh& file_mesh, const std::vector<
   std::vector<uint32_t> offset_from_min(faces, 0);
   bool rotated = false;
   uint64_t k0 = 0;
+  std::vector<uint32_t> border;
   for (size_t j = 0; j < faces; ++j) {
     const uint32_t degree = file_mesh.face_sizes[j];
     const uint32_t* file = &file_mesh.corners[k0];
@@ -86,19 +114,11 @@ Status encode_order(const Mesh& input, const Mesh& file_mesh, const std::vector<
     uint32_t m = 0;
     for (uint32_t i = 1; i < degree; ++i)
       if (file_vertex[file[i]] < file_vertex[file[m]]) m = i;
-    bool found = false;
-    for (uint32_t s = 0; s < degree && !found; ++s) {
-      const uint32_t r = uint32_t((uint64_t(m) + s) % degree);
-      uint32_t k = 0;
-      while (k < degree && in[k] == file_vertex[file[(uint64_t(k) + r) % degree]]) ++k;
-      if (k == degree) {
-        found = true;
-        offset_from_min[j] = s;
-        rotated = rotated || r != 0;
-      }
-    }
-    if (!found)
+    const uint32_t s = rotation_after_min(in, file, file_vertex, degree, m, &border);
+    if (s == kNoRotation)
       return internal("file face " + std::to_string(j) + " is no rotation of input face " + std::to_string(src));
+    offset_from_min[j] = s;
+    rotated = rotated || (uint64_t(m) + s) % degree != 0;
   }
 
   const bool reorder_faces = !is_identity(face_source), relabel = !is_identity(file_vertex);

@@ -14,40 +14,56 @@ constexpr uint32_t kNone = UINT32_MAX;
 
 uint32_t find(std::vector<uint32_t>& parent, uint32_t v) { return union_find_root(parent, v); }
 
-bool repeats_a_vertex(const uint32_t* c, uint32_t d) {
-  for (uint32_t i = 0; i < d; ++i)
-    for (uint32_t j = i + 1; j < d; ++j)
-      if (c[i] == c[j]) return true;
+// Linear in the face's degree (a face may have millions of corners):
+// `listed_by[v]` is the last face seen to list v.
+bool repeats_a_vertex(const uint32_t* c, uint32_t d, uint32_t face, std::vector<uint32_t>* listed_by) {
+  for (uint32_t i = 0; i < d; ++i) {
+    if ((*listed_by)[c[i]] == face) return true;
+    (*listed_by)[c[i]] = face;
+  }
   return false;
 }
 
-uint64_t key(uint32_t u, uint32_t v) { return (uint64_t(u) << 32) | v; }
-
 // Pairs half-edges u->v and v->u that are the only ones of their direction,
-// among those not yet paired. `keys` is rebuilt from the current corners.
+// among those not yet paired. Linear however many faces share one edge: the
+// half-edges are bucketed by their smaller endpoint (a counting sort), and
+// within a bucket tallied by their larger endpoint, as in the opposite-edge
+// table of the quad coder.
 void pair_unique_edges(PolygonSurfaceModel* s) {
-  const uint32_t n = uint32_t(s->corners.size());
-  std::vector<std::pair<uint64_t, uint32_t>> keys;
-  keys.reserve(n);
+  const uint32_t n = uint32_t(s->corners.size()), nv = s->vertex_count();
+  auto low = [&](uint32_t h) { return std::min(s->corners[h], s->corners[s->next(h)]); };
+  auto high = [&](uint32_t h) { return std::max(s->corners[h], s->corners[s->next(h)]); };
+  std::vector<uint32_t> begin(size_t(nv) + 1, 0);
   for (uint32_t h = 0; h < n; ++h)
-    if (s->twin[h] == kNone) keys.push_back({key(s->corners[h], s->corners[s->next(h)]), h});
-  std::sort(keys.begin(), keys.end());
-  auto range = [&](uint64_t k) {
-    auto lo = std::lower_bound(keys.begin(), keys.end(), std::make_pair(k, uint32_t(0)));
-    auto hi = lo;
-    while (hi != keys.end() && hi->first == k) ++hi;
-    return std::make_pair(lo, hi);
-  };
-  for (const auto& [k, h] : keys) {
-    if (s->twin[h] != kNone) continue;
-    const uint32_t u = uint32_t(k >> 32), v = uint32_t(k);
-    const auto same = range(k);
-    const auto back = range(key(v, u));
-    if (same.second - same.first != 1 || back.second - back.first != 1) continue;
-    const uint32_t t = back.first->second;
-    if (s->twin[t] != kNone) continue;
-    s->twin[h] = t;
-    s->twin[t] = h;
+    if (s->twin[h] == kNone) ++begin[low(h) + 1];
+  for (uint32_t v = 0; v < nv; ++v) begin[v + 1] += begin[v];
+  std::vector<uint32_t> bucket(begin[nv]), fill(begin.begin(), begin.end() - 1);
+  for (uint32_t h = 0; h < n; ++h)
+    if (s->twin[h] == kNone) bucket[fill[low(h)]++] = h;
+  // Per larger endpoint b, for the current smaller endpoint a: the half-edges
+  // a->b and b->a seen, and the last of each.
+  std::vector<uint32_t> tallied_for(nv, kNone), up_count(nv), down_count(nv), up(nv), down(nv);
+  for (uint32_t a = 0; a < nv; ++a) {
+    for (uint32_t k = begin[a]; k < begin[a + 1]; ++k) {
+      const uint32_t h = bucket[k], b = high(h);
+      if (tallied_for[b] != a) {
+        tallied_for[b] = a;
+        up_count[b] = down_count[b] = 0;
+      }
+      if (s->corners[h] == a) {
+        ++up_count[b];
+        up[b] = h;
+      } else {
+        ++down_count[b];
+        down[b] = h;
+      }
+    }
+    for (uint32_t k = begin[a]; k < begin[a + 1]; ++k) {
+      const uint32_t b = high(bucket[k]);
+      if (up_count[b] != 1 || down_count[b] != 1) continue;
+      s->twin[up[b]] = down[b];
+      s->twin[down[b]] = up[b];
+    }
   }
 }
 
@@ -168,15 +184,48 @@ int64_t euler_characteristic(const PolygonSurfaceModel& s, const std::vector<uin
   return v - e / 2 + int64_t(faces.size());
 }
 
+// The arrays of non_separating_cycle, kept between calls and cleared only
+// where a component used them: a surface may have a great many small
+// components with a handle each, and fresh surface-sized arrays for each
+// would make cutting them all quadratic.
+struct CycleScratch {
+  std::vector<uint32_t> up, depth, out_edge;  // per vertex; up and out_edge are written before read
+  std::vector<uint8_t> in_tree, in_cotree;    // per half-edge
+  std::vector<uint8_t> face_seen;             // per face
+
+  // The surface grows as handles are cut.
+  void fit(const PolygonSurfaceModel& s) {
+    up.resize(s.vertex_count(), kNone);
+    depth.resize(s.vertex_count(), kNone);
+    out_edge.resize(s.vertex_count(), kNone);
+    in_tree.resize(s.corners.size(), 0);
+    in_cotree.resize(s.corners.size(), 0);
+    face_seen.resize(s.face_count(), 0);
+  }
+  // Back to "unseen" for `faces`, before the cut changes their corners.
+  void clear(const PolygonSurfaceModel& s, const std::vector<uint32_t>& faces) {
+    for (uint32_t f : faces) {
+      face_seen[f] = 0;
+      for (uint32_t h = s.face_begin[f]; h < s.face_begin[f + 1]; ++h) {
+        depth[s.corners[h]] = kNone;
+        in_tree[h] = in_cotree[h] = 0;
+      }
+    }
+  }
+};
+
 // A non-separating cycle (as half-edges, each with its face on the left):
 // the fundamental cycle of a leftover edge of a tree-cotree decomposition.
-std::vector<uint32_t> non_separating_cycle(const PolygonSurfaceModel& s, const std::vector<uint32_t>& faces) {
-  const uint32_t nv = s.vertex_count();
-  std::vector<uint32_t> up(nv, kNone), depth(nv, kNone), out_edge(nv, kNone);
+std::vector<uint32_t> non_separating_cycle(const PolygonSurfaceModel& s, const std::vector<uint32_t>& faces,
+                                           CycleScratch* scratch) {
+  scratch->fit(s);
+  std::vector<uint32_t>& up = scratch->up;
+  std::vector<uint32_t>& depth = scratch->depth;
+  std::vector<uint32_t>& out_edge = scratch->out_edge;
   // One half-edge leaving each vertex of the component.
   for (uint32_t f : faces)
     for (uint32_t h = s.face_begin[f]; h < s.face_begin[f + 1]; ++h) out_edge[s.corners[h]] = h;
-  std::vector<uint8_t> in_tree(s.corners.size(), 0);
+  std::vector<uint8_t>& in_tree = scratch->in_tree;
   const uint32_t root = s.corners[s.face_begin[faces[0]]];
   std::vector<uint32_t> queue{root};
   depth[root] = 0;
@@ -197,7 +246,8 @@ std::vector<uint32_t> non_separating_cycle(const PolygonSurfaceModel& s, const s
     } while (h != start);
   }
   // Dual tree over faces through edges not in the primal tree.
-  std::vector<uint8_t> face_seen(s.face_count(), 0), in_cotree(s.corners.size(), 0);
+  std::vector<uint8_t>& face_seen = scratch->face_seen;
+  std::vector<uint8_t>& in_cotree = scratch->in_cotree;
   std::vector<uint32_t> fq{faces[0]};
   face_seen[faces[0]] = 1;
   for (size_t i = 0; i < fq.size(); ++i)
@@ -288,9 +338,13 @@ std::string build_polygon_surface(const Mesh& mesh, PolygonSurfaceModel* s) {
   *s = PolygonSurfaceModel{};
   s->original.resize(mesh.vertex_count());
   std::iota(s->original.begin(), s->original.end(), 0u);
+  std::vector<uint32_t> listed_by(mesh.vertex_count(), kNone);
+  s->corners.reserve(mesh.corners.size());
+  s->twin.reserve(mesh.corners.size());
+  s->face_of.reserve(mesh.corners.size());
   for (uint32_t f = 0, begin = 0; f < mesh.face_count(); begin += mesh.face_sizes[f], ++f) {
     const uint32_t* c = &mesh.corners[begin];
-    if (repeats_a_vertex(c, mesh.face_sizes[f])) {
+    if (repeats_a_vertex(c, mesh.face_sizes[f], f, &listed_by)) {
       s->loose.push_back(f);
       continue;
     }
@@ -298,9 +352,12 @@ std::string build_polygon_surface(const Mesh& mesh, PolygonSurfaceModel* s) {
   }
   pair_unique_edges(s);
   split_fans(s);
-  pair_unique_edges(s);  // copies can make a cut edge unique again (5.4.9)
+  // Copies can make a cut edge unique again (5.4.9); without copies the
+  // corners are unchanged and so is the pairing.
+  if (s->vertex_copies > 0) pair_unique_edges(s);
   if (std::string why = close_holes(s); !why.empty()) return why;
   std::vector<uint32_t> mark(s->vertex_count(), kNone);
+  CycleScratch scratch;
   for (int round = 0;; ++round) {
     bool cut = false;
     const auto components = components_of(*s);
@@ -309,7 +366,8 @@ std::string build_polygon_surface(const Mesh& mesh, PolygonSurfaceModel* s) {
       const int64_t chi = euler_characteristic(*s, components[c], &mark, c);
       if (chi == 2) continue;
       if (chi > 2 || chi % 2 != 0) return "internal: a component has Euler characteristic " + std::to_string(chi);
-      const std::vector<uint32_t> cycle = non_separating_cycle(*s, components[c]);
+      const std::vector<uint32_t> cycle = non_separating_cycle(*s, components[c], &scratch);
+      scratch.clear(*s, components[c]);
       if (cycle.size() < 3) return "internal: no cycle found through a handle";
       cut_handle(s, cycle);
       cut = true;

@@ -21,6 +21,8 @@
 #include <system_error>
 #include <utility>
 
+#include "atomic_file.h"
+
 namespace qmc::tools {
 namespace {
 
@@ -71,16 +73,7 @@ Status read_file(const std::string& path, std::vector<uint8_t>* data) {
 }
 
 Status write_file(const std::string& path, const std::vector<uint8_t>& data) {
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (file == nullptr) return Status(ErrorCode::kIo, "cannot create " + path + ": " + std::strerror(errno));
-  bool ok = std::fwrite(data.data(), 1, data.size(), file) == data.size();
-  int error = ok ? 0 : errno;
-  if (std::fclose(file) != 0 && ok) {
-    ok = false;
-    error = errno;
-  }
-  if (!ok) return Status(ErrorCode::kIo, "cannot write " + path + ": " + std::strerror(error));
-  return Status::Ok();
+  return write_file_atomically(path, data.data(), data.size());
 }
 
 // ---------------------------------------------------------------------------

@@ -360,6 +360,44 @@ Mesh make_prism(int n) {
   return mesh;
 }
 
+Mesh make_polygon(uint32_t corners) {
+  const uint32_t n = std::max<uint32_t>(corners, 3);
+  Mesh mesh;
+  for (uint32_t k = 0; k < n; ++k) {
+    const UnitVector p = unit_circle(k, n);
+    add_vertex(&mesh, p.c, p.s, 0.f);
+  }
+  mesh.face_sizes.push_back(n);
+  for (uint32_t k = 0; k < n; ++k) mesh.corners.push_back(k);
+  return mesh;
+}
+
+Mesh make_book(uint32_t pages) {
+  const uint32_t n = std::max<uint32_t>(pages, 1);
+  Mesh mesh;
+  add_vertex(&mesh, 0.f, 0.f, -1.f);
+  add_vertex(&mesh, 0.f, 0.f, 1.f);
+  for (uint32_t k = 0; k < n; ++k) {
+    const UnitVector p = unit_circle(k, n);
+    add_vertex(&mesh, p.c, p.s, 0.f);
+    add_face(&mesh, {0, 1, k + 2});
+  }
+  return mesh;
+}
+
+Mesh make_vertex_star(uint32_t triangles) {
+  const uint32_t n = std::max<uint32_t>(triangles, 1);
+  Mesh mesh;
+  add_vertex(&mesh, 0.f, 0.f, 0.f);
+  for (uint32_t k = 0; k < n; ++k) {
+    const UnitVector p = unit_circle(2 * k, 2 * n), q = unit_circle(2 * k + 1, 2 * n);
+    add_vertex(&mesh, p.c, p.s, 0.f);
+    add_vertex(&mesh, q.c, q.s, 0.f);
+    add_face(&mesh, {0, 2 * k + 1, 2 * k + 2});
+  }
+  return mesh;
+}
+
 Mesh make_deltoidal_hexecontahedron() {
   // Icosahedron: cyclic permutations of (0, +-1, +-phi); edges have squared
   // length exactly 4, non-edges more.

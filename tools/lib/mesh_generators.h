@@ -62,6 +62,15 @@ qmc::Mesh make_refined_sphere(int levels);
 // n < 3 is treated as 3.
 qmc::Mesh make_prism(int n);
 
+// Degenerate shapes for complexity tests (issue #12 item 6):
+// one face of `corners` corners (at least 3) around the unit circle in z = 0;
+// a "book": `pages` triangles (0, 1, k + 2) all on the one edge 0-1, page k's
+// tip on the unit circle; a "star": `triangles` triangles that share vertex 0
+// and nothing else.
+qmc::Mesh make_polygon(uint32_t corners);
+qmc::Mesh make_book(uint32_t pages);
+qmc::Mesh make_vertex_star(uint32_t triangles);
+
 // Splits quad `quad` of `mesh` along its diagonal corner 0 - corner 2 into
 // two quads that share two edges, around a new vertex of valence 2 at the
 // diagonal's midpoint (appended last): (c0, c1, c2, v) in place and

@@ -17,6 +17,10 @@
 #include <unordered_map>
 #include <utility>
 
+#include <sys/stat.h>
+
+#include "atomic_file.h"
+
 namespace qmc::tools {
 namespace {
 
@@ -281,14 +285,28 @@ class ObjParser {
   ObjParser(std::string_view name, WarningTally* warnings) : name_(name), warnings_(warnings) {}
 
   Status parse(std::string_view text, Mesh* mesh) {
+    // OBJ is text: a NUL byte means a binary file given the wrong name,
+    // whose lines would otherwise all be skipped as unknown keywords.
+    if (size_t nul = text.find('\0'); nul != std::string_view::npos)
+      return invalid(std::string(name_) + " byte " + std::to_string(nul) + ": a NUL byte; OBJ files are text");
     LineReader lines(text);
     std::string joined;
     std::string_view statement;
     uint64_t line = 0;
     while (next_statement(&lines, &joined, &statement, &line)) {
-      Status status = parse_statement(strip_comment(statement), line, mesh);
+      const std::string_view body = strip_comment(statement);
+      if (first_statement_line_ == 0 && !trim(body).empty()) {
+        first_statement_line_ = line;
+        first_statement_ = quoted(trim(body));
+      }
+      Status status = parse_statement(body, line, mesh);
       if (!status.ok()) return status;
     }
+    // Statements but no geometry: not an OBJ mesh (or not one we can read).
+    // A file of only blank and comment lines is an empty mesh.
+    if (first_statement_line_ != 0 && mesh->positions.empty() && mesh->face_sizes.empty())
+      return invalid(at_line(name_, first_statement_line_) +
+                     "no vertex (v) or face (f) line in the whole file, which starts " + first_statement_);
     warnings_->add("ignored texture coordinate indices on face corners", texture_refs_);
     warnings_->add("ignored normal indices on face corners", normal_refs_);
     if (largest_index_ != kNoIndex && largest_index_ >= mesh->vertex_count()) {
@@ -325,6 +343,27 @@ class ObjParser {
     return true;
   }
 
+  // Statements a qmc::Mesh has no place for, each counted in a note. Groups,
+  // objects, smoothing groups and materials carry no geometry but are
+  // information all the same, so they never vanish silently either.
+  static const char* ignored_statement_note(std::string_view keyword) {
+    static constexpr std::pair<std::string_view, const char*> kNotes[] = {
+        {"vt", "ignored texture coordinate (vt) lines"},
+        {"vn", "ignored normal (vn) lines"},
+        {"vp", "ignored parameter-space vertex (vp) lines"},
+        {"l", "ignored polyline (l) elements"},
+        {"p", "ignored point (p) elements"},
+        {"g", "ignored group (g) lines"},
+        {"o", "ignored object name (o) lines"},
+        {"s", "ignored smoothing group (s) lines"},
+        {"usemtl", "ignored material (usemtl) lines"},
+        {"mtllib", "ignored material library (mtllib) lines"},
+    };
+    for (const auto& [name, note] : kNotes)
+      if (keyword == name) return note;
+    return nullptr;
+  }
+
   static bool ends_with_backslash(std::string_view line) {
     line = trim(line);
     return !line.empty() && line.back() == '\\';
@@ -336,18 +375,8 @@ class ObjParser {
     std::string_view keyword = tokens_[0];
     if (keyword == "v") return parse_vertex(line, mesh);
     if (keyword == "f") return parse_face(line, mesh);
-    if (keyword == "vt") {
-      warnings_->add("ignored texture coordinate (vt) lines");
-    } else if (keyword == "vn") {
-      warnings_->add("ignored normal (vn) lines");
-    } else if (keyword == "vp") {
-      warnings_->add("ignored parameter-space vertex (vp) lines");
-    } else if (keyword == "l") {
-      warnings_->add("ignored polyline (l) elements");
-    } else if (keyword == "p") {
-      warnings_->add("ignored point (p) elements");
-    } else if (keyword == "g" || keyword == "o" || keyword == "s" || keyword == "usemtl" || keyword == "mtllib") {
-      // Names of groups, objects, smoothing groups and materials: no geometry.
+    if (const char* note = ignored_statement_note(keyword)) {
+      warnings_->add(note);
     } else if (unknown_kinds_ < kMaxUnknownKinds) {
       size_t before = warnings_->kinds();
       warnings_->add("ignored lines with unknown keyword " + quoted(keyword));
@@ -451,6 +480,8 @@ class ObjParser {
   size_t unknown_kinds_ = 0;
   uint64_t largest_index_ = kNoIndex;
   uint64_t largest_index_line_ = 0;
+  uint64_t first_statement_line_ = 0;  // 0: none yet
+  std::string first_statement_;
 };
 
 // ---------------------------------------------------------------------------
@@ -1260,15 +1291,18 @@ constexpr uint64_t kStlHeaderBytes = 84;
 constexpr uint64_t kStlTriangleBytes = 50;
 
 // Binary when the size matches the triangle count exactly (some binary files
-// also begin with "solid"); otherwise ASCII if it starts with "solid".
+// also begin with "solid"); otherwise ASCII if it starts with "solid" and
+// holds no NUL byte (which ASCII STL never does, and a binary file whose
+// count is wrong almost always does, in the count itself if nowhere else).
 bool stl_is_binary(std::string_view data) {
   if (data.size() >= kStlHeaderBytes &&
       kStlHeaderBytes + kStlTriangleBytes * uint64_t{read_le32(data.data() + 80)} == data.size()) {
     return true;
   }
   std::string_view start = trim(data.substr(0, 64));
-  return !(start.size() >= 5 && equals_ignoring_case(start.substr(0, 5), "solid") &&
-           (start.size() == 5 || is_space(start[5])));
+  const bool says_solid = start.size() >= 5 && equals_ignoring_case(start.substr(0, 5), "solid") &&
+                          (start.size() == 5 || is_space(start[5]));
+  return !says_solid || data.find('\0') != std::string_view::npos;
 }
 
 Status parse_binary_stl(std::string_view data, std::string_view name, Mesh* mesh, WarningTally* warnings) {
@@ -1282,6 +1316,14 @@ Status parse_binary_stl(std::string_view data, std::string_view name, Mesh* mesh
     return invalid(std::string(name) + ": truncated binary STL: header says " + std::to_string(triangles) +
                    " triangles (" + std::to_string(needed) + " bytes) but the file has " +
                    std::to_string(data.size()) + " bytes");
+  }
+  // More whole triangles than the count says: the count is wrong (some
+  // writers leave it 0), and reading only that many would silently drop the
+  // rest. Fewer than 50 extra bytes are padding, noted below.
+  if (const uint64_t room = (data.size() - kStlHeaderBytes) / kStlTriangleBytes; room != triangles) {
+    return invalid(std::string(name) + " byte 80: binary STL header says " + std::to_string(triangles) +
+                   " triangles but the file's " + std::to_string(data.size()) + " bytes hold " + std::to_string(room) +
+                   " (84-byte header, 50 bytes per triangle)");
   }
   StlVertexMerger merger(mesh);
   merger.reserve(triangles * 3);
@@ -1430,6 +1472,10 @@ std::string extension_of(const std::string& path) {
 Status read_file(const std::string& path, std::string* data) {
   std::FILE* file = std::fopen(path.c_str(), "rb");
   if (file == nullptr) return Status(ErrorCode::kIo, "cannot open " + path + ": " + std::strerror(errno));
+  // One allocation for a regular file, rather than copying a big mesh file
+  // each time the string grows.
+  struct stat st;
+  if (fstat(fileno(file), &st) == 0 && S_ISREG(st.st_mode)) data->reserve(size_t(st.st_size));
   char buffer[1 << 16];
   size_t n = 0;
   while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) data->append(buffer, n);
@@ -1622,18 +1668,11 @@ Status write_mesh(const std::string& path, const Mesh& mesh) {
   if (!is_writable_format(format)) return invalid(path + ": cannot write this extension (expected .obj, .off or .ply)");
   Status status = validate_for_writing(mesh);
   if (!status.ok()) return Status(status.code(), path + ": " + status.message());
-  std::FILE* file = std::fopen(path.c_str(), "wb");
-  if (file == nullptr) return Status(ErrorCode::kIo, "cannot create " + path + ": " + std::strerror(errno));
-  TextSink sink(file);
-  write_any(mesh, format, &sink);
-  bool ok = sink.flush();
-  int error = ok ? 0 : errno;
-  if (std::fclose(file) != 0 && ok) {
-    ok = false;
-    error = errno;
-  }
-  if (!ok) return Status(ErrorCode::kIo, "cannot write " + path + ": " + std::strerror(error));
-  return Status::Ok();
+  return write_file_atomically(path, [&](std::FILE* file) {
+    TextSink sink(file);
+    write_any(mesh, format, &sink);
+    return sink.flush();
+  });
 }
 
 }  // namespace qmc::tools
