@@ -137,7 +137,8 @@ std::vector<uint64_t> interesting_counts(const FramedInput& input, const Chunk& 
     if (fields.size() < first + 2) continue;
     const uint64_t a = fields[first].value, b = fields[first + 1].value;
     values.insert(values.end(), {a, b, a + 1, b + 1});
-    if (type == kChunkGeometryImage) values.insert(values.end(), {a * b, a * b + 1, 2 * a * b, 2 * a * b + 1});
+    if (type == kChunkGeometryImage)
+      values.insert(values.end(), {a * b, a * b - 1, a * b + 1, a * b / 2, 2 * a * b, 2 * a * b + 1});
   }
   return values;
 }
@@ -290,6 +291,7 @@ bool ChunkMutator::mutate_header_field(FramedInput* input) {
     any.size = in.position();
     fields = {any};
   }
+  if (chunk.type == kChunkGeometryImage && fields.size() >= 2 && pick(4) == 0) return set_image_size(&chunk, fields);
   const HeaderField& field = fields[pick(fields.size())];
   uint64_t value = 0;
   if (field.kind == K::kU8) {
@@ -306,6 +308,17 @@ bool ChunkMutator::mutate_header_field(FramedInput* input) {
     value = interesting_float_bits(field.kind, pick(16));
   }
   set_header_field(&chunk, field, value);
+  return true;
+}
+
+// W and H together (spec 13.2): the memory bombs of issue #12 item 2 need
+// both large, with W H at most 2^24 so that GIMG itself passes.
+bool ChunkMutator::set_image_size(Chunk* gimg, const std::vector<HeaderField>& fields) {
+  static const uint64_t kSizes[][2] = {{4096, 4096}, {65535, 256}, {256, 65535}, {65535, 255},
+                                       {8192, 2048}, {65535, 1},   {1, 65535},   {4097, 4096}};
+  const uint64_t* size = kSizes[pick(std::size(kSizes))];
+  set_header_field(gimg, fields[1], size[1]);  // H first: W's offset stays valid
+  set_header_field(gimg, fields[0], size[0]);
   return true;
 }
 

@@ -79,6 +79,7 @@ class ChunkMutator {
  private:
   bool mutate_payload_bytes(FramedInput* input, size_t spare);
   bool mutate_header_field(FramedInput* input);
+  bool set_image_size(Chunk* gimg, const std::vector<HeaderField>& fields);
   bool mutate_chunk_list(FramedInput* input);
   size_t mutate_whole(uint8_t* data, size_t size, size_t max_size, bool fix_crcs);
   size_t pick(size_t n) { return n == 0 ? 0 : size_t(random_() % n); }

@@ -46,6 +46,20 @@ bool framed_exactly(const std::vector<uint8_t>& bytes, size_t prefix_size) {
   return input.tail.empty() && frame_chunks(input) == bytes;
 }
 
+// One mutation of the vector per seed 0 .. count - 1, with 16 bytes to grow.
+std::vector<std::vector<uint8_t>> mutants(const std::string& vector_name, unsigned count) {
+  const std::vector<uint8_t> file = read_vector(vector_name);
+  ChunkMutator mutator(0, flip_one_byte);
+  std::vector<std::vector<uint8_t>> out;
+  for (unsigned seed = 0; seed < count; ++seed) {
+    std::vector<uint8_t> data(file);
+    data.resize(data.size() + 16);
+    data.resize(mutator.mutate(data.data(), file.size(), data.size(), seed));
+    out.push_back(std::move(data));
+  }
+  return out;
+}
+
 TEST(ChunkMutator, SplitAndFrameGiveBackEveryValidVector) {
   size_t checked = 0;
   for (const auto& e : fs::directory_iterator(fs::path(QMC_SOURCE_DIR) / "conformance/vectors")) {
@@ -159,20 +173,30 @@ TEST(ChunkMutator, MutationsFitMaxSizeAndMostKeepValidFraming) {
 }
 
 TEST(ChunkMutator, ReachesIssue12Item1VertexCountFromATetrahedron) {
-  const std::vector<uint8_t> file = read_vector("valid_tetrahedron.qmc");
-  ChunkMutator mutator(0, flip_one_byte);
   size_t huge_vertex_counts = 0;
-  for (unsigned seed = 0; seed < 5000; ++seed) {
-    std::vector<uint8_t> data(file);
-    data.resize(data.size() + 16);
-    data.resize(mutator.mutate(data.data(), file.size(), data.size(), seed));
-    FramedInput input = split_chunks(data.data(), data.size(), 0);
+  for (std::vector<uint8_t>& mutant : mutants("valid_tetrahedron.qmc", 5000)) {
+    FramedInput input = split_chunks(mutant.data(), mutant.size(), 0);
     const Chunk* conn = find(&input, kChunkConnectivity);
-    if (conn == nullptr || conn->type != kChunkConnectivity) continue;
+    if (conn == nullptr) continue;
     const std::vector<HeaderField> fields = header_fields(*conn);
-    huge_vertex_counts += fields.size() > 1 && fields[1].value >= 20'000'000 && framed_exactly(data, 0);
+    huge_vertex_counts += fields.size() > 1 && fields[1].value >= 20'000'000 && framed_exactly(mutant, 0);
   }
   EXPECT_GT(huge_vertex_counts, 5u);
+}
+
+TEST(ChunkMutator, ReachesIssue12Item2ImageSizesThatGimgAccepts) {
+  size_t large_images = 0;
+  for (std::vector<uint8_t>& mutant : mutants("valid_gim_u16_torus_quads.qmc", 5000)) {  // 9 x 9, no mask
+    FramedInput input = split_chunks(mutant.data(), mutant.size(), 0);
+    const Chunk* gimg = find(&input, kChunkGeometryImage);
+    if (gimg == nullptr) continue;
+    const std::vector<HeaderField> fields = header_fields(*gimg);
+    if (fields.size() < 2) continue;
+    const uint64_t pixels = fields[0].value * fields[1].value;
+    large_images += pixels >= (1u << 23) && pixels <= (1u << 24) && fields[0].value <= 65535 &&
+                    fields[1].value <= 65535 && framed_exactly(mutant, 0);
+  }
+  EXPECT_GT(large_images, 5u);
 }
 
 TEST(ChunkMutator, CrossOverCombinesChunksOfBothInputs) {
