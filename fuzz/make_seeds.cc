@@ -44,6 +44,43 @@ static void write_polygon_seed(const fs::path& path, const uint8_t* payload, siz
   write(path, seed.data(), seed.size());
 }
 
+// What gim_plane needs of a GIMG payload (spec 13.2): size, sample format
+// and flags; `usable` when the size fits the target's 6-bit fields.
+struct GimPlaneHeader {
+  bool usable = false;
+  uint8_t width_minus_1 = 0, height_minus_1 = 0, target_flags = 0;
+};
+
+static GimPlaneHeader read_gim_plane_header(const uint8_t* payload, size_t size) {
+  qmc::ByteReader in(payload, size);
+  uint64_t width = 0, height = 0;
+  uint8_t format = 0, face_mode = 0, flags = 0;
+  GimPlaneHeader h;
+  if (!in.get_varint(&width) || !in.get_varint(&height) || !in.get_u8(&format) || !in.get_u8(&face_mode) ||
+      !in.get_u8(&flags) || width < 1 || width > 64 || height < 1 || height > 64)
+    return h;
+  h.usable = true;
+  h.width_minus_1 = uint8_t(width - 1);
+  h.height_minus_1 = uint8_t(height - 1);
+  // target flags: bit 0 float32 (format 1), bit 1 blank pixels stored, bit 2 mask present
+  h.target_flags = uint8_t((format == 1 ? 1 : 0) | (flags & 2) | ((flags & 1) << 2));
+  return h;
+}
+
+// gim_plane input: width - 1, height - 1, flags, [u16le mask length, mask],
+// then the plane payload.
+static void write_gim_plane_seed(const fs::path& path, const GimPlaneHeader& h, const std::vector<uint8_t>& mask,
+                                 const uint8_t* plane, size_t size) {
+  if (!h.usable || mask.size() > 0xFFFF) return;
+  std::vector<uint8_t> seed{h.width_minus_1, h.height_minus_1, h.target_flags};
+  if (h.target_flags & 4) {
+    seed.insert(seed.end(), {uint8_t(mask.size()), uint8_t(mask.size() >> 8)});
+    seed.insert(seed.end(), mask.begin(), mask.end());
+  }
+  seed.insert(seed.end(), plane, plane + size);
+  write(path, seed.data(), seed.size());
+}
+
 int main(int argc, char** argv) {
   if (argc != 3) {
     std::fprintf(stderr, "usage: make_seeds VECTORS_DIR OUT_DIR\n");
@@ -68,6 +105,9 @@ int main(int argc, char** argv) {
     std::vector<uint8_t> levels;  // loop_levels input: u16le-prefixed CONN, POSN, LEVL payloads
     bool progressive = false;
     std::vector<uint8_t> gim;  // gim_file input: selector byte, u16le length, payload per GIM chunk
+    GimPlaneHeader gim_header;
+    std::vector<uint8_t> gim_mask;
+    int gim_planes = 0;
     for (size_t pos = 8; pos + 12 <= bytes.size();) {
       const uint32_t type = qmc::load_u32be(&bytes[pos]);
       const uint32_t length = qmc::load_u32le(&bytes[pos + 4]);
@@ -99,6 +139,11 @@ int main(int argc, char** argv) {
           gim.insert(gim.end(), {k, uint8_t(length), uint8_t(length >> 8)});
           gim.insert(gim.end(), payload, payload + length);
         }
+      if (type == qmc::kChunkGeometryImage) gim_header = read_gim_plane_header(payload, length);
+      if (type == qmc::kChunkGimMask) gim_mask.assign(payload, payload + length);
+      if (type == qmc::kChunkGimPlane)
+        write_gim_plane_seed(out / "gim_plane" / (name + "_plane" + std::to_string(gim_planes++)), gim_header, gim_mask,
+                             payload, length);
       if (type == qmc::kChunkOrder && !conn.empty()) {
         std::vector<uint8_t> seed{uint8_t(conn.size()), uint8_t(conn.size() >> 8)};
         seed.insert(seed.end(), conn.begin(), conn.end());

@@ -1,11 +1,15 @@
 // libFuzzer target: the streaming decoder against the whole-buffer decoder.
 // The first input byte chooses the piece sizes; the rest is the file. Spec
 // 3.5 requires the same result however the bytes arrive, so any difference
-// is a bug and aborts.
+// is a bug and aborts. The file after the first byte is mutated as chunks
+// with valid lengths and CRCs (chunk_mutator_hooks.cc).
 #include <cstddef>
 #include <cstdint>
 
+#include "chunk_mutator.h"
 #include "qmc/decoder.h"
+
+const size_t qmc::fuzz::kFilePrefixSize = 1;  // the piece-size byte
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
