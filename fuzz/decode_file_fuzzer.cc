@@ -10,11 +10,38 @@
 
 const size_t qmc::fuzz::kFilePrefixSize = 0;
 
+namespace {
+
+// Decoder memory follows the output charged against the limits (spec 8.1),
+// so with a small output limit an allocation above fuzz.sh's malloc limit is
+// a finding.
+qmc::DecoderLimits small_output() {
+  qmc::DecoderLimits limits;
+  limits.max_output_bytes = 8 << 20;
+  return limits;
+}
+
+// peek() (spec 8.1) agrees with the decoder on a file it decoded: the counts
+// it read are those decoded, and its lower bound of the output holds and is
+// within the limit the decoder enforced.
+void check_peek(const uint8_t* data, size_t size, const qmc::DecodedFile& decoded, const qmc::DecoderLimits& limits) {
+  qmc::FileSummary summary;
+  if (!qmc::peek(data, size, &summary).ok()) __builtin_trap();  // the decoder read these chunks too
+  const size_t output = qmc::canonical_output(decoded).size();
+  if (summary.min_output_bytes > output || output > limits.max_output_bytes) __builtin_trap();
+  if (summary.has_connectivity && decoded.loop_level_count == 0 && summary.vertex_count != decoded.mesh.vertex_count())
+    __builtin_trap();
+  if (summary.has_geometry_image && summary.gim_width != decoded.gim.width) __builtin_trap();
+}
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const qmc::DecoderLimits limits = small_output();
   qmc::DecodedFile file;
-  const qmc::Status s = qmc::decode(data, size, &file);
+  const qmc::Status s = qmc::decode(data, size, &file, limits);
   if (s.ok()) {
-    (void)qmc::canonical_output(file);
+    check_peek(data, size, file, limits);
   } else if (s.message().empty()) {
     __builtin_trap();  // every rejection names its reason
   }

@@ -206,5 +206,18 @@ check encode-groups-quiet 0 "$qmc" encode "$work/groups.obj" "$work/groups.qmc" 
 cp "$work/err" "$work/quiet.err"
 check encode-groups-quiet-says-nothing 0 test ! -s "$work/quiet.err"
 
+# Spec 8.1: a 68-byte file claiming 20 M vertices is refused by the default
+# limits, naming the option; without limits its real fault (12.2 rule 4) shows.
+bomb="$(dirname "$0")/../fuzz/regressions/decode_file/loop_base_claims_20M_vertices"
+check decode-limit 3 "$qmc" decode "$bomb" "$work/bomb.obj"
+contains decode-limit-named "$work/err" "limit_exceeded: .*max_vertices.*--max-output-mb raises it"
+check decode-limit-off 3 "$qmc" decode "$bomb" "$work/bomb.obj" --max-output-mb 0
+contains decode-limit-off-rule "$work/err" "bad_chunk_payload: .*rule 4"
+check decode-limit-bad-value 2 "$qmc" decode "$work/torus.qmc" "$work/t.obj" --max-output-mb lots
+check decode-limit-fraction 2 "$qmc" decode "$work/torus.qmc" "$work/t.obj" --max-output-mb 0.5
+check decode-limit-generous 0 "$qmc" decode "$work/torus.qmc" "$work/t.obj" --max-output-mb 1
+check info-limit 3 "$qmc" info "$bomb"
+contains info-limit-named "$work/out" "--max-output-mb raises it"
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -55,6 +55,37 @@ bool CommandLine::has(const std::string& name) const {
   return false;
 }
 
+const std::string* CommandLine::value(const std::string& name) const {
+  for (const auto& [option, value] : options)
+    if (option == name) return &value;
+  return nullptr;
+}
+
+Status decoder_limits(const CommandLine& cl, DecoderLimits* limits) {
+  *limits = DecoderLimits{};
+  const std::string* mib = cl.value(kMaxOutputOption);
+  if (mib == nullptr) return Status::Ok();
+  long n = 0;
+  if (!parse_int(*mib, 0, 1L << 40, &n))
+    return Status(ErrorCode::kInvalidArgument, std::string(kMaxOutputOption) + " takes a number of MiB, got '" + *mib + "'");
+  *limits = DecoderLimits::unlimited();
+  if (n > 0) limits->max_output_bytes = uint64_t(n) << 20;
+  return Status::Ok();
+}
+
+std::string help_with_limits(const char* help) {
+  std::string text = help;
+  const size_t at = text.find("%s");
+  return at == std::string::npos ? text : text.replace(at, 2, kMaxOutputHelp);
+}
+
+Status decode_with_limits(const DecoderLimits& limits, const std::vector<uint8_t>& bytes, DecodedFile* out) {
+  Status s = decode(bytes.data(), bytes.size(), out, limits);
+  if (s.code() == ErrorCode::kLimitExceeded)
+    return Status(s.code(), s.message() + " [" + kMaxOutputOption + " raises it]");
+  return s;
+}
+
 static const std::vector<std::string>* find_valued(const CommandSpec& spec, const std::string& name) {
   for (const std::vector<std::string>& names : spec.valued)
     for (const std::string& n : names)

@@ -37,6 +37,8 @@ struct CommandLine {
   std::vector<std::pair<std::string, std::string>> options;  // canonical name, value
   std::vector<std::string> switches;
   bool has(const std::string& name) const;
+  // The value of an option given with a value, or null.
+  const std::string* value(const std::string& name) const;
 };
 
 struct CommandSpec {
@@ -51,6 +53,20 @@ struct CommandSpec {
 // usage error, which it has already reported).
 int parse_command_line(const CommandSpec& spec, int argc, char** argv, CommandLine* out);
 bool parse_int(const std::string& text, long min, long max, long* out);
+
+// Spec 8.1: the decoder limits of a command that decodes. The library's
+// defaults, or with `--max-output-mb N` (kMaxOutputOption) an output of up
+// to N MiB and no separate count limits; 0 removes every limit.
+inline const char kMaxOutputOption[] = "--max-output-mb";
+inline const char kMaxOutputHelp[] =
+    "  --max-output-mb N  refuse files whose decoded output (spec 8.1) exceeds N MiB\n"
+    "                     (default 256, at most 2^24 vertices; 0: no limit)\n";
+Status decoder_limits(const CommandLine& cl, DecoderLimits* limits);
+// A help text with "%s" where kMaxOutputHelp goes.
+std::string help_with_limits(const char* help);
+
+// decode() with those limits; a refusal by a limit names the option.
+Status decode_with_limits(const DecoderLimits& limits, const std::vector<uint8_t>& bytes, DecodedFile* out);
 
 // Largest per-axis quantization step of a decoded file (section 6.4).
 double max_quantization_step(const QuantizationInfo& q);

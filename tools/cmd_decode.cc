@@ -10,8 +10,8 @@
 namespace qmc::cli {
 
 static const char kDecodeHelp[] =
-    "usage: qmc decode IN.qmc OUT.{obj,off,ply} [--level J] [--quiet]\n"
-    "       qmc decode --canonical IN.qmc OUT [--quiet]\n"
+    "usage: qmc decode IN.qmc OUT.{obj,off,ply} [--level J] [--max-output-mb N] [--quiet]\n"
+    "       qmc decode --canonical IN.qmc OUT [--max-output-mb N] [--quiet]\n"
     "\n"
     "Decodes IN.qmc and writes the mesh, vertices in the file's order (spec 5.2.1).\n"
     "A rejected file exits with status 3 and prints the error identifier (spec 9).\n"
@@ -21,7 +21,8 @@ static const char kDecodeHelp[] =
     "                (default: the finest level)\n"
     "  --canonical   write the canonical output (spec 10.2, 12.9, 13.10) that the\n"
     "                conformance manifest hashes, whatever the extension of OUT;\n"
-    "                this is the decoder command conformance/run.py expects\n";
+    "                this is the decoder command conformance/run.py expects\n"
+    "%s";
 
 // The bytes the manifest hashes (spec 10.2): every level of a progressive
 // file and every plane of a geometry image, so --level does not apply.
@@ -36,21 +37,25 @@ static int write_canonical(const CommandLine& cl, const DecodedFile& file, const
 
 int run_decode(int argc, char** argv) {
   CommandLine cl;
-  const CommandSpec spec{"decode", kDecodeHelp, {"--quiet", "--canonical"}, {{"--level"}}, 2, 2};
+  static const std::string help = help_with_limits(kDecodeHelp);
+  const CommandSpec spec{"decode", help.c_str(), {"--quiet", "--canonical"}, {{"--level"}, {kMaxOutputOption}}, 2, 2};
   if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
-  if (cl.has("--canonical") && !cl.options.empty())
+  if (cl.has("--canonical") && cl.value("--level"))
     return usage_error("decode", "--canonical covers every level; --level does not apply");
+  DecoderLimits limits;
+  if (Status s = decoder_limits(cl, &limits); !s.ok()) return usage_error("decode", s.message());
   const std::string& input = cl.positional[0];
   const std::string& output = cl.positional[1];
   if (int rc = refuse_overwriting_input("decode", input, output); rc >= 0) return rc;
   std::vector<uint8_t> bytes;
   if (Status s = read_file(input, &bytes); !s.ok()) return fail("decode", s);
   DecodedFile file;
-  if (Status s = decode(bytes.data(), bytes.size(), &file); !s.ok())
+  if (Status s = decode_with_limits(limits, bytes, &file); !s.ok())
     return fail("decode", Status(s.code(), input + ": " + s.message()));
   if (cl.has("--canonical")) return write_canonical(cl, file, input, output);
   std::string level_note;
-  for (const auto& [name, value] : cl.options) {  // --level
+  if (const std::string* level_text = cl.value("--level")) {
+    const std::string& value = *level_text;
     long level = 0;
     if (file.loop_level_count == 0)
       return usage_error("decode", input + " is not a progressive file: it has no levels to choose from");

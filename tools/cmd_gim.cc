@@ -23,14 +23,17 @@ namespace qmc::cli {
 namespace {
 
 const char kHelp[] =
-    "usage: qmc gim export IN.qmc DIR\n"
+    "usage: qmc gim export IN.qmc DIR [--max-output-mb N]\n"
     "       qmc gim import DIR OUT.qmc\n"
     "\n"
     "export writes the geometry image of IN.qmc (spec 13) into DIR: gim.txt (size,\n"
     "sample format, face mode, plane kinds and scales), one image per plane\n"
     "(plane<i>.png, 16-bit gray, or plane<i>.pfm for binary32 samples), mask.png\n"
     "(0 blank, 65535 occupied), seams.txt and triangles.txt (raster indices).\n"
-    "import reads such a directory (edited or not) and writes OUT.qmc.\n";
+    "import reads such a directory (edited or not) and writes OUT.qmc.\n"
+    "\n"
+    "options:\n"
+    "%s";
 
 std::string plane_file(int i, uint8_t format) { return "plane" + std::to_string(i) + (format == 0 ? ".png" : ".pfm"); }
 
@@ -195,11 +198,11 @@ std::vector<std::string> export_paths(const GeometryImageData& g, const std::str
   return paths;
 }
 
-int run_export(const std::string& input, const std::string& dir) {
+int run_export(const DecoderLimits& limits, const std::string& input, const std::string& dir) {
   std::vector<uint8_t> bytes;
   if (Status s = read_file(input, &bytes); !s.ok()) return fail("gim export", s);
   DecodedFile file;
-  if (Status s = decode(bytes.data(), bytes.size(), &file); !s.ok())
+  if (Status s = decode_with_limits(limits, bytes, &file); !s.ok())
     return fail("gim export", Status(s.code(), input + ": " + s.message()));
   if (!file.gim.present)
     return fail("gim export", Status(ErrorCode::kInvalidArgument, input + " is not a geometry image (no GIMG chunk)"));
@@ -230,10 +233,13 @@ int run_import(const std::string& dir, const std::string& output) {
 
 int run_gim(int argc, char** argv) {
   CommandLine cl;
-  const CommandSpec spec{"gim", kHelp, {}, {}, 3, 3};
+  static const std::string help = help_with_limits(kHelp);
+  const CommandSpec spec{"gim", help.c_str(), {}, {{kMaxOutputOption}}, 3, 3};
   if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
   const std::string& verb = cl.positional[0];
-  if (verb == "export") return run_export(cl.positional[1], cl.positional[2]);
+  DecoderLimits limits;
+  if (Status s = decoder_limits(cl, &limits); !s.ok()) return usage_error("gim", s.message());
+  if (verb == "export") return run_export(limits, cl.positional[1], cl.positional[2]);
   if (verb == "import") return run_import(cl.positional[1], cl.positional[2]);
   return usage_error("gim", "the first argument is export or import, got '" + verb + "'");
 }

@@ -11,11 +11,14 @@ namespace qmc::cli {
 namespace {
 
 const char kHelp[] =
-    "usage: qmc info IN.qmc [--json]\n"
+    "usage: qmc info IN.qmc [--json] [--max-output-mb N]\n"
     "\n"
     "Lists the chunks of IN.qmc with their sizes and bits per vertex, the format\n"
     "version, the connectivity coding and the quantization. A file that fails to\n"
-    "decode is listed up to the failing chunk, then the error (exit code 3).\n";
+    "decode is listed up to the failing chunk, then the error (exit code 3).\n"
+    "\n"
+    "options:\n"
+    "%s";
 
 
 std::map<uint32_t, size_t> degree_histogram(const Mesh& mesh) {
@@ -142,15 +145,20 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
 
 int run_info(int argc, char** argv) {
   CommandLine cl;
-  const CommandSpec spec{"info", kHelp, {"--json"}, {}, 1, 1};
+  static const std::string help = help_with_limits(kHelp);
+  const CommandSpec spec{"info", help.c_str(), {"--json"}, {{kMaxOutputOption}}, 1, 1};
   if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
   const std::string& input = cl.positional[0];
   const bool json = cl.has("--json");
   std::vector<uint8_t> bytes;
   if (Status s = read_file(input, &bytes); !s.ok()) return fail("info", s);
-  StreamDecoder decoder;
+  DecoderLimits limits;
+  if (Status s = decoder_limits(cl, &limits); !s.ok()) return usage_error("info", s.message());
+  StreamDecoder decoder(limits);
   Status status = decoder.feed(bytes.data(), bytes.size());
   if (status.ok()) status = decoder.finish();
+  if (status.code() == ErrorCode::kLimitExceeded)
+    status = Status(status.code(), status.message() + " [" + kMaxOutputOption + " raises it]");
   if (json)
     print_json(input, decoder.file(), bytes.size(), status);
   else

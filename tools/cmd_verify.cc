@@ -10,18 +10,24 @@
 namespace qmc::cli {
 
 static const char kVerifyHelp[] =
-    "usage: qmc verify IN OUT.qmc\n"
+    "usage: qmc verify IN OUT.qmc [--max-output-mb N]\n"
     "\n"
     "Decodes OUT.qmc and checks it against IN: the same faces after the vertex\n"
     "relabelling of spec section 5.2.1, and every coordinate within half a\n"
     "quantization step. A file with an oRDR chunk (qmc encode --keep-order,\n"
     "spec 4.5) must match IN exactly in IN's order: vertex order, face order and\n"
-    "each face's first corner. Exit 0 if both hold, 1 if not, 3 on unreadable input.\n";
+    "each face's first corner. Exit 0 if both hold, 1 if not, 3 on unreadable input.\n"
+    "\n"
+    "options:\n"
+    "%s";
 
 int run_verify(int argc, char** argv) {
   CommandLine cl;
-  const CommandSpec spec{"verify", kVerifyHelp, {}, {}, 2, 2};
+  static const std::string help = help_with_limits(kVerifyHelp);
+  const CommandSpec spec{"verify", help.c_str(), {}, {{kMaxOutputOption}}, 2, 2};
   if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
+  DecoderLimits limits;
+  if (Status s = decoder_limits(cl, &limits); !s.ok()) return usage_error("verify", s.message());
   const std::string& original_path = cl.positional[0];
   const std::string& qmc_path = cl.positional[1];
   Mesh original;
@@ -29,7 +35,7 @@ int run_verify(int argc, char** argv) {
   std::vector<uint8_t> bytes;
   if (Status s = read_file(qmc_path, &bytes); !s.ok()) return fail("verify", s);
   DecodedFile decoded;
-  if (Status s = decode(bytes.data(), bytes.size(), &decoded); !s.ok())
+  if (Status s = decode_with_limits(limits, bytes, &decoded); !s.ok())
     return fail("verify", Status(s.code(), qmc_path + ": " + s.message()));
   if (decoded.loop_level_count) {  // spec 12: a remesh has other vertices and faces by design
     std::printf("verify: %s is a progressive file (spec 12), a remesh of the input surface with other vertices\n"
