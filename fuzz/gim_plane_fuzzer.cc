@@ -1,4 +1,4 @@
-// libFuzzer target: a geometry-image plane payload (spec/drafts/gim_planes.md)
+// libFuzzer target: a geometry-image plane payload (spec 13.5)
 // with an optional occupancy mask payload. Input: width - 1 (6 bits),
 // height - 1 (6 bits), flags (bit 0 float32, bit 1 blank pixels stored,
 // bit 2 mask present); with a mask, its length as u16le and its bytes; the
