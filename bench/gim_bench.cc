@@ -55,7 +55,8 @@ Run run(const Mesh& mesh, const EncodeOptions& options, int runs, std::string* e
     if (Status s = encode(mesh, options, &r.file, &r.stats); !s.ok()) fail(kProgram, s.to_string());
   });
   r.decode_seconds = median_seconds(runs, [&] {
-    if (Status s = decode(r.file.data(), r.file.size(), &r.decoded); !s.ok()) fail(kProgram, s.to_string());
+    if (Status s = decode(r.file.data(), r.file.size(), &r.decoded, DecoderLimits::unlimited()); !s.ok())
+      fail(kProgram, s.to_string());
   });
   const Mesh triangles = tools::triangulated(mesh, nullptr);
   if (Status s = tools::measure_mesh_distance(triangles, r.decoded.mesh, {}, &r.distance); !s.ok())
@@ -245,7 +246,8 @@ void plane_table(const std::string& corpus, int runs) {
       continue;
     }
     DecodedFile d;
-    if (Status s = decode(file.data(), file.size(), &d); !s.ok()) fail(kProgram, s.to_string());
+    if (Status s = decode(file.data(), file.size(), &d, DecoderLimits::unlimited()); !s.ok())
+      fail(kProgram, s.to_string());
     const GeometryImageData& g = d.gim;
     std::vector<uint8_t> raw;
     size_t png = 0, ours = 0;

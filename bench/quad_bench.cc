@@ -57,7 +57,8 @@ QmcSide measure_qmc(const qmc::Mesh& mesh, const std::vector<uint8_t>& file, con
     if (c.type == qmc::kChunkConnectivity) q.conn_bytes = c.bytes;
   qmc::DecodedFile decoded;
   q.decode_s = median_seconds(runs, [&] {
-    if (qmc::Status s = qmc::decode(file.data(), file.size(), &decoded); !s.ok()) fail(s.to_string());
+    if (qmc::Status s = qmc::decode(file.data(), file.size(), &decoded, qmc::DecoderLimits::unlimited()); !s.ok())
+      fail(s.to_string());
   });
   if (decoded.mesh.face_count() != mesh.face_count() || decoded.mesh.vertex_count() != mesh.vertex_count())
     fail("qmc decoded a mesh of the wrong size");

@@ -172,7 +172,7 @@ Measurement measure(const TestMesh& test, int bits, int runs) {
   m.posn_bytes = chunk_bytes(m.stats, qmc::kChunkPositions);
   qmc::DecodedFile decoded;
   m.decode_ms = median_ms(runs, [&] {
-    const qmc::Status s = qmc::decode(file.data(), file.size(), &decoded);
+    const qmc::Status s = qmc::decode(file.data(), file.size(), &decoded, qmc::DecoderLimits::unlimited());
     if (!s.ok()) fail(test.name + ": " + s.to_string());
   });
   if (decoded.mesh.face_count() != m.quads || decoded.mesh.vertex_count() != m.vertices)

@@ -186,7 +186,7 @@ QmcFile run_qmc(const qmc::Mesh& input, const qmc::Mesh& triangles, int k, const
   q.bytes = bytes.size();
   q.input_vertices = stats.loop.input_vertices;
   qmc::DecodedFile file;
-  if (qmc::Status s = qmc::decode(bytes.data(), bytes.size(), &file); !s.ok()) {
+  if (qmc::Status s = qmc::decode(bytes.data(), bytes.size(), &file, qmc::DecoderLimits::unlimited()); !s.ok()) {
     q.error = "decode: " + s.to_string();
     return q;
   }
@@ -271,7 +271,9 @@ Timing time_qmc(const qmc::Mesh& triangles, int k, int runs) {
   t.bytes = bytes.size();
   qmc::DecodedFile file;
   bool decoded = true;
-  t.decode_s = qmc::bench::median_seconds(runs, [&] { decoded &= qmc::decode(bytes.data(), bytes.size(), &file).ok(); });
+  const qmc::DecoderLimits unlimited = qmc::DecoderLimits::unlimited();
+  t.decode_s = qmc::bench::median_seconds(
+      runs, [&] { decoded &= qmc::decode(bytes.data(), bytes.size(), &file, unlimited).ok(); });
   if (!decoded) {
     t.error = "decode failed";
     return t;

@@ -72,7 +72,7 @@ QmcRun run_qmc(const qmc::Mesh& mesh, qmc::ConnectivityChoice choice, int bits, 
   for (const qmc::ChunkStats& c : q.stats.chunks)
     if (c.type == qmc::kChunkConnectivity) q.conn_bytes = c.bytes;
   qmc::DecodedFile decoded;
-  if (qmc::Status s = qmc::decode(file.data(), file.size(), &decoded); !s.ok()) {
+  if (qmc::Status s = qmc::decode(file.data(), file.size(), &decoded, qmc::DecoderLimits::unlimited()); !s.ok()) {
     q.error = "decode: " + s.to_string();
     return q;
   }
@@ -88,7 +88,8 @@ QmcRun run_qmc(const qmc::Mesh& mesh, qmc::ConnectivityChoice choice, int bits, 
       if (!qmc::encode(mesh, options, &scratch).ok()) fail("encode failed on a repeated run");
     });
     q.decode_s = median_seconds(runs, [&] {
-      if (!qmc::decode(file.data(), file.size(), &decoded).ok()) fail("decode failed on a repeated run");
+      if (!qmc::decode(file.data(), file.size(), &decoded, qmc::DecoderLimits::unlimited()).ok())
+        fail("decode failed on a repeated run");
     });
     const size_t end = qmc::bench::end_of_connectivity(q.stats);
     if (end == 0) fail("no CONN chunk in the encoder's statistics");
