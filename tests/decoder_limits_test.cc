@@ -142,6 +142,22 @@ TEST(DecoderLimits, LevelsBeforeTheLevelLimitStayAvailableToAStreamingViewer) {
   EXPECT_EQ(stream.file().levels.size(), 3u);
 }
 
+// The edges of a level cost more than its output, so level j + 1 must fit
+// before level j's edges are numbered (8.1): the refusal comes with level j
+// decoded and shown, and never after the edges were built.
+TEST(DecoderLimits, NextLevelIsCheckedBeforeTheEdgesItNeedsAreNumbered) {
+  const std::vector<uint8_t> file = read_vector("valid_loop_octahedron_sphere_3_levels.qmc");
+  DecodedFile whole;
+  ASSERT_TRUE(decode(file.data(), file.size(), &whole).ok());
+  DecoderLimits limits;
+  limits.max_output_bytes = canonical_output(whole).size() - 1;
+  StreamDecoder stream(limits);
+  const Status s = stream.feed(file.data(), file.size());
+  EXPECT_EQ(s.code(), ErrorCode::kLimitExceeded);
+  EXPECT_NE(s.message().find("level 2: the next level"), std::string::npos) << s.to_string();
+  EXPECT_EQ(stream.complete_level(), 2);
+}
+
 // Issue 12 item 3: a valid image of 4096 x 4096 pixels and 16 planes outputs
 // 16 * 4 bytes a pixel (13.10); the default limits refuse it at GIMG.
 TEST(DecoderLimits, GeometryImageOutputIsChargedAtGimg) {

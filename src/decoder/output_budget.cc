@@ -10,13 +10,18 @@ Status check_limit(const std::string& what, uint64_t count, uint64_t limit, cons
 }
 
 Status OutputBudget::charge(uint64_t bytes, const std::string& what) {
+  if (Status s = check(bytes, what); !s.ok()) return s;
+  used_ += bytes;
+  return Status::Ok();
+}
+
+Status OutputBudget::check(uint64_t bytes, const std::string& what) const {
   // Charges stay below 2^56 (counts below 2^48, small factors), and the
   // comparison is written so that it cannot wrap.
   if (bytes > limit_ || used_ > limit_ - bytes)
     return Status(ErrorCode::kLimitExceeded, what + ": the output would reach " + std::to_string(used_ + bytes) +
                                                  " bytes, above this decoder's limit of " + std::to_string(limit_) +
                                                  " (DecoderLimits::max_output_bytes, section 8.1)");
-  used_ += bytes;
   return Status::Ok();
 }
 

@@ -36,6 +36,8 @@ class OutputBudget {
   explicit OutputBudget(uint64_t limit) : limit_(limit) {}
   // Adds `bytes` (what `what` will output); kLimitExceeded past the limit.
   Status charge(uint64_t bytes, const std::string& what);
+  // Whether `bytes` more would still fit, charging nothing.
+  Status check(uint64_t bytes, const std::string& what) const;
   uint64_t used() const { return used_; }
 
  private:

@@ -41,6 +41,7 @@ struct StreamDecoder::State {
   Status handle_connectivity(const uint8_t* payload, uint32_t length);
   Status check_connectivity_counts(const uint8_t* payload, uint32_t length);
   Status check_level_counts(uint8_t level);
+  Status check_next_level_fits(uint8_t level);
   Status handle_positions(const uint8_t* payload, uint32_t length);
   Status handle_order(const uint8_t* payload, uint32_t length);
   Status handle_loop(const uint8_t* payload, uint32_t length);
@@ -261,13 +262,29 @@ Status StreamDecoder::State::handle_level(const uint8_t* payload, uint32_t lengt
   LoopLevel fine;
   if (Status s = decode_level(payload, length, j, file.levels.back(), level_edges, &fine); !s.ok()) return s;
   fine.chunk_bytes = 12 + uint64_t(length);
-  if (j < file.loop_level_count) {  // the edges of level j are needed by level j + 1 only
-    if (Status s = number_loop_edges(fine, &level_edges); !s.ok())
-      return Status(ErrorCode::kBadChunkPayload, "LEVL: level " + std::to_string(j) + ": " + s.message());
-  }
   file.levels.push_back(std::move(fine));
   file.mesh = level_mesh(file.levels.back());
+  if (j == file.loop_level_count) return Status::Ok();
+  // The edges of level j, needed by level j + 1 only, cost more memory than
+  // level j's output: level j + 1 must fit before they are numbered (8.1).
+  if (Status s = check_next_level_fits(j); !s.ok()) return s;
+  if (Status s = number_loop_edges(file.levels.back(), &level_edges); !s.ok())
+    return Status(ErrorCode::kBadChunkPayload, "LEVL: level " + std::to_string(j) + ": " + s.message());
   return Status::Ok();
+}
+
+// Section 8.1: what level j tells of level j + 1 before its edges are
+// numbered: 4 F_j faces and at least V_j + 3 F_j / 2 vertices.
+Status StreamDecoder::State::check_next_level_fits(uint8_t level) {
+  const std::string what = "LEVL: level " + std::to_string(level) + ": the next level";
+  if (Status s = check_limit(what + "'s number", level + 1u, limits.max_levels, "max_levels"); !s.ok()) return s;
+  const LoopLevel& current = file.levels.back();
+  const uint64_t faces = 4 * uint64_t(current.face_count());
+  const uint64_t vertices = current.vertex_count() + (3 * uint64_t(current.face_count()) + 1) / 2;
+  if (Status s = check_limit(what + "'s faces", faces, limits.max_faces, "max_faces"); !s.ok()) return s;
+  if (Status s = check_limit(what + "'s vertices, at least", vertices, limits.max_vertices, "max_vertices"); !s.ok())
+    return s;
+  return budget.check(level_output_bytes(vertices, faces), what);
 }
 
 // Section 8.1: level j has V + E vertices and 4 F faces of level j - 1.
