@@ -6,20 +6,12 @@
 #include <cstdint>
 
 #include "chunk_mutator.h"
+#include "fuzz_limits.h"
 #include "qmc/decoder.h"
 
 const size_t qmc::fuzz::kFilePrefixSize = 0;
 
 namespace {
-
-// Decoder memory follows the output charged against the limits (spec 8.1),
-// so with a small output limit an allocation above fuzz.sh's malloc limit is
-// a finding.
-qmc::DecoderLimits small_output() {
-  qmc::DecoderLimits limits;
-  limits.max_output_bytes = 8 << 20;
-  return limits;
-}
 
 // peek() (spec 8.1) agrees with the decoder on a file it decoded: the counts
 // it read are those decoded, and its lower bound of the output holds and is
@@ -37,7 +29,7 @@ void check_peek(const uint8_t* data, size_t size, const qmc::DecodedFile& decode
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  const qmc::DecoderLimits limits = small_output();
+  const qmc::DecoderLimits limits = qmc::fuzz::small_output_limits();
   qmc::DecodedFile file;
   const qmc::Status s = qmc::decode(data, size, &file, limits);
   if (s.ok()) {

@@ -13,6 +13,7 @@
 
 #include "bitio/byte_io.h"
 #include "bitio/crc32.h"
+#include "fuzz_limits.h"
 #include "qmc/decoder.h"
 #include "qmc/format.h"
 
@@ -65,7 +66,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   if (!ended) append_chunk(&file, qmc::kChunkEnd, nullptr, 0);
   qmc::DecodedFile decoded;
-  const qmc::Status s = qmc::decode(file.data(), file.size(), &decoded);
+  const qmc::Status s = qmc::decode(file.data(), file.size(), &decoded, qmc::fuzz::small_output_limits());
   if (!s.ok()) {
     if (s.message().empty()) __builtin_trap();  // every rejection names its reason
     return 0;

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "chunk_mutator.h"
+#include "fuzz_limits.h"
 #include "qmc/decoder.h"
 
 const size_t qmc::fuzz::kFilePrefixSize = 1;  // the piece-size byte
@@ -16,9 +17,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const size_t piece = size_t(data[0] % 17) + 1;
   ++data;
   --size;
+  const qmc::DecoderLimits limits = qmc::fuzz::small_output_limits();
   qmc::DecodedFile whole;
-  const qmc::Status a = qmc::decode(data, size, &whole);
-  qmc::StreamDecoder stream;
+  const qmc::Status a = qmc::decode(data, size, &whole, limits);
+  qmc::StreamDecoder stream(limits);
   qmc::Status b;
   for (size_t pos = 0; pos < size && b.ok(); pos += piece)
     b = stream.feed(data + pos, pos + piece <= size ? piece : size - pos);
