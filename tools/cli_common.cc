@@ -73,12 +73,6 @@ Status decoder_limits(const CommandLine& cl, DecoderLimits* limits) {
   return Status::Ok();
 }
 
-std::string help_with_limits(const char* help) {
-  std::string text = help;
-  const size_t at = text.find("%s");
-  return at == std::string::npos ? text : text.replace(at, 2, kMaxOutputHelp);
-}
-
 Status decode_with_limits(const DecoderLimits& limits, const std::vector<uint8_t>& bytes, DecodedFile* out) {
   Status s = decode(bytes.data(), bytes.size(), out, limits);
   if (s.code() == ErrorCode::kLimitExceeded)

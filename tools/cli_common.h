@@ -62,8 +62,6 @@ inline const char kMaxOutputHelp[] =
     "  --max-output-mb N  refuse files whose decoded output (spec 8.1) exceeds N MiB\n"
     "                     (default 256, at most 2^24 vertices; 0: no limit)\n";
 Status decoder_limits(const CommandLine& cl, DecoderLimits* limits);
-// A help text with "%s" where kMaxOutputHelp goes.
-std::string help_with_limits(const char* help);
 
 // decode() with those limits; a refusal by a limit names the option.
 Status decode_with_limits(const DecoderLimits& limits, const std::vector<uint8_t>& bytes, DecodedFile* out);

@@ -21,8 +21,7 @@ static const char kDecodeHelp[] =
     "                (default: the finest level)\n"
     "  --canonical   write the canonical output (spec 10.2, 12.9, 13.10) that the\n"
     "                conformance manifest hashes, whatever the extension of OUT;\n"
-    "                this is the decoder command conformance/run.py expects\n"
-    "%s";
+    "                this is the decoder command conformance/run.py expects\n";
 
 // The bytes the manifest hashes (spec 10.2): every level of a progressive
 // file and every plane of a geometry image, so --level does not apply.
@@ -37,7 +36,7 @@ static int write_canonical(const CommandLine& cl, const DecodedFile& file, const
 
 int run_decode(int argc, char** argv) {
   CommandLine cl;
-  static const std::string help = help_with_limits(kDecodeHelp);
+  static const std::string help = std::string(kDecodeHelp) + kMaxOutputHelp;
   const CommandSpec spec{"decode", help.c_str(), {"--quiet", "--canonical"}, {{"--level"}, {kMaxOutputOption}}, 2, 2};
   if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
   if (cl.has("--canonical") && cl.value("--level"))

@@ -32,8 +32,7 @@ const char kHelp[] =
     "(0 blank, 65535 occupied), seams.txt and triangles.txt (raster indices).\n"
     "import reads such a directory (edited or not) and writes OUT.qmc.\n"
     "\n"
-    "options:\n"
-    "%s";
+    "options:\n";
 
 std::string plane_file(int i, uint8_t format) { return "plane" + std::to_string(i) + (format == 0 ? ".png" : ".pfm"); }
 
@@ -157,7 +156,7 @@ Status read_line(const std::string& dir, const std::string& key, std::istringstr
     mask_image.width = g->width;
     mask_image.height = g->height;
     mask_image.format = 0;
-    if (Status s = read_plane(dir + "/" + file, mask_image, &mask); !s.ok()) return s;
+    if (Status s = read_plane(files->back(), mask_image, &mask); !s.ok()) return s;
     g->occupied.resize(mask.size());
     for (size_t p = 0; p < mask.size(); ++p) g->occupied[p] = mask[p] != 0;
     return Status::Ok();
@@ -233,7 +232,7 @@ int run_import(const std::string& dir, const std::string& output) {
 
 int run_gim(int argc, char** argv) {
   CommandLine cl;
-  static const std::string help = help_with_limits(kHelp);
+  static const std::string help = std::string(kHelp) + kMaxOutputHelp;
   const CommandSpec spec{"gim", help.c_str(), {}, {{kMaxOutputOption}}, 3, 3};
   if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
   const std::string& verb = cl.positional[0];

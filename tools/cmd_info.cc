@@ -17,8 +17,7 @@ const char kHelp[] =
     "version, the connectivity coding and the quantization. A file that fails to\n"
     "decode is listed up to the failing chunk, then the error (exit code 3).\n"
     "\n"
-    "options:\n"
-    "%s";
+    "options:\n";
 
 
 std::map<uint32_t, size_t> degree_histogram(const Mesh& mesh) {
@@ -145,7 +144,7 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
 
 int run_info(int argc, char** argv) {
   CommandLine cl;
-  static const std::string help = help_with_limits(kHelp);
+  static const std::string help = std::string(kHelp) + kMaxOutputHelp;
   const CommandSpec spec{"info", help.c_str(), {"--json"}, {{kMaxOutputOption}}, 1, 1};
   if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
   const std::string& input = cl.positional[0];

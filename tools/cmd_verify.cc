@@ -18,12 +18,11 @@ static const char kVerifyHelp[] =
     "spec 4.5) must match IN exactly in IN's order: vertex order, face order and\n"
     "each face's first corner. Exit 0 if both hold, 1 if not, 3 on unreadable input.\n"
     "\n"
-    "options:\n"
-    "%s";
+    "options:\n";
 
 int run_verify(int argc, char** argv) {
   CommandLine cl;
-  static const std::string help = help_with_limits(kVerifyHelp);
+  static const std::string help = std::string(kVerifyHelp) + kMaxOutputHelp;
   const CommandSpec spec{"verify", help.c_str(), {}, {{kMaxOutputOption}}, 2, 2};
   if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
   DecoderLimits limits;

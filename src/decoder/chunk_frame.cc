@@ -13,6 +13,18 @@ bool is_ascii_letter(uint8_t c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && 
 
 }  // namespace
 
+Status read_version(const uint8_t* payload, uint32_t length, uint8_t* major, uint8_t* minor) {
+  if (length != 2)
+    return Status(ErrorCode::kBadChunkPayload, "QHDR payload is " + std::to_string(length) + " bytes, not 2");
+  if (payload[0] != kFormatMajor)
+    return Status(ErrorCode::kUnsupportedVersion, "format version " + std::to_string(payload[0]) + "." +
+                                                      std::to_string(payload[1]) + "; this decoder reads " +
+                                                      std::to_string(kFormatMajor) + ".x");
+  *major = payload[0];
+  *minor = payload[1];
+  return Status::Ok();
+}
+
 Status read_chunk_frame(const uint8_t* chunk, size_t available, uint64_t offset, uint32_t max_length,
                         ChunkFrame* frame) {
   *frame = ChunkFrame{};

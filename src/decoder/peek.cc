@@ -57,13 +57,7 @@ Status peek_geometry_image(const uint8_t* payload, uint32_t length, FileSummary*
 
 Status peek_chunk(uint32_t type, const uint8_t* payload, uint32_t length, FileSummary* s, bool* done) {
   switch (type) {
-    case kChunkHeader:
-      if (length != 2) return Status(ErrorCode::kBadChunkPayload, "QHDR payload is not 2 bytes");
-      if (payload[0] != kFormatMajor)
-        return Status(ErrorCode::kUnsupportedVersion, "format version " + std::to_string(payload[0]));
-      s->version_major = payload[0];
-      s->version_minor = payload[1];
-      return Status::Ok();
+    case kChunkHeader: return read_version(payload, length, &s->version_major, &s->version_minor);
     case kChunkLoop: return decode_loop_header(payload, length, &s->loop_level_count);
     case kChunkConnectivity: *done = true; return peek_connectivity(payload, length, s);
     case kChunkGeometryImage: *done = true; return peek_geometry_image(payload, length, s);

@@ -42,6 +42,7 @@ struct StreamDecoder::State {
   Status check_connectivity_counts(const uint8_t* payload, uint32_t length);
   Status check_level_counts(uint8_t level);
   Status check_next_level_fits(uint8_t level);
+  Status check_level_limits(const std::string& what, uint64_t level, uint64_t vertices, uint64_t faces, bool charge);
   Status handle_positions(const uint8_t* payload, uint32_t length);
   Status handle_order(const uint8_t* payload, uint32_t length);
   Status handle_loop(const uint8_t* payload, uint32_t length);
@@ -158,14 +159,7 @@ Status StreamDecoder::State::handle_chunk(uint32_t type, const uint8_t* payload,
 
 Status StreamDecoder::State::handle_header(const uint8_t* payload, uint32_t length) {
   if (header_seen) return order_error("a second QHDR");
-  if (length != 2)
-    return Status(ErrorCode::kBadChunkPayload, "QHDR payload is " + std::to_string(length) + " bytes, not 2");
-  if (payload[0] != kFormatMajor)
-    return Status(ErrorCode::kUnsupportedVersion, "format version " + std::to_string(payload[0]) + "." +
-                                                      std::to_string(payload[1]) + "; this decoder reads " +
-                                                      std::to_string(kFormatMajor) + ".x");
-  file.version_major = payload[0];
-  file.version_minor = payload[1];
+  if (Status s = read_version(payload, length, &file.version_major, &file.version_minor); !s.ok()) return s;
   header_seen = true;
   return Status::Ok();
 }
@@ -276,27 +270,29 @@ Status StreamDecoder::State::handle_level(const uint8_t* payload, uint32_t lengt
 // Section 8.1: what level j tells of level j + 1 before its edges are
 // numbered: 4 F_j faces and at least V_j + 3 F_j / 2 vertices.
 Status StreamDecoder::State::check_next_level_fits(uint8_t level) {
-  const std::string what = "LEVL: level " + std::to_string(level) + ": the next level";
-  if (Status s = check_limit(what + "'s number", level + 1u, limits.max_levels, "max_levels"); !s.ok()) return s;
   const LoopLevel& current = file.levels.back();
-  const uint64_t faces = 4 * uint64_t(current.face_count());
   const uint64_t vertices = current.vertex_count() + (3 * uint64_t(current.face_count()) + 1) / 2;
-  if (Status s = check_limit(what + "'s faces", faces, limits.max_faces, "max_faces"); !s.ok()) return s;
-  if (Status s = check_limit(what + "'s vertices, at least", vertices, limits.max_vertices, "max_vertices"); !s.ok())
-    return s;
-  return budget.check(level_output_bytes(vertices, faces), what);
+  return check_level_limits("LEVL: level " + std::to_string(level) + ": the next level", level + 1u, vertices,
+                            4 * uint64_t(current.face_count()), false);
 }
 
 // Section 8.1: level j has V + E vertices and 4 F faces of level j - 1.
 Status StreamDecoder::State::check_level_counts(uint8_t level) {
-  const std::string what = "LEVL: level " + std::to_string(level);
-  if (Status s = check_limit(what + ": levels", level, limits.max_levels, "max_levels"); !s.ok()) return s;
   const LoopLevel& coarse = file.levels.back();
-  const uint64_t vertices = uint64_t(coarse.vertex_count()) + level_edges.edge_count();
-  const uint64_t faces = 4 * uint64_t(coarse.face_count());
+  return check_level_limits("LEVL: level " + std::to_string(level), level,
+                            uint64_t(coarse.vertex_count()) + level_edges.edge_count(),
+                            4 * uint64_t(coarse.face_count()), true);
+}
+
+// Level `level` with these counts against every limit of 8.1; its output is
+// charged when its chunk has arrived, only checked when foretold.
+Status StreamDecoder::State::check_level_limits(const std::string& what, uint64_t level, uint64_t vertices,
+                                                uint64_t faces, bool charge) {
+  if (Status s = check_limit(what + ": levels", level, limits.max_levels, "max_levels"); !s.ok()) return s;
   if (Status s = check_limit(what + ": vertices", vertices, limits.max_vertices, "max_vertices"); !s.ok()) return s;
   if (Status s = check_limit(what + ": faces", faces, limits.max_faces, "max_faces"); !s.ok()) return s;
-  return budget.charge(level_output_bytes(vertices, faces), what);
+  const uint64_t bytes = level_output_bytes(vertices, faces);
+  return charge ? budget.charge(bytes, what) : budget.check(bytes, what);
 }
 
 Status StreamDecoder::State::handle_end(uint32_t length) {

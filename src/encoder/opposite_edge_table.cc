@@ -2,30 +2,13 @@
 // manifold and orientation checks the quad coder relies on.
 #include "encoder/opposite_edge_table.h"
 
+#include "encoder/edge_buckets.h"
 
 namespace qmc {
 namespace {
 
 uint32_t origin(const Mesh& mesh, uint32_t edge) { return mesh.corners[edge]; }
 uint32_t destination(const Mesh& mesh, uint32_t edge) { return mesh.corners[OppositeEdgeTable::next(edge)]; }
-
-// Edges grouped by a vertex (counting sort): the edges of vertex v are
-// items[begin[v] .. begin[v + 1]).
-struct EdgeBuckets {
-  std::vector<uint32_t> begin, items;
-};
-
-template <typename KeyOf>
-EdgeBuckets bucket_edges(uint32_t vertices, uint32_t edges, KeyOf key) {
-  EdgeBuckets b;
-  b.begin.assign(size_t(vertices) + 1, 0);
-  for (uint32_t e = 0; e < edges; ++e) ++b.begin[key(e) + 1];
-  for (uint32_t v = 0; v < vertices; ++v) b.begin[v + 1] += b.begin[v];
-  b.items.resize(edges);
-  std::vector<uint32_t> fill(b.begin.begin(), b.begin.end() - 1);
-  for (uint32_t e = 0; e < edges; ++e) b.items[fill[key(e)]++] = e;
-  return b;
-}
 
 // Linear time (seed 001 §3.5): for each vertex v, its outgoing edges are
 // entered in a marker table keyed by destination; each edge arriving at v

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "bitio/union_find.h"
+#include "encoder/edge_buckets.h"
 
 namespace qmc {
 namespace {
@@ -26,26 +27,23 @@ bool repeats_a_vertex(const uint32_t* c, uint32_t d, uint32_t face, std::vector<
 
 // Pairs half-edges u->v and v->u that are the only ones of their direction,
 // among those not yet paired. Linear however many faces share one edge: the
-// half-edges are bucketed by their smaller endpoint (a counting sort), and
-// within a bucket tallied by their larger endpoint, as in the opposite-edge
-// table of the quad coder.
+// unpaired half-edges are bucketed by their smaller endpoint (edge_buckets.h),
+// and within a bucket tallied by their larger endpoint, as in the
+// opposite-edge table of the quad coder.
 void pair_unique_edges(PolygonSurfaceModel* s) {
   const uint32_t n = uint32_t(s->corners.size()), nv = s->vertex_count();
   auto low = [&](uint32_t h) { return std::min(s->corners[h], s->corners[s->next(h)]); };
   auto high = [&](uint32_t h) { return std::max(s->corners[h], s->corners[s->next(h)]); };
-  std::vector<uint32_t> begin(size_t(nv) + 1, 0);
+  std::vector<uint32_t> unpaired;
   for (uint32_t h = 0; h < n; ++h)
-    if (s->twin[h] == kNone) ++begin[low(h) + 1];
-  for (uint32_t v = 0; v < nv; ++v) begin[v + 1] += begin[v];
-  std::vector<uint32_t> bucket(begin[nv]), fill(begin.begin(), begin.end() - 1);
-  for (uint32_t h = 0; h < n; ++h)
-    if (s->twin[h] == kNone) bucket[fill[low(h)]++] = h;
+    if (s->twin[h] == kNone) unpaired.push_back(h);
+  const EdgeBuckets by_low = bucket_edges(nv, uint32_t(unpaired.size()), [&](uint32_t i) { return low(unpaired[i]); });
   // Per larger endpoint b, for the current smaller endpoint a: the half-edges
   // a->b and b->a seen, and the last of each.
   std::vector<uint32_t> tallied_for(nv, kNone), up_count(nv), down_count(nv), up(nv), down(nv);
   for (uint32_t a = 0; a < nv; ++a) {
-    for (uint32_t k = begin[a]; k < begin[a + 1]; ++k) {
-      const uint32_t h = bucket[k], b = high(h);
+    for (uint32_t k = by_low.begin[a]; k < by_low.begin[a + 1]; ++k) {
+      const uint32_t h = unpaired[by_low.items[k]], b = high(h);
       if (tallied_for[b] != a) {
         tallied_for[b] = a;
         up_count[b] = down_count[b] = 0;
@@ -58,8 +56,8 @@ void pair_unique_edges(PolygonSurfaceModel* s) {
         down[b] = h;
       }
     }
-    for (uint32_t k = begin[a]; k < begin[a + 1]; ++k) {
-      const uint32_t b = high(bucket[k]);
+    for (uint32_t k = by_low.begin[a]; k < by_low.begin[a + 1]; ++k) {
+      const uint32_t b = high(unpaired[by_low.items[k]]);
       if (up_count[b] != 1 || down_count[b] != 1) continue;
       s->twin[up[b]] = down[b];
       s->twin[down[b]] = up[b];
