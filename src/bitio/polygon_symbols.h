@@ -27,6 +27,13 @@ struct FaceShapes {
     const size_t end = f + 1 < size() ? gap_begin[f + 1] : gap_is_edge.size();
     return uint32_t(end - gap_begin[f]);
   }
+  void reserve(size_t faces) {
+    degree.reserve(faces);
+    status_begin.reserve(faces);
+    gap_begin.reserve(faces);
+    status.reserve(faces);
+    gap_is_edge.reserve(2 * faces);
+  }
   // Appends a face; gaps are derived by the caller.
   void add(uint32_t d, const uint8_t* statuses, const uint8_t* gaps, uint32_t gaps_count);
 };

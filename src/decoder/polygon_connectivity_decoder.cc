@@ -127,6 +127,8 @@ Status read_mixed_symbols(BitReader* in, uint64_t count, FaceShapes* shapes) {
 }
 
 Status read_symbols(BitReader* in, int coding, uint64_t count, FaceShapes* shapes) {
+  // count <= the stream's bits (read_components), so this is bounded by the input.
+  shapes->reserve(size_t(count));
   if (coding == kPolygonMixedHuffman) return read_mixed_symbols(in, count, shapes);
   if (count == 0) return symbol_error("quad codings need at least one face symbol");
   std::vector<uint8_t> types;
@@ -269,6 +271,7 @@ Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t ve
 
   // Degrees of the surface faces and N (5.4.7), known before decoding.
   std::vector<uint32_t> degree;
+  degree.reserve(components.faces.size() + size_t(components.coded));
   uint64_t labels = 0;
   for (size_t c = 0, f = 0; c < components.faces.size(); ++c) {
     degree.push_back(components.first_degree[c]);
@@ -304,6 +307,7 @@ Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t ve
   mesh->face_sizes.clear();
   mesh->corners.clear();
   mesh->face_sizes.reserve(face_count);
+  mesh->corners.reserve(surface.corners.size() + loose.corners.size());
   for (size_t f = 0, begin = 0; f < degree.size(); begin += degree[f], ++f) {
     if (records.is_virtual[f]) continue;
     mesh->face_sizes.push_back(degree[f]);

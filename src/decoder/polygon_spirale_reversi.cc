@@ -9,6 +9,8 @@
 // before the face. Every count used to index is checked first.
 #include "decoder/polygon_spirale_reversi.h"
 
+#include <algorithm>
+
 #include <string>
 
 #include "decoder/loop_nodes.h"
@@ -36,7 +38,12 @@ struct Detour {
 
 class PolygonSpiraleReversi {
  public:
-  explicit PolygonSpiraleReversi(size_t node_capacity) { nodes_.reserve(node_capacity); }
+  // Capacities: the corners and the coded faces of the largest component.
+  PolygonSpiraleReversi(size_t node_capacity, size_t face_capacity) {
+    nodes_.reserve(node_capacity);
+    face_vertices_.reserve(node_capacity);
+    face_degrees_.reserve(face_capacity);
+  }
 
   // Undoes coded face `f` of `shapes` (global index, for messages).
   Status apply(const FaceShapes& shapes, size_t f);
@@ -247,13 +254,17 @@ Status check_directed_edges(const PolygonSurface& s) {
 Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
                                const FaceShapes& shapes, PolygonSurface* surface) {
   *surface = PolygonSurface{};
-  uint64_t largest = 0;  // nodes of the largest component: at most its corners
+  uint64_t largest = 0, most_faces = 0, all_corners = 0;  // nodes of a component: at most its corners
   for (size_t c = 0, f = 0; c < components.size(); ++c) {
     uint64_t corners = 0;
     for (uint32_t i = 1; i < components[c]; ++i, ++f) corners += shapes.degree[f];
-    if (corners > largest) largest = corners;
+    largest = std::max(largest, corners);
+    most_faces = std::max<uint64_t>(most_faces, components[c]);
+    all_corners += corners;
   }
-  PolygonSpiraleReversi decoder{size_t(largest)};
+  PolygonSpiraleReversi decoder{size_t(largest), size_t(most_faces)};
+  surface->face_degree.reserve(components.size() + shapes.size());
+  surface->corners.reserve(size_t(all_corners));
   size_t first = 0;
   for (size_t c = 0; c < components.size(); ++c) {
     const size_t coded = components[c] - 1;
