@@ -51,7 +51,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   qmc::QuantizationInfo info;
   std::vector<uint32_t> quantized;
   std::vector<float> positions;
-  if (!qmc::decode_positions(payload, length, vertex_count, &info, &quantized, &positions).ok()) return 0;
+  if (!qmc::decode_positions(payload, length, mesh, vertex_count, &info, &quantized, &positions).ok()) return 0;
   qmc::loop_base_positions(info, quantized, &level);
   const int64_t chi = euler(level, edges);
   for (uint8_t j = 1; j <= 3 && in.next(&payload, &length); ++j) {

@@ -88,6 +88,7 @@ int main(int argc, char** argv) {
   }
   const fs::path out = argv[2];
   for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "polygon_connectivity", "positions",
+                        "predicted_positions",
                         "huffman", "roundtrip", "order", "loop_levels", "gim_file", "gim_plane"})
     fs::create_directories(out / t);
   int n = 0;
@@ -123,7 +124,15 @@ int main(int argc, char** argv) {
           write(out / "huffman" / name, h.data(), h.size());
         }
       }
-      if (type == qmc::kChunkPositions) write(out / "positions" / name, payload, length);
+      if (type == qmc::kChunkPositions) {
+        write(out / "positions" / name, payload, length);
+        if (!conn.empty()) {  // predicted_positions input: u16le CONN length, CONN, POSN
+          std::vector<uint8_t> pair{uint8_t(conn.size()), uint8_t(conn.size() >> 8)};
+          pair.insert(pair.end(), conn.begin(), conn.end());
+          pair.insert(pair.end(), payload, payload + length);
+          write(out / "predicted_positions" / name, pair.data(), pair.size());
+        }
+      }
       if (type == qmc::kChunkConnectivity && length <= 0xFFFF) conn.assign(payload, payload + length);
       if (type == qmc::kChunkLoop) progressive = true;
       if (progressive && length <= 0xFFFF &&

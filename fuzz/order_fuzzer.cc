@@ -8,7 +8,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "decoder/connectivity_decoder.h"
+#include "conn_prefix.h"
 #include "decoder/order_decoder.h"
 
 namespace {
@@ -26,19 +26,16 @@ bool is_permutation(const std::vector<uint32_t>& map, size_t n) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  if (size < 2) return 0;
-  const size_t conn_size = data[0] | size_t(data[1]) << 8;
-  if (size - 2 < conn_size) return 0;
   qmc::Mesh mesh;
   uint32_t vertex_count = 0;
-  qmc::ConnectivityMethod method;
-  if (!qmc::decode_connectivity(data + 2, conn_size, &vertex_count, &method, &mesh).ok()) return 0;
+  const uint8_t* payload = nullptr;
+  size_t length = 0;
+  if (!qmc::fuzz::decode_conn_prefix(data, size, &mesh, &vertex_count, &payload, &length)) return 0;
   if (vertex_count > (1u << 16)) return 0;  // POSN would have to back the vertices
   mesh.positions.assign(3 * size_t(vertex_count), 0.f);
   for (uint32_t v = 0; v < vertex_count; ++v) mesh.positions[3 * size_t(v)] = float(v);
   qmc::OrderMaps maps;
-  const uint8_t* payload = data + 2 + conn_size;
-  if (!qmc::decode_order(payload, size - 2 - conn_size, vertex_count, mesh, &maps).ok()) return 0;
+  if (!qmc::decode_order(payload, length, vertex_count, mesh, &maps).ok()) return 0;
   const size_t faces = mesh.face_sizes.size();
   if (!maps.vertex_input.empty() && !is_permutation(maps.vertex_input, vertex_count)) __builtin_trap();
   if (!maps.face_input.empty() && !is_permutation(maps.face_input, faces)) __builtin_trap();

@@ -35,7 +35,7 @@ TEST(Container, FileStartsWithSignatureThenQhdr) {
   EXPECT_EQ(load_u32be(&f[8]), kChunkHeader);
   EXPECT_EQ(load_u32le(&f[12]), 2u);
   EXPECT_EQ(f[16], kFormatMajor);
-  EXPECT_EQ(f[17], 1u);  // the cube goes through the quad coder, defined by 1.1
+  EXPECT_EQ(f[17], 5u);  // the cube's positions are predicted (spec 14), defined by 1.5
 }
 
 TEST(Container, ChunkListIsQhdrConnPosnQend) {

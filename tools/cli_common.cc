@@ -131,13 +131,7 @@ bool parse_int(const std::string& text, long min, long max, long* out) {
 }
 
 double max_quantization_step(const QuantizationInfo& q) {
-  if (q.bits <= 0) return 0;
-  double step = 0;
-  for (int a = 0; a < 3; ++a) {
-    const double s = (double(q.max[a]) - double(q.min[a])) / double((uint64_t(1) << q.bits) - 1);
-    if (s > step) step = s;
-  }
-  return step;
+  return std::max({q.step[0], q.step[1], q.step[2]});
 }
 
 std::string human_bytes(uint64_t bytes) {

@@ -35,6 +35,16 @@
 
 namespace {
 
+// The vectors published up to format 1.4 were written with method 0 on the
+// per-axis grid (section 6), then the encoder's only choice; they stay so.
+qmc::EncodeOptions format_1_4_options() {
+  qmc::EncodeOptions options;
+  options.position_grid = qmc::PositionGrid::kPerAxis;
+  options.position_method = qmc::PositionMethod::kDeltas;
+  return options;
+}
+
+
 using qmc::Mesh;
 
 using qmc::tools::Chunk;
@@ -47,7 +57,7 @@ using qmc::tools::split_chunks;
 // choose by itself today: they are frozen (see the top of this file).
 std::vector<uint8_t> encode(const Mesh& mesh, int bits, std::vector<std::string> texts = {},
                             qmc::ConnectivityChoice connectivity = qmc::ConnectivityChoice::kIndexed) {
-  qmc::EncodeOptions options;
+  qmc::EncodeOptions options = format_1_4_options();
   options.position_bits = bits;
   options.connectivity = connectivity;
   options.texts = std::move(texts);
@@ -407,7 +417,7 @@ void write_position_errors(VectorWriter* w) {
 
 // Structured connectivity (methods 1 and 2) with a forced coding or -1.
 std::vector<uint8_t> encode_structured(const Mesh& mesh, qmc::ConnectivityChoice choice, int coding) {
-  qmc::EncodeOptions options;
+  qmc::EncodeOptions options = format_1_4_options();
   options.connectivity = choice;
   options.quad_coding = choice == qmc::ConnectivityChoice::kQuad ? coding : -1;
   options.polygon_coding = choice == qmc::ConnectivityChoice::kPolygon ? coding : -1;
@@ -738,7 +748,7 @@ void write_polygon_errors(VectorWriter* w) {
 // Spec 4.5: the ancillary oRDR chunk, the input's order of vertices, faces
 // and corners. Valid vectors decode to the input in its own order.
 std::vector<uint8_t> encode_keeping_order(const Mesh& mesh, qmc::ConnectivityChoice connectivity) {
-  qmc::EncodeOptions options;
+  qmc::EncodeOptions options = format_1_4_options();
   options.connectivity = connectivity;
   options.keep_order = true;
   std::vector<uint8_t> out;
@@ -1384,6 +1394,150 @@ void write_hardening_vectors(VectorWriter* w) {
   w->invalid("invalid_gim_faces_unjustified", join_chunks(c), qmc::ErrorCode::kLimitExceeded);
 }
 
+// Section 14 (format 1.5): predicted positions, POSN method 1.
+std::vector<uint8_t> encode_predicted(const Mesh& mesh, int bits,
+                                      qmc::ConnectivityChoice connectivity = qmc::ConnectivityChoice::kAuto,
+                                      qmc::PositionGrid grid = qmc::PositionGrid::kUniform) {
+  qmc::EncodeOptions options;
+  options.position_bits = bits;
+  options.connectivity = connectivity;
+  options.position_grid = grid;
+  options.position_method = qmc::PositionMethod::kPredicted;
+  std::vector<uint8_t> out;
+  qmc::EncodeStats stats;
+  if (qmc::Status s = qmc::encode(mesh, options, &out, &stats); !s.ok() || stats.positions.method != 1) {
+    std::fprintf(stderr, "qmc-make-vectors: predicted positions: %s\n", s.to_string().c_str());
+    std::exit(3);
+  }
+  return out;
+}
+
+// A random walk on a sphere: positions a predictor cannot guess exactly.
+Mesh perturbed(Mesh mesh, uint64_t seed, float amount) {
+  qmc::tools::SplitMix64 random(seed);
+  for (float& x : mesh.positions) x += amount * (float(random.next() % 2001) / 1000.f - 1.f);
+  return mesh;
+}
+
+// Vertices a = 0, b = 1, t1 = 2, t2 = 3: `degenerate` faces (a, b, a), then
+// (a, b, t1) and (b, a, t2), the parallelogram of t2 across (a, b) being t1's.
+Mesh search_cap_mesh(int degenerate) {
+  Mesh m;
+  m.positions = {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.5f, 1.f, 0.f, 0.5f, -1.f, 0.25f};
+  for (int i = 0; i < degenerate; ++i) {
+    m.face_sizes.push_back(3);
+    m.corners.insert(m.corners.end(), {0, 1, 0});
+  }
+  m.face_sizes.insert(m.face_sizes.end(), {3, 3});
+  m.corners.insert(m.corners.end(), {0, 1, 2, 1, 0, 3});
+  return m;
+}
+
+void write_predicted_position_valid(VectorWriter* w) {
+  using namespace qmc::tools;
+  const Mesh sphere = perturbed(triangulated(make_refined_sphere(2)), 1, 0.01f);  // parallelograms, flags
+  w->valid("valid_posn1_triangles", encode_predicted(sphere, 12), &sphere);
+  const Mesh torus = perturbed(make_torus(16, 10), 2, 0.005f);  // quad runs and strips
+  w->valid("valid_posn1_quads", encode_predicted(torus, 14), &torus);
+  const Mesh prism = perturbed(make_prism(7), 3, 0.01f);  // heptagon caps: c_7
+  w->valid("valid_posn1_heptagon_caps", encode_predicted(prism, 12), &prism);
+  const Mesh hexecontahedron = make_deltoidal_hexecontahedron();
+  w->valid("valid_posn1_polygons", encode_predicted(hexecontahedron, 16), &hexecontahedron);
+  w->valid("valid_posn1_per_axis_grid",
+           encode_predicted(sphere, 10, qmc::ConnectivityChoice::kAuto, qmc::PositionGrid::kPerAxis), &sphere);
+  RandomSoupOptions soup_options;  // non-manifold faces, unreferenced vertices: neighbours, previous
+  soup_options.vertices = 300;
+  soup_options.faces = 200;
+  const Mesh soup = make_random_soup(11, soup_options);
+  w->valid("valid_posn1_soup", encode_predicted(soup, 12, qmc::ConnectivityChoice::kIndexed), &soup);
+  const Mesh points = points_only();
+  w->valid("valid_posn1_points_only", encode_predicted(points, 20, qmc::ConnectivityChoice::kIndexed), &points);
+  const Mesh flat = planar_square_grid();
+  w->valid("valid_posn1_flat_axis", encode_predicted(flat, 12), &flat);
+  const Mesh empty;
+  w->valid("valid_posn1_empty_mesh", encode_predicted(empty, 12), &empty);
+  w->valid("valid_posn1_30bit", encode_predicted(sphere, 30), &sphere);
+  // 14.2's bounded search: nine degenerate triangles (a, b, a) fill the 8
+  // corners examined for the edge (a, b), so vertex 3 finds no parallelogram
+  // across it and takes the fallback; examining more would find face 9.
+  const Mesh capped = search_cap_mesh(9);
+  w->valid("valid_posn1_search_cap", encode_predicted(capped, 12, qmc::ConnectivityChoice::kIndexed), &capped);
+}
+
+void write_predicted_position_errors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  const Mesh sphere = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(1)), 4, 0.01f);
+  const Chunks base = split_chunks(encode_predicted(sphere, 12));
+  const size_t posn = find_chunk(base, qmc::kChunkPositions);
+  const std::vector<uint8_t> payload = base[posn].payload;
+  auto with_posn = [&](std::vector<uint8_t> p) {
+    Chunks c = base;
+    c[posn].payload = std::move(p);
+    return join_chunks(c);
+  };
+  // The header: varint V, 0x81, grid, origin (12 bytes), step (8), 3 varint tops (2 bytes each at 12 bits).
+  std::vector<uint8_t> count;
+  qmc::put_varint(&count, sphere.vertex_count());
+  const size_t selector = count.size(), grid = selector + 1, origin = grid + 1, step = origin + 12, tops = step + 8,
+               stream = tops + 6;
+  std::vector<uint8_t> p = payload;
+  p[selector] = 0x82;
+  w->invalid("invalid_posn1_unknown_method", with_posn(p), ErrorCode::kUnsupportedFeature);
+  p = payload;
+  p[grid] = 2;
+  w->invalid("invalid_posn1_grid_value", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn1_header_cut", with_posn({payload.begin(), payload.begin() + tops + 1}),
+             ErrorCode::kBadChunkPayload);
+  p = payload;
+  std::vector<uint8_t> bytes;
+  qmc::put_f32le(&bytes, std::numeric_limits<float>::infinity());
+  std::copy(bytes.begin(), bytes.end(), p.begin() + origin);
+  w->invalid("invalid_posn1_infinite_origin", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  bytes.clear();
+  qmc::put_f64le(&bytes, -1e-3);
+  std::copy(bytes.begin(), bytes.end(), p.begin() + step);
+  w->invalid("invalid_posn1_negative_step", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  bytes.clear();
+  qmc::put_f64le(&bytes, 1e36);  // 4095 steps of 1e36 overflow binary32
+  std::copy(bytes.begin(), bytes.end(), p.begin() + step);
+  w->invalid("invalid_posn1_grid_overflows_binary32", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = {payload.begin(), payload.begin() + tops};
+  qmc::put_varint(&p, uint64_t(1) << 30);
+  p.insert(p.end(), payload.begin() + tops + 2, payload.end());
+  w->invalid("invalid_posn1_top_above_2_30", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn1_truncated_stream", with_posn({payload.begin(), payload.end() - 8}), ErrorCode::kTruncated);
+  p = payload;
+  p.insert(p.end(), {0x55, 0x55, 0x55, 0x55, 0x55, 0x55});
+  w->invalid("invalid_posn1_bytes_after_stream", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  std::fill(p.begin() + stream, p.begin() + stream + 4, 0xFF);
+  w->invalid("invalid_posn1_stream_start_ffffffff", with_posn(p), ErrorCode::kBadChunkPayload);
+  // Tops of 1: a residual the grid cannot hold (the first vertex's x is coded
+  // against a prediction of 0 with the data of a 4095-wide grid).
+  p = {payload.begin(), payload.begin() + tops};
+  qmc::put_varint(&p, 1);
+  qmc::put_varint(&p, 1);
+  qmc::put_varint(&p, 1);
+  p.insert(p.end(), payload.begin() + stream, payload.end());
+  w->invalid("invalid_posn1_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
+  // 14.1: 5000 unreferenced vertices on one point cost no decision: an empty
+  // stream cannot justify them.
+  std::vector<uint8_t> conn{0};
+  qmc::put_varint(&conn, 5000);
+  qmc::put_varint(&conn, 0);
+  std::vector<uint8_t> free_points;
+  qmc::put_varint(&free_points, 5000);
+  free_points.insert(free_points.end(), {0x81, 0});
+  for (int i = 0; i < 5; ++i) qmc::put_f32le(&free_points, 0.f);  // origin (3) and the step's 8 bytes
+  free_points.insert(free_points.end(), {0, 0, 0});
+  w->invalid("invalid_posn1_vertices_unjustified",
+             join_chunks({Chunk{qmc::kChunkHeader, {1, 5}}, Chunk{qmc::kChunkConnectivity, conn},
+                          Chunk{qmc::kChunkPositions, free_points}, Chunk{qmc::kChunkEnd, {}}}),
+             ErrorCode::kLimitExceeded);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -1408,6 +1562,8 @@ int main(int argc, char** argv) {
   write_polygon_reading_vectors(&w);
   write_gim_reading_vectors(&w);
   write_hardening_vectors(&w);
+  write_predicted_position_valid(&w);
+  write_predicted_position_errors(&w);
   w.finish();
   return 0;
 }

@@ -28,9 +28,12 @@ struct ChunkInfo {
 std::string chunk_type_name(uint32_t type);
 
 struct QuantizationInfo {
-  int bits = 0;                   // n of section 6.1
-  std::array<float, 3> min{};     // bounding box stored in POSN
-  std::array<float, 3> max{};
+  int method = 0;                 // POSN method: 0 deltas (section 6), 1 predicted (section 14)
+  int bits = 0;                   // method 0: n of section 6.1; method 1: bit length of the largest top
+  std::array<float, 3> min{};     // method 0: the stored box; method 1: the origin
+  std::array<float, 3> max{};     // method 1: the grid's last point, float(min + top x step)
+  std::array<double, 3> step{};   // x = min + q x step (6.4, 14.1), per axis
+  std::array<uint32_t, 3> top{};  // the largest q per axis
 };
 
 // Section 12: one level of a progressive file. Level 0 is the base mesh of

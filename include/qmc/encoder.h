@@ -47,8 +47,29 @@ struct GeometryImageOptions {
   uint32_t hausdorff_iterations = 2000;  // bound of seed 000's algorithm 1
 };
 
+// Section 14.1: the grid the positions are rounded to.
+enum class PositionGrid : uint8_t {
+  kUniform,  // one step for all axes: the largest side / (2^bits - 1), as Draco and meshoptimizer
+  kPerAxis,  // each axis over its own range in 2^bits - 1 steps (section 6.1)
+};
+
+// How POSN codes the grid points (sections 6 and 14).
+enum class PositionMethod : uint8_t {
+  kAuto,       // the smaller of the methods that can carry the grid
+  kDeltas,     // method 0: deltas in file order (section 6); per-axis grid only
+  kPredicted,  // method 1: predicted from the decoded mesh, range coded (section 14)
+};
+
 struct EncodeOptions {
   int position_bits = kDefaultPositionBits;  // 1..30, section 6.1
+  PositionGrid position_grid = PositionGrid::kUniform;
+  // > 0: this step (model units) on every axis instead of bits and grid.
+  double position_step = 0;
+  // > 0: the largest uniform step that keeps every vertex within this
+  // Euclidean distance of its input (binary32 rounding included); instead
+  // of bits, grid and step.
+  double max_position_error = 0;
+  PositionMethod position_method = PositionMethod::kAuto;
   ConnectivityChoice connectivity = ConnectivityChoice::kAuto;
   // Quad coder only: force a coding (0..4, section 5.3.5); -1 picks the
   // smallest. A forced coding that cannot express the mesh is an error.
@@ -123,8 +144,21 @@ struct GimEncodeStats {
   uint64_t mask_bytes = 0, seam_bytes = 0, face_bytes = 0;
 };
 
+// Sections 6 and 14: how the positions were coded.
+struct PositionStats {
+  int method = 0;                  // POSN method
+  std::array<double, 3> step{};    // the grid's step per axis
+  std::array<uint32_t, 3> top{};   // the largest grid coordinate per axis
+  double error_bound = 0;          // Euclidean bound of the rounding: |step| / 2
+  // Method 1: vertices and information content (bits, -log2 of the coded
+  // decisions' probabilities) by prediction kind (section 14.3.2).
+  std::array<uint32_t, 4> vertices_by_kind{};
+  std::array<double, 4> bits_by_kind{};
+};
+
 struct EncodeStats {
   ConnectivityMethod method = ConnectivityMethod::kIndexed;
+  PositionStats positions;
   std::string fallback_reason;  // why the quad coder was not used (kAuto), empty if it was
   std::string polygon_fallback_reason;  // why the polygon coder was not used either (never expected)
   QuadCoderStats quad;          // filled when method == kQuad

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "bitio/residual_code.h"
+
 namespace qmc {
 
 // Predictor ids of the plane payload's first byte.
@@ -100,43 +102,11 @@ inline PlaneResidualModel::PlaneResidualModel() {
   std::fill(&mantissa[0][0], &mantissa[0][0] + sizeof(mantissa) / sizeof(uint16_t), uint16_t(1024));
 }
 
-// A residual as sign and magnitude; magnitude <= 2^(k-1), and magnitude
-// 2^(k-1) only negative.
-struct SignedResidual {
-  uint32_t magnitude = 0;
-  bool negative = false;
-};
-
-// Codes one residual: its class c = bit length of the magnitude (0..k) as
-// unary bits "c > i", then for c >= 1 the sign, then the c - 1 bits below
-// the leading one, the first two adaptive per class, the rest at 1/2.
-// Coder is RangeEncoder (value is coded) or RangeDecoder (value is ignored
-// and the decoded residual returned). The decoder's magnitude may exceed
-// 2^(k-1) on bad input; the caller checks.
+// A plane's residual (13.5.6). The decoder's magnitude may exceed 2^(k-1)
+// on bad input; the caller checks.
 template <class Coder>
 SignedResidual code_residual(Coder* coder, PlaneResidualModel* m, int bucket, int k, SignedResidual value) {
-  int value_class = 0;
-  for (uint32_t v = value.magnitude; v != 0; v >>= 1) ++value_class;
-  int c = 0;
-  while (c < k && coder->code(value_class > c, &m->cls[bucket][c])) ++c;
-  SignedResidual out;
-  if (c == 0) return out;
-  out.negative = coder->code(value.negative, &m->sign[bucket]) != 0;
-  uint32_t magnitude = 1;
-  for (int j = c - 2; j >= 0; --j) {
-    const int bit = int((value.magnitude >> j) & 1);
-    const int position = c - 2 - j;
-    int got;
-    if (position == 0)
-      got = coder->code(bit, &m->mantissa[c][0]);
-    else if (position == 1)
-      got = coder->code(bit, &m->mantissa[c][1 + (magnitude & 1)]);
-    else
-      got = coder->code_direct(bit);
-    magnitude = (magnitude << 1) | uint32_t(got);
-  }
-  out.magnitude = magnitude;
-  return out;
+  return code_class_residual(coder, m->cls[bucket], &m->sign[bucket], m->mantissa, k, value);
 }
 
 }  // namespace qmc

@@ -1,5 +1,6 @@
-// Positions of spec/qmc-format.md section 6 (seed 001 §2.6, §5.1.2):
-// per-axis Huffman-coded deltas between consecutive vertices in file order.
+// Positions: spec/qmc-format.md section 6 (method 0, seed 001 §2.6, §5.1.2:
+// per-axis Huffman-coded deltas between consecutive vertices in file order)
+// and section 14 (method 1: predicted from the decoded mesh, range coded).
 #include "decoder/position_decoder.h"
 
 #include <cmath>
@@ -10,21 +11,20 @@
 #include "bitio/exact_arith.h"
 #include "bitio/huffman.h"
 #include "bitio/magnitude_code.h"
+#include "bitio/position_coding.h"
+#include "bitio/range_coder.h"
+#include "bitio/vertex_prediction.h"
 
 namespace qmc {
 namespace {
 
 Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadChunkPayload, "POSN: " + message); }
 
-Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info) {
-  uint64_t count = 0;
-  uint8_t bits = 0;
-  if (!in->get_varint(&count) || !in->get_u8(&bits)) return bad_payload("header cut short or malformed varint");
-  if (count != vertex_count)
-    return bad_payload("vertex_count " + std::to_string(count) + " differs from CONN's " +
-                       std::to_string(vertex_count));
-  if (bits < 1 || bits > 30) return bad_payload("quantization bits " + std::to_string(bits) + " outside 1..30");
-  info->bits = bits;
+// Section 14.1: the byte after vertex_count selects the method.
+constexpr uint8_t kPredictedSelector = 0x81;
+constexpr uint64_t kPredictedVerticesPerByte = 512;
+
+Status read_box(ByteReader* in, QuantizationInfo* info) {
   for (int a = 0; a < 3; ++a)
     if (!in->get_f32le(&info->min[a])) return bad_payload("bounding box cut short");
   for (int a = 0; a < 3; ++a)
@@ -35,44 +35,82 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
   return Status::Ok();
 }
 
-}  // namespace
-
-void dequantization_steps(const QuantizationInfo& info, double lo[3], double step[3]) {
+// Section 14.1: origin, steps and tops of the grid; every grid point must
+// be finite in binary32.
+Status read_grid(ByteReader* in, QuantizationInfo* info) {
+  uint8_t grid = 0;
+  if (!in->get_u8(&grid)) return bad_payload("grid field missing");
+  if (grid > 1) return bad_payload("grid " + std::to_string(grid) + " is neither 0 (one step) nor 1 (a step per axis)");
+  for (int a = 0; a < 3; ++a)
+    if (!in->get_f32le(&info->min[a])) return bad_payload("grid origin cut short");
+  for (int a = 0; a < 3; ++a)
+    if ((a == 0 || grid == 1) && !in->get_f64le(&info->step[a])) return bad_payload("grid step cut short");
+  if (grid == 0) info->step[1] = info->step[2] = info->step[0];
   for (int a = 0; a < 3; ++a) {
-    lo[a] = double(info.min[a]);
-    step[a] = (double(info.max[a]) - lo[a]) / double((uint64_t(1) << info.bits) - 1);
+    uint64_t top = 0;
+    if (!in->get_varint(&top)) return bad_payload("grid top missing or malformed");
+    if (top > (uint64_t(1) << 30) - 1) return bad_payload("top " + std::to_string(top) + " above 2^30 - 1");
+    info->top[a] = uint32_t(top);
   }
+  for (int a = 0; a < 3; ++a) {
+    const std::string axis = "axis " + std::to_string(a);
+    if (!std::isfinite(info->min[a])) return bad_payload(axis + ": the origin is not finite");
+    if (!std::isfinite(info->step[a]) || info->step[a] < 0) return bad_payload(axis + ": the step is not finite and >= 0");
+    info->max[a] = float(double(info->min[a]) + mul(double(info->top[a]), info->step[a]));
+    if (!std::isfinite(info->max[a])) return bad_payload(axis + ": the grid's last point overflows binary32");
+  }
+  int bits = 0;
+  for (uint32_t t : info->top) bits = std::max(bits, bit_length(t));
+  info->bits = bits;
+  return Status::Ok();
 }
 
-Status decode_positions(const uint8_t* payload, size_t size, uint32_t vertex_count, QuantizationInfo* info,
-                        std::vector<uint32_t>* quantized, std::vector<float>* positions) {
-  ByteReader in(payload, size);
-  if (Status s = read_header(&in, vertex_count, info); !s.ok()) return s;
-  BitReader bits(in.cursor(), in.remaining());
-  quantized->clear();
-  positions->clear();
-  if (vertex_count == 0) {
-    if (!bits.at_clean_end()) return bad_payload("data after an empty vertex list");
-    return Status::Ok();
+Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info) {
+  uint64_t count = 0;
+  uint8_t selector = 0;
+  if (!in->get_varint(&count) || !in->get_u8(&selector)) return bad_payload("header cut short or malformed varint");
+  if (count != vertex_count)
+    return bad_payload("vertex_count " + std::to_string(count) + " differs from CONN's " +
+                       std::to_string(vertex_count));
+  if (selector == kPredictedSelector) {
+    info->method = 1;
+    return read_grid(in, info);
   }
+  if (selector >= 0x80)
+    return Status(ErrorCode::kUnsupportedFeature, "POSN: method " + std::to_string(selector - 0x80) +
+                                                      " is not defined (section 14.1 knows 0 and 1)");
+  if (selector < 1 || selector > 30) return bad_payload("quantization bits " + std::to_string(selector) + " outside 1..30");
+  info->method = 0;
+  info->bits = selector;
+  if (Status s = read_box(in, info); !s.ok()) return s;
+  for (int a = 0; a < 3; ++a) {
+    info->step[a] = (double(info->max[a]) - double(info->min[a])) / double((uint64_t(1) << info->bits) - 1);
+    info->top[a] = uint32_t((uint64_t(1) << info->bits) - 1);
+  }
+  return Status::Ok();
+}
+
+// Section 6.3: Huffman-coded deltas in label order.
+Status decode_deltas(BitReader* bits, size_t size, uint32_t vertex_count, const QuantizationInfo& info,
+                     std::vector<uint32_t>* quantized) {
   // Each vertex costs at least three code words of one bit.
-  if (uint64_t(vertex_count) * 3 > bits.bits_remaining())
+  if (uint64_t(vertex_count) * 3 > bits->bits_remaining())
     return Status(ErrorCode::kLimitExceeded, "POSN: " + std::to_string(vertex_count) +
                                                  " vertices cannot fit in " + std::to_string(size) + " bytes");
-  const uint32_t alphabet = uint32_t(info->bits) + 1;
+  const uint32_t alphabet = uint32_t(info.bits) + 1;
   HuffmanDecoder codes[3];
   for (HuffmanDecoder& code : codes)
-    if (Status s = read_table(&bits, alphabet, &code); !s.ok()) return s;
-  const int64_t top = (int64_t(1) << info->bits) - 1;
+    if (Status s = read_table(bits, alphabet, &code); !s.ok()) return s;
+  const int64_t top = (int64_t(1) << info.bits) - 1;
   quantized->resize(size_t(vertex_count) * 3);
   int64_t previous[3] = {0, 0, 0};
   for (size_t i = 0; i < size_t(vertex_count) * 3; ++i) {
     const int axis = int(i % 3);
-    const int c = codes[axis].decode(&bits);
+    const int c = codes[axis].decode(bits);
     if (c < 0) return Status(ErrorCode::kBadSymbol, "POSN: invalid delta code word");
-    const int64_t q = previous[axis] + read_signed_extra(&bits, c);
-    if (bits.overrun()) return Status(ErrorCode::kTruncated, "POSN: bit stream ends before the last vertex");
-    const bool flat = info->min[axis] == info->max[axis];
+    const int64_t q = previous[axis] + read_signed_extra(bits, c);
+    if (bits->overrun()) return Status(ErrorCode::kTruncated, "POSN: bit stream ends before the last vertex");
+    const bool flat = info.min[axis] == info.max[axis];
     if (q < 0 || q > top || (flat && q != 0))
       return Status(ErrorCode::kBadSymbol, "POSN: vertex " + std::to_string(i / 3) + " axis " +
                                                std::to_string(axis) + " decodes to " + std::to_string(q) +
@@ -80,9 +118,96 @@ Status decode_positions(const uint8_t* payload, size_t size, uint32_t vertex_cou
     previous[axis] = q;
     (*quantized)[i] = uint32_t(q);
   }
-  if (!bits.at_clean_end()) return bad_payload("bits left over after the last vertex");
-  // Section 6.4, the step of each axis computed once; mul() keeps the
-  // product out of any fused multiply-add.
+  if (!bits->at_clean_end()) return bad_payload("bits left over after the last vertex");
+  return Status::Ok();
+}
+
+Status truncated_at(uint32_t v) {
+  return Status(ErrorCode::kTruncated,
+                "POSN: the range-coded stream ends inside vertex " + std::to_string(v) + " (section 14.4)");
+}
+
+// Section 14.4 for one vertex whose candidates and fallback are in p: the
+// mask, then the three residuals; the stream's end is checked after each
+// decision group, before the value it gave is.
+Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, uint32_t v, const uint32_t* top,
+                     VertexPrediction* p, uint32_t* q, int32_t* residual) {
+  select_candidates(p, code_candidate_mask(rc, model, p->candidates, 0), top);
+  if (rc->overrun()) return truncated_at(v);
+  uint32_t magnitude[3] = {0, 0, 0};
+  for (int a = 0; a < 3; ++a) {
+    const SignedResidual r = code_position_residual(rc, model, *p, magnitude, a, top[a], SignedResidual{});
+    if (rc->overrun()) return truncated_at(v);
+    const int64_t value = p->value[a] + (r.negative ? -int64_t(r.magnitude) : int64_t(r.magnitude));
+    if (value < 0 || value > int64_t(top[a]))
+      return Status(ErrorCode::kBadSymbol, "POSN: vertex " + std::to_string(v) + " axis " + std::to_string(a) +
+                                               " decodes to " + std::to_string(value) + ", outside 0.." +
+                                               std::to_string(top[a]) + " (section 14.4)");
+    q[a] = uint32_t(value);
+    magnitude[a] = r.magnitude;
+    residual[a] = int32_t(value - p->value[a]);
+  }
+  return Status::Ok();
+}
+
+// Section 14: each vertex in label order, predicted from the decoded ones
+// (14.3), its decisions range coded (14.4).
+Status decode_predicted(const uint8_t* stream, size_t size, const Mesh& mesh, uint32_t vertex_count,
+                        const QuantizationInfo& info, std::vector<uint32_t>* quantized) {
+  // Section 14.1: every decision costs more than 1/46 bit, so a stream of L
+  // bytes holds fewer than 512 (L + 8) of them; vertices that cost nothing
+  // must fit the same bound.
+  if (uint64_t(vertex_count) > kPredictedVerticesPerByte * (uint64_t(size) + 8))
+    return Status(ErrorCode::kLimitExceeded, "POSN: " + std::to_string(vertex_count) + " vertices for " +
+                                                 std::to_string(size) + " stream bytes, above 512 (L + 8) (section 14.1)");
+  quantized->resize(size_t(vertex_count) * 3);
+  VertexCorners corners;
+  corners.build(vertex_count, mesh.face_sizes, mesh.corners);
+  std::vector<int32_t> residual(3 * size_t(vertex_count));
+  std::vector<PositionResidualModel> model(1);
+  RangeDecoder rc(stream, size);
+  if (rc.bad_start()) return bad_payload("the range coder's first four bytes are 0xFFFFFFFF (section 13.5.2)");
+  VertexPrediction p;
+  for (uint32_t v = 0; v < vertex_count; ++v) {
+    predict_vertex(corners, v, quantized->data(), residual.data(), info.top.data(), &p);
+    if (Status s = decode_vertex(&rc, &model[0], v, info.top.data(), &p, &(*quantized)[3 * size_t(v)],
+                                 &residual[3 * size_t(v)]);
+        !s.ok())
+      return s;
+  }
+  if (rc.unread() != 0)
+    return bad_payload(std::to_string(rc.unread()) + " bytes after the range-coded data (section 13.5.2)");
+  return Status::Ok();
+}
+
+}  // namespace
+
+void dequantization_steps(const QuantizationInfo& info, double lo[3], double step[3]) {
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = double(info.min[a]);
+    step[a] = info.step[a];
+  }
+}
+
+Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, uint32_t vertex_count,
+                        QuantizationInfo* info, std::vector<uint32_t>* quantized, std::vector<float>* positions) {
+  ByteReader in(payload, size);
+  if (Status s = read_header(&in, vertex_count, info); !s.ok()) return s;
+  quantized->clear();
+  positions->clear();
+  if (info->method == 1) {
+    if (Status s = decode_predicted(in.cursor(), in.remaining(), faces, vertex_count, *info, quantized); !s.ok())
+      return s;
+  } else {
+    BitReader bits(in.cursor(), in.remaining());
+    if (vertex_count == 0) {
+      if (!bits.at_clean_end()) return bad_payload("data after an empty vertex list");
+      return Status::Ok();
+    }
+    if (Status s = decode_deltas(&bits, size, vertex_count, *info, quantized); !s.ok()) return s;
+  }
+  // Sections 6.4 and 14.1, the step of each axis computed once; mul() keeps
+  // the product out of any fused multiply-add.
   double step[3], lo[3];
   dequantization_steps(*info, lo, step);
   positions->resize(quantized->size());

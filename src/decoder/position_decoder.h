@@ -1,4 +1,4 @@
-// Decoder of the POSN chunk (spec/qmc-format.md section 6).
+// Decoder of the POSN chunk (spec/qmc-format.md sections 6 and 14).
 #pragma once
 
 #include <cstddef>
@@ -10,13 +10,14 @@
 
 namespace qmc {
 
-// Decodes a POSN payload; `vertex_count` is the count CONN declared.
-// Fills quantized (3 per vertex), positions (section 6.4) and the stored
-// quantization parameters.
-Status decode_positions(const uint8_t* payload, size_t size, uint32_t vertex_count, QuantizationInfo* info,
-                        std::vector<uint32_t>* quantized, std::vector<float>* positions);
+// Decodes a POSN payload; `vertex_count` is the count CONN declared and
+// `faces` CONN's faces (method 1 predicts from them, section 14.3).
+// Fills quantized (3 per vertex), positions (sections 6.4, 14.1) and the
+// stored quantization parameters.
+Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, uint32_t vertex_count,
+                        QuantizationInfo* info, std::vector<uint32_t>* quantized, std::vector<float>* positions);
 
-// Section 6.4: per axis, the binary64 min and step of x = min + q * step.
+// Sections 6.4 and 14.1: per axis, the binary64 min and step of x = min + q * step.
 void dequantization_steps(const QuantizationInfo& info, double lo[3], double step[3]);
 
 }  // namespace qmc

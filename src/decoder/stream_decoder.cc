@@ -212,7 +212,7 @@ Status StreamDecoder::State::handle_connectivity(const uint8_t* payload, uint32_
 Status StreamDecoder::State::handle_positions(const uint8_t* payload, uint32_t length) {
   if (!connectivity_seen) return order_error("POSN before CONN");
   if (positions_seen) return order_error("a second POSN");
-  Status s = decode_positions(payload, length, vertex_count, &file.quantization, &file.quantized,
+  Status s = decode_positions(payload, length, file.mesh, vertex_count, &file.quantization, &file.quantized,
                               &file.mesh.positions);
   if (!s.ok()) return s;
   if (file.loop_level_count > 0) {

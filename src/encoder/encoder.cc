@@ -57,6 +57,15 @@ Status validate(const Mesh& mesh, const EncodeOptions& options) {
                    std::to_string(options.progressive_levels));
   if (options.progressive_levels > 0 && options.keep_order)
     return invalid("a progressive file has no input order to keep (section 12.1): drop keep_order");
+  if (!(options.position_step >= 0) || !std::isfinite(options.position_step))
+    return invalid("the position step must be a finite number > 0 (or 0: from the bits)");
+  if (!(options.max_position_error >= 0) || !std::isfinite(options.max_position_error))
+    return invalid("the max position error must be a finite number > 0 (or 0: from the bits)");
+  if (options.position_step > 0 && options.max_position_error > 0)
+    return invalid("give a position step or a max position error, not both");
+  if (options.position_method == PositionMethod::kDeltas &&
+      (options.position_grid != PositionGrid::kPerAxis || options.position_step > 0 || options.max_position_error > 0))
+    return invalid("position method 0 (deltas, section 6) carries only the per-axis grid of section 6.1");
   if (options.quad_coding < -1 || options.quad_coding >= kQuadCodingCount)
     return invalid("quad coding must be -1 (smallest) or 0.." + std::to_string(kQuadCodingCount - 1));
   return Status::Ok();
@@ -169,7 +178,8 @@ Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileC
   return Status::Ok();
 }
 
-uint8_t minor_version_for(ConnectivityMethod method) {
+uint8_t minor_version_for(ConnectivityMethod method, int position_method) {
+  if (position_method == 1) return 5;
   return method == ConnectivityMethod::kPolygon ? 2 : method == ConnectivityMethod::kQuad ? 1 : 0;
 }
 
@@ -184,15 +194,18 @@ Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_
   if (options.gim.size > 0) return encode_geometry_image(mesh, options, out, &st);
   FileConnectivity conn;
   if (Status s = choose_connectivity(mesh, options, &conn, &st); !s.ok()) return s;
+  QuantizedPositions quantized;
+  if (Status s = quantize_positions(conn.mesh.positions, options, &quantized); !s.ok()) return s;
+  const std::vector<uint8_t> positions = encode_positions(quantized, conn.mesh, options.position_method, &st.positions);
 
   out->clear();
   write_signature(out);
   // The lowest minor version that defines everything in the file (4.1).
-  add_chunk(out, &st, kChunkHeader, {kFormatMajor, minor_version_for(conn.method)});
+  add_chunk(out, &st, kChunkHeader, {kFormatMajor, minor_version_for(conn.method, st.positions.method)});
   for (const std::string& text : options.texts)
     add_chunk(out, &st, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));
   add_chunk(out, &st, kChunkConnectivity, conn.payload);
-  add_chunk(out, &st, kChunkPositions, encode_positions(quantize_positions(conn.mesh.positions, options.position_bits)));
+  add_chunk(out, &st, kChunkPositions, positions);
   if (options.keep_order) {  // section 4.5: right after POSN, only if the coder order differs
     std::vector<uint8_t> order;
     if (Status s = encode_order(mesh, conn.mesh, conn.file_vertex, conn.face_source, &order); !s.ok()) return s;

@@ -23,7 +23,7 @@ struct FileConnectivity {
 Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileConnectivity* conn, EncodeStats* st);
 
 // Section 4.1: the lowest minor version that defines the method.
-uint8_t minor_version_for(ConnectivityMethod method);
+uint8_t minor_version_for(ConnectivityMethod method, int position_method);
 
 // Appends a chunk and records its size in the stats.
 void add_chunk(std::vector<uint8_t>* out, EncodeStats* stats, uint32_t type, const std::vector<uint8_t>& payload);

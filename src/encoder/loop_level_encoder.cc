@@ -82,6 +82,8 @@ QuantizationInfo info_of(const QuantizedPositions& q) {
   info.bits = q.bits;
   info.min = q.min;
   info.max = q.max;
+  info.step = q.step;
+  info.top = q.top;
   return info;
 }
 

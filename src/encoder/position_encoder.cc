@@ -1,5 +1,6 @@
-// Positions of spec/qmc-format.md section 6. The seed (001 §2.6) maps the
-// range onto 0..2^n; we use 0..2^n-1 so that every value fits in n bits.
+// Positions of spec/qmc-format.md sections 6 and 14. The seed (001 §2.6)
+// maps the range onto 0..2^n; we use 0..2^n-1 so that every value fits in
+// n bits.
 #include "encoder/position_encoder.h"
 
 #include <algorithm>
@@ -7,33 +8,127 @@
 
 #include "bitio/bit_writer.h"
 #include "bitio/byte_io.h"
+#include "bitio/exact_arith.h"
 #include "bitio/huffman.h"
 #include "bitio/magnitude_code.h"
+#include "bitio/position_coding.h"
+#include "bitio/range_coder.h"
+#include "bitio/vertex_prediction.h"
 
 namespace qmc {
+namespace {
+
+constexpr uint8_t kPredictedSelector = 0x81;  // section 14.1
+constexpr uint64_t kPredictedVerticesPerByte = 512;  // section 14.1: V <= 512 (L + 8)
+constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
+
+void bounding_box(const std::vector<float>& positions, QuantizedPositions* out) {
+  const size_t n = positions.size() / 3;
+  for (int a = 0; a < 3; ++a) {
+    out->min[a] = n ? positions[a] : 0.f;
+    out->max[a] = out->min[a];
+  }
+  for (size_t i = 0; i < n; ++i)
+    for (int a = 0; a < 3; ++a) {
+      out->min[a] = std::min(out->min[a], positions[3 * i + a]);
+      out->max[a] = std::max(out->max[a], positions[3 * i + a]);
+    }
+}
+
+// Rounds every coordinate to the grid of out's min (origin) and step.
+void round_to_grid(const std::vector<float>& positions, QuantizedPositions* out) {
+  out->q.resize(positions.size());
+  for (size_t i = 0; i < positions.size(); ++i) {
+    const int a = int(i % 3);
+    const double v = out->step[a] > 0 ? std::nearbyint((double(positions[i]) - out->min[a]) / out->step[a]) : 0.0;
+    out->q[i] = uint32_t(std::clamp(v, 0.0, double(out->top[a])));
+  }
+  int bits = 0;
+  for (int a = 0; a < 3; ++a) {
+    out->max[a] = float(double(out->min[a]) + mul(double(out->top[a]), out->step[a]));
+    bits = std::max(bits, bit_length(out->top[a]));
+  }
+  if (!out->per_axis_bits) out->bits = bits;
+}
+
+// One step on every axis: the tops follow from the box.
+Status uniform_grid(double step, const char* what, QuantizedPositions* out) {
+  for (int a = 0; a < 3; ++a) {
+    const double side = double(out->max[a]) - double(out->min[a]);
+    const double top = step > 0 ? std::nearbyint(side / step) : 0.0;
+    if (!(top <= kMaxTop))
+      return Status(ErrorCode::kInvalidArgument, std::string(what) + " needs " + std::to_string(top) +
+                                                     " steps on axis " + std::to_string(a) +
+                                                     "; the format allows 2^30 - 1 (section 14.1)");
+    out->step[a] = step;
+    out->top[a] = uint32_t(top);
+  }
+  return Status::Ok();
+}
+
+// The largest step whose rounding (half the cell's diagonal) plus the
+// binary32 rounding of the output (half an ulp per axis) stays within e.
+double step_for_error(const QuantizedPositions& box, double e) {
+  double ulp_sq = 0;
+  for (int a = 0; a < 3; ++a) {
+    const float far = std::max(std::fabs(box.min[a]), std::fabs(box.max[a]));
+    const double half_ulp = 0.5 * (double(std::nextafter(far, INFINITY)) - double(far));
+    ulp_sq += half_ulp * half_ulp;
+  }
+  const double room = e - std::sqrt(ulp_sq);
+  return room > 0 ? 2 * room / std::sqrt(3.0) : 0;
+}
+
+}  // namespace
 
 QuantizedPositions quantize_positions(const std::vector<float>& positions, int bits) {
   QuantizedPositions out;
   out.bits = bits;
-  const size_t n = positions.size() / 3;
-  for (int a = 0; a < 3; ++a) {
-    out.min[a] = n ? positions[a] : 0.f;
-    out.max[a] = out.min[a];
-  }
-  for (size_t i = 0; i < n; ++i)
-    for (int a = 0; a < 3; ++a) {
-      out.min[a] = std::min(out.min[a], positions[3 * i + a]);
-      out.max[a] = std::max(out.max[a], positions[3 * i + a]);
-    }
+  out.per_axis_bits = true;
+  bounding_box(positions, &out);
   const double top = double((uint64_t(1) << bits) - 1);
+  for (int a = 0; a < 3; ++a) {
+    out.step[a] = (double(out.max[a]) - double(out.min[a])) / top;
+    out.top[a] = uint32_t(top);
+  }
+  // Section 6.1 rounds (x - min) / range x top, which is not always the
+  // same as (x - min) / step.
   out.q.resize(positions.size());
-  for (size_t i = 0; i < n; ++i)
-    for (int a = 0; a < 3; ++a) {
-      const double range = double(out.max[a]) - double(out.min[a]);
-      double v = range > 0 ? std::nearbyint((double(positions[3 * i + a]) - out.min[a]) / range * top) : 0.0;
-      out.q[3 * i + a] = uint32_t(std::clamp(v, 0.0, top));
-    }
+  for (size_t i = 0; i < positions.size(); ++i) {
+    const int a = int(i % 3);
+    const double range = double(out.max[a]) - double(out.min[a]);
+    const double v = range > 0 ? std::nearbyint((double(positions[i]) - out.min[a]) / range * top) : 0.0;
+    out.q[i] = uint32_t(std::clamp(v, 0.0, top));
+  }
   return out;
+}
+
+Status quantize_positions(const std::vector<float>& positions, const EncodeOptions& options,
+                          QuantizedPositions* out) {
+  if (options.position_step <= 0 && options.max_position_error <= 0 &&
+      options.position_grid == PositionGrid::kPerAxis) {
+    *out = quantize_positions(positions, options.position_bits);
+    return Status::Ok();
+  }
+  *out = QuantizedPositions{};
+  bounding_box(positions, out);
+  Status s;
+  if (options.max_position_error > 0) {
+    const double step = step_for_error(*out, options.max_position_error);
+    if (step <= 0)
+      return Status(ErrorCode::kInvalidArgument, "max error " + std::to_string(options.max_position_error) +
+                                                     " is below binary32's own rounding of these coordinates");
+    s = uniform_grid(step, "the max error", out);
+  } else if (options.position_step > 0) {
+    s = uniform_grid(options.position_step, "the step", out);
+  } else {
+    double side = 0;
+    for (int a = 0; a < 3; ++a) side = std::max(side, double(out->max[a]) - double(out->min[a]));
+    s = uniform_grid(side / double((uint64_t(1) << options.position_bits) - 1), "the bits", out);
+  }
+  if (!s.ok()) return s;
+  round_to_grid(positions, out);
+  return Status::Ok();
 }
 
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions) {
@@ -71,6 +166,117 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions) {
   const std::vector<uint8_t> stream = bits.finish();
   payload.insert(payload.end(), stream.begin(), stream.end());
   return payload;
+}
+
+namespace {
+
+// The range encoder, also adding up each decision's information content
+// for the statistics of PositionStats.
+class MeteredRangeEncoder {
+ public:
+  int code(int bit, uint16_t* prob) {
+    bits += -std::log2((bit ? kRangeProbabilityOne - *prob : *prob) / double(kRangeProbabilityOne));
+    return rc.code(bit, prob);
+  }
+  int code_direct(int bit) {
+    bits += 1;
+    return rc.code_direct(bit);
+  }
+  RangeEncoder rc;
+  double bits = 0;
+};
+
+// The subset of the candidates (14.3.4) whose prediction is nearest (L1)
+// to the vertex; ties go to the lower mask.
+unsigned best_candidates(const uint32_t* q, const uint32_t* top, VertexPrediction* p) {
+  if (p->candidates < 2) return p->candidates == 1 ? 1u : 0u;
+  unsigned best = 1;
+  double best_cost = INFINITY;
+  for (unsigned mask = 1; mask < (1u << p->candidates); ++mask) {
+    select_candidates(p, mask, top);
+    double cost = 0;
+    for (int a = 0; a < 3; ++a) {
+      const int64_t r = int64_t(q[a]) - p->value[a];
+      const uint32_t m = uint32_t(r < 0 ? -r : r);
+      cost += double(m);
+    }
+    if (cost < best_cost) best_cost = cost, best = mask;
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
+                                                PositionStats* stats) {
+  const uint32_t n = uint32_t(positions.q.size() / 3);
+  std::vector<uint8_t> payload;
+  put_varint(&payload, n);
+  put_u8(&payload, kPredictedSelector);
+  const bool one_step = positions.step[0] == positions.step[1] && positions.step[1] == positions.step[2];
+  put_u8(&payload, one_step ? 0 : 1);
+  for (int a = 0; a < 3; ++a) put_f32le(&payload, positions.min[a]);
+  for (int a = 0; a < (one_step ? 1 : 3); ++a) put_f64le(&payload, positions.step[a]);
+  for (int a = 0; a < 3; ++a) put_varint(&payload, positions.top[a]);
+
+  VertexCorners corners;
+  corners.build(n, faces.face_sizes, faces.corners);
+  std::vector<int32_t> residual(3 * size_t(n));
+  std::vector<PositionResidualModel> model(1);
+  MeteredRangeEncoder rc;
+  PositionStats local;
+  PositionStats& st = stats ? *stats : local;
+  VertexPrediction p;
+  for (uint32_t v = 0; v < n; ++v) {
+    predict_vertex(corners, v, positions.q.data(), residual.data(), positions.top.data(), &p);
+    const double before = rc.bits;
+    const unsigned mask = best_candidates(&positions.q[3 * size_t(v)], positions.top.data(), &p);
+    code_candidate_mask(&rc, &model[0], p.candidates, mask);
+    select_candidates(&p, mask, positions.top.data());
+    uint32_t magnitude[3] = {0, 0, 0};
+    for (int a = 0; a < 3; ++a) {
+      const int64_t r = int64_t(positions.q[3 * size_t(v) + a]) - p.value[a];
+      magnitude[a] = uint32_t(r < 0 ? -r : r);
+      residual[3 * size_t(v) + a] = int32_t(r);
+      code_position_residual(&rc, &model[0], p, magnitude, a, positions.top[a], SignedResidual{magnitude[a], r < 0});
+    }
+    ++st.vertices_by_kind[int(p.kind)];
+    st.bits_by_kind[int(p.kind)] += rc.bits - before;
+  }
+  const std::vector<uint8_t> stream = rc.rc.finish();
+  if (n > kPredictedVerticesPerByte * (stream.size() + 8)) return {};
+  payload.insert(payload.end(), stream.begin(), stream.end());
+  return payload;
+}
+
+std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces, PositionMethod method,
+                                      PositionStats* stats) {
+  *stats = PositionStats{};
+  stats->step = positions.step;
+  stats->top = positions.top;
+  stats->error_bound = 0.5 * std::sqrt(positions.step[0] * positions.step[0] + positions.step[1] * positions.step[1] +
+                                       positions.step[2] * positions.step[2]);
+  std::vector<uint8_t> deltas;
+  if (positions.per_axis_bits && method != PositionMethod::kPredicted) deltas = encode_positions(positions);
+  if (method == PositionMethod::kDeltas) return deltas;
+  PositionStats predicted_stats = *stats;
+  std::vector<uint8_t> predicted = encode_predicted_positions(positions, faces, &predicted_stats);
+  if (predicted.empty()) {
+    // Only vertices that all coincide cost so little (section 14.1); on
+    // one point method 0's per-axis grid gives the same positions.
+    QuantizedPositions point;
+    point.bits = 1;
+    point.per_axis_bits = true;
+    point.min = point.max = positions.min;
+    point.top = {1, 1, 1};
+    point.q.assign(positions.q.size(), 0);
+    *stats = PositionStats{};
+    return encode_positions(point);
+  }
+  if (!deltas.empty() && deltas.size() <= predicted.size()) return deltas;
+  *stats = predicted_stats;
+  stats->method = 1;
+  return predicted;
 }
 
 }  // namespace qmc

@@ -1,23 +1,48 @@
-// Vertex positions: bounding box, n-bit quantization and Huffman-coded
-// deltas (seed 001 §2.6 and §5.1.2; spec/qmc-format.md section 6).
+// Vertex positions: the grid and its integer coordinates (spec/qmc-format.md
+// sections 6.1 and 14.1), method 0's Huffman-coded deltas (seed 001 §2.6
+// and §5.1.2, section 6) and method 1's predicted, range-coded residuals
+// (section 14).
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
+
+#include "qmc/encoder.h"
+#include "qmc/mesh.h"
+#include "qmc/status.h"
 
 namespace qmc {
 
 struct QuantizedPositions {
-  int bits = 0;
-  std::array<float, 3> min{}, max{};
+  int bits = 0;                        // method 0's n; the bit length of the largest top otherwise
+  bool per_axis_bits = false;          // the grid of section 6.1 (method 0 can carry it)
+  std::array<float, 3> min{}, max{};   // box (6.1) or origin (14.1) and the grid's last point
+  std::array<double, 3> step{};
+  std::array<uint32_t, 3> top{};
   std::vector<uint32_t> q;  // 3 per vertex
 };
 
-// Quantizes finite positions (x y z per vertex) to `bits` bits per axis.
+// Section 6.1: each axis over its own range in 2^bits - 1 steps.
 QuantizedPositions quantize_positions(const std::vector<float>& positions, int bits);
 
-// POSN payload for positions already in file vertex order.
+// The grid the options ask for (bits and grid, step, or max error; section
+// 14.1), or an error naming what cannot be represented.
+Status quantize_positions(const std::vector<float>& positions, const EncodeOptions& options,
+                          QuantizedPositions* out);
+
+// Method 0 (section 6.3); positions must be on a per-axis grid.
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions);
+
+// Method 1 (section 14) over the file's faces; stats may be null. Empty
+// when the vertices cost too little for 14.1's bound (all on one point).
+std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
+                                                PositionStats* stats);
+
+// The POSN payload the options ask for: method 1, method 0, or the smaller
+// of the two when both can carry the grid. Fills stats.
+std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces,
+                                      PositionMethod method, PositionStats* stats);
 
 }  // namespace qmc

@@ -135,8 +135,7 @@ RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decode
   const QuantizationInfo& q = decoded.quantization;
   double allowed[3];
   for (int a = 0; a < 3; ++a) {
-    const double step = (double(q.max[a]) - double(q.min[a])) / double((uint64_t(1) << q.bits) - 1);
-    allowed[a] = 0.5 * step * (1 + 1e-9) + float_ulp(std::fmax(std::fabs(q.min[a]), std::fabs(q.max[a])));
+    allowed[a] = 0.5 * q.step[a] * (1 + 1e-9) + float_ulp(std::fmax(std::fabs(q.min[a]), std::fabs(q.max[a])));
     report.max_bbox_side = std::fmax(report.max_bbox_side, double(q.max[a]) - double(q.min[a]));
   }
   double sum_sq = 0;

@@ -1,0 +1,37 @@
+// libFuzzer target: a POSN payload (spec sections 6 and 14) against the faces
+// of a CONN payload in the same input: u16le length of the CONN payload, the
+// CONN payload, then the POSN payload. Method 1 predicts every vertex from
+// those faces (14.2-14.3), so any face list CONN accepts, degenerate faces
+// and unreferenced vertices included, reaches the predictor. Accepted
+// values must lie on the grid the payload declares, every output coordinate
+// must be finite, and decoding twice must give the same values.
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "conn_prefix.h"
+#include "decoder/position_decoder.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  qmc::Mesh mesh;
+  uint32_t vertex_count = 0;
+  const uint8_t* payload = nullptr;
+  size_t length = 0;
+  if (!qmc::fuzz::decode_conn_prefix(data, size, &mesh, &vertex_count, &payload, &length)) return 0;
+  if (vertex_count > (1u << 20)) return 0;  // the decoder limits of 8.1 bound V in a whole file
+  qmc::QuantizationInfo info;
+  std::vector<uint32_t> q;
+  std::vector<float> positions;
+  if (!qmc::decode_positions(payload, length, mesh, vertex_count, &info, &q, &positions).ok()) return 0;
+  if (q.size() != 3 * size_t(vertex_count) || positions.size() != q.size()) __builtin_trap();
+  for (size_t i = 0; i < q.size(); ++i)
+    if (q[i] > info.top[i % 3] || !std::isfinite(positions[i])) __builtin_trap();
+  qmc::QuantizationInfo again_info;
+  std::vector<uint32_t> again;
+  std::vector<float> again_positions;
+  if (!qmc::decode_positions(payload, length, mesh, vertex_count, &again_info, &again, &again_positions).ok() ||
+      again != q)
+    __builtin_trap();
+  return 0;
+}

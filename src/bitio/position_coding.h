@@ -1,0 +1,81 @@
+// The residuals of predicted positions (spec/qmc-format.md section 14.4):
+// contexts from the prediction's kind, the axis and the residual activity
+// around the vertex, and their adaptive probabilities. Shared by the
+// encoder and the decoder through one template.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+
+#include "bitio/residual_code.h"
+#include "bitio/vertex_prediction.h"
+
+namespace qmc {
+
+inline constexpr int kPositionBuckets = 16;
+// 14.4: the class contexts' groups: previous vertex, neighbours, candidates.
+inline constexpr int kPositionGroups = 3;
+inline constexpr int kPositionMaxClass = 30;  // |r| <= top <= 2^30 - 1
+
+// Adaptive probabilities of one POSN payload, all starting at 1024.
+struct PositionResidualModel {
+  uint16_t cls[kPositionGroups][kPositionBuckets][kPositionMaxClass];  // by group, bucket, i
+  uint16_t sign[3];
+  uint16_t mantissa[kPositionMaxClass + 1][3];
+  uint16_t use[kMaxCandidates - 1][kMaxCandidates];  // 14.3.4: "candidate i is used", by count - 2
+  PositionResidualModel() {
+    std::fill(&use[0][0], &use[0][0] + sizeof(use) / sizeof(uint16_t), uint16_t(1024));
+    std::fill(&cls[0][0][0], &cls[0][0][0] + sizeof(cls) / sizeof(uint16_t), uint16_t(1024));
+    std::fill(sign, sign + 3, uint16_t(1024));
+    std::fill(&mantissa[0][0], &mantissa[0][0] + sizeof(mantissa) / sizeof(uint16_t), uint16_t(1024));
+  }
+};
+
+// 14.4: the bucket of axis a from an activity estimate t0 (a sum over three
+// axes) and the magnitudes of the vertex's earlier axes.
+inline int position_bucket(uint64_t t0, const uint32_t* magnitude, int axis) {
+  uint64_t t = t0;
+  if (axis > 0) {
+    uint64_t own = 0;
+    for (int b = 0; b < axis; ++b) own += magnitude[b];
+    t = (t + 3 * own / uint64_t(axis)) / 2;
+  }
+  int len = 0;
+  while (t != 0 && len < kPositionBuckets - 1) {
+    ++len;
+    t >>= 1;
+  }
+  return len;
+}
+
+inline int bit_length(uint32_t v) {
+  int n = 0;
+  for (; v != 0; v >>= 1) ++n;
+  return n;
+}
+
+// 14.3.4: which of the vertex's count candidates its prediction uses. With
+// one candidate it is used; with two or more, a bit per candidate, the last
+// one implied when no other is used.
+template <class Coder>
+unsigned code_candidate_mask(Coder* coder, PositionResidualModel* m, int count, unsigned mask) {
+  if (count < 2) return count == 1 ? 1u : 0u;
+  unsigned out = 0;
+  for (int i = 0; i < count; ++i) {
+    if (i == count - 1 && out == 0) return out | 1u << i;
+    if (coder->code(int(mask >> i & 1), &m->use[count - 2][i])) out |= 1u << i;
+  }
+  return out;
+}
+
+// Codes the residual of one axis, top[a] bounding its class (14.4).
+template <class Coder>
+SignedResidual code_position_residual(Coder* coder, PositionResidualModel* m, const VertexPrediction& p,
+                                      const uint32_t* magnitude, int axis, uint32_t top, SignedResidual value) {
+  const int bucket = position_bucket(p.neighbour_activity + p.scale / 8, magnitude, axis);
+  const int group = p.kind >= PredictionKind::kSingle ? 2 : int(p.kind);
+  return code_class_residual(coder, m->cls[group][bucket], &m->sign[axis], m->mantissa,
+                             bit_length(top), value);
+}
+
+}  // namespace qmc

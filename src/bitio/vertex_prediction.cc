@@ -1,0 +1,220 @@
+// Section 14.3 of spec/qmc-format.md: the prediction rules, one function
+// per rule, combined by weight in units of 2^-16.
+#include "bitio/vertex_prediction.h"
+
+#include <algorithm>
+
+namespace qmc {
+namespace {
+
+// 14.3.1: c_k = round(2^16 (1 + 2 cos(2 pi / k))) for k = 4 .. 12; larger
+// polygons use c_12.
+constexpr int64_t kPolygonCoefficient[9] = {65536, 106039, 131072, 147258, 158218, 165943, 171575, 175801, 179048};
+constexpr int64_t kOne = 65536;
+
+// 14.3.1: weights of the rules.
+constexpr int64_t kWeightParallelogram = 1;
+constexpr int64_t kWeightPolygon = 2;
+constexpr int64_t kWeightStrip = 1;
+
+int64_t polygon_coefficient(uint32_t degree) { return kPolygonCoefficient[std::min<uint32_t>(degree, 12) - 4]; }
+
+int64_t floor_div(int64_t n, int64_t d) {  // d > 0
+  const int64_t q = n / d;
+  return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+
+// Adds a candidate w x (base + coefficient (p - r) / 2^16) per axis, from
+// vertices' q, if there is room.
+void add_candidate(VertexPrediction* out, int64_t w, const uint32_t* q, uint32_t base, uint32_t p, uint32_t r,
+                   int64_t coefficient) {
+  if (out->candidates >= kMaxCandidates) return;
+  int64_t* value = out->candidate[out->candidates];
+  for (int a = 0; a < 3; ++a) {
+    const int64_t d = int64_t(q[3 * size_t(p) + a]) - int64_t(q[3 * size_t(r) + a]);
+    value[a] = kOne * int64_t(q[3 * size_t(base) + a]) + coefficient * d;
+    out->scale += uint64_t(d < 0 ? -d : d);
+  }
+  out->weight[out->candidates++] = w;
+}
+
+// 14.2: the corners of a vertex examined for a neighbour across an edge.
+constexpr int kMaxExamined = 8;
+
+// 14.2's bounded search: calls rule(k) for each corner k examined for w
+// next to u (in triangles or in larger faces) that is not in `corner`'s face.
+template <class Rule>
+void search_across(const VertexCorners& m, uint32_t u, uint32_t w, bool triangles, uint32_t corner,
+                   const VertexPrediction* c, Rule rule) {
+  const VertexCorners::Link *link, *end;
+  m.links(u, w, triangles, &link, &end);
+  for (int examined = 0; link != end && examined < kMaxExamined && c->candidates < kMaxCandidates;
+       ++link, ++examined)
+    if (m.face(link->corner) != m.face(corner)) rule(link->corner);
+}
+
+// 14.3.1, across-edge parallelogram: the triangles over the edge (a, b)
+// opposite v's corner.
+void add_parallelograms(const VertexCorners& m, uint32_t corner, uint32_t v, const uint32_t* q, VertexPrediction* c) {
+  const uint32_t a = m.along(corner, 1), b = m.along(corner, 2);
+  if (a >= v || b >= v || a == b) return;
+  search_across(m, a, b, true, corner, c, [&](uint32_t k) {
+    const uint32_t o = m.along(k, 1) == b ? m.along(k, 2) : m.along(k, 1);
+    if (o < v && o != a && o != b) add_candidate(c, kWeightParallelogram, q, a, b, o, kOne);
+  });
+}
+
+// 14.3.1, polygon run: the three vertices before v along the face (direction -1)
+// or after it (+1), all decoded: p3 + c_k (p1 - p2).
+bool add_polygon_run(const VertexCorners& m, uint32_t corner, int direction, uint32_t v, const uint32_t* q,
+                     VertexPrediction* c) {
+  const uint32_t p1 = m.along(corner, direction), p2 = m.along(corner, 2 * direction),
+                 p3 = m.along(corner, 3 * direction);
+  if (p1 >= v || p2 >= v || p3 >= v || c->candidates >= kMaxCandidates) return false;
+  add_candidate(c, kWeightPolygon, q, p3, p1, p2, polygon_coefficient(m.degree(corner)));
+  return true;
+}
+
+// 14.3.1, strip across an edge: the polygon over the edge (p1, p2)
+// continued to v, 2 p1 - y, y being p1's other neighbour in that polygon.
+void add_strip(const VertexCorners& m, uint32_t corner, int direction, uint32_t v, const uint32_t* q,
+               VertexPrediction* c) {
+  const uint32_t p1 = m.along(corner, direction), p2 = m.along(corner, 2 * direction);
+  if (p1 >= v || p2 >= v || p1 == p2) return;
+  search_across(m, p1, p2, false, corner, c, [&](uint32_t k) {
+    const uint32_t y = m.along(k, 1) == p2 ? m.along(k, -1) : m.along(k, 1);
+    if (y < v && y != p1 && y != p2) add_candidate(c, kWeightStrip, q, p1, p1, y, kOne);
+  });
+}
+
+}  // namespace
+
+void VertexCorners::build(uint32_t vertex_count, const std::vector<uint32_t>& face_sizes,
+                          const std::vector<uint32_t>& corners) {
+  corners_ = &corners;
+    face_start_.assign(face_sizes.size() + 1, 0);
+    face_of_.resize(corners.size());
+    next_.resize(corners.size());
+    previous_.resize(corners.size());
+    for (size_t f = 0; f < face_sizes.size(); ++f) {
+      const uint32_t start = face_start_[f], end = start + face_sizes[f];
+      face_start_[f + 1] = end;
+      for (uint32_t k = start; k < end; ++k) {
+        face_of_[k] = uint32_t(f);
+        next_[k] = k + 1 < end ? k + 1 : start;
+        previous_[k] = k > start ? k - 1 : end - 1;
+      }
+    }
+    first_.assign(size_t(vertex_count) + 1, 0);
+    for (uint32_t v : corners) ++first_[v + 1];
+    for (size_t v = 0; v < vertex_count; ++v) first_[v + 1] += first_[v];
+    corner_of_.resize(corners.size());
+    std::vector<uint32_t> next(first_.begin(), first_.end() - 1);
+    for (uint32_t k = 0; k < corners.size(); ++k) corner_of_[next[corners[k]]++] = k;
+    build_links(true, &triangle_link_first_, &triangle_links_);
+    build_links(false, &polygon_link_first_, &polygon_links_);
+}
+
+// Each corner k of u links u to the vertices the searches of 14.3.1 look
+// for next to it: along(k, +1), and along(k, +2) for a triangle or
+// along(k, -1) for a larger face, the second only when it differs.
+void VertexCorners::build_links(bool triangles, std::vector<uint32_t>* first, std::vector<Link>* links) const {
+  const uint32_t n = vertex_count();
+  first->assign(size_t(n) + 1, 0);
+  links->clear();
+  for (uint32_t u = 0; u < n; ++u) {
+    for (const uint32_t* k = begin(u); k != end(u); ++k) {
+      if ((degree(*k) == 3) != triangles) continue;
+      const uint32_t w1 = along(*k, 1), w2 = along(*k, triangles ? 2 : -1);
+      links->push_back({w1, *k});
+      if (w2 != w1) links->push_back({w2, *k});
+    }
+    (*first)[u + 1] = uint32_t(links->size());
+    std::sort(links->begin() + (*first)[u], links->end(), [](const Link& x, const Link& y) {
+      return x.neighbour != y.neighbour ? x.neighbour < y.neighbour : x.corner < y.corner;
+    });
+  }
+}
+
+void VertexCorners::links(uint32_t u, uint32_t w, bool triangles, const Link** begin, const Link** end) const {
+  const std::vector<uint32_t>& first = triangles ? triangle_link_first_ : polygon_link_first_;
+  const Link* all = (triangles ? triangle_links_ : polygon_links_).data();
+  *begin = std::lower_bound(all + first[u], all + first[u + 1], w,
+                            [](const Link& link, uint32_t value) { return link.neighbour < value; });
+  *end = std::upper_bound(*begin, all + first[u + 1], w,
+                          [](uint32_t value, const Link& link) { return value < link.neighbour; });
+}
+
+
+namespace {
+
+// 14.3.1: the candidates one corner of v contributes.
+void add_corner_candidates(const VertexCorners& m, uint32_t corner, uint32_t v, const uint32_t* q,
+                           VertexPrediction* c) {
+  if (m.degree(corner) == 3) return add_parallelograms(m, corner, v, q, c);
+  bool run = add_polygon_run(m, corner, -1, v, q, c);
+  if (m.degree(corner) > 4) run = add_polygon_run(m, corner, +1, v, q, c) || run;
+  if (run) return;
+  add_strip(m, corner, -1, v, q, c);
+  add_strip(m, corner, +1, v, q, c);
+}
+
+uint32_t residual_sum(const int32_t* r) {
+  uint32_t sum = 0;
+  for (int a = 0; a < 3; ++a) sum += uint32_t(r[a] < 0 ? -int64_t(r[a]) : r[a]);
+  return sum;
+}
+
+}  // namespace
+
+void predict_vertex(const VertexCorners& m, uint32_t v, const uint32_t* q, const int32_t* residual,
+                    const uint32_t top[3], VertexPrediction* out) {
+  out->candidates = 0;
+  out->scale = 0;
+  int64_t neighbour_sum[3] = {0, 0, 0};
+  int64_t neighbours = 0;
+  uint64_t activity = 0;
+  for (const uint32_t* corner = m.begin(v); corner != m.end(v); ++corner) {
+    for (int side = -1; side <= 1; side += 2) {  // 14.3.2: decoded neighbours along face edges
+      const uint32_t u = m.along(*corner, side);
+      if (u >= v) continue;
+      for (int a = 0; a < 3; ++a) neighbour_sum[a] += q[3 * size_t(u) + a];
+      activity += residual_sum(&residual[3 * size_t(u)]);
+      ++neighbours;
+    }
+    add_corner_candidates(m, *corner, v, q, out);
+  }
+  if (out->candidates > 0) out->scale /= uint64_t(out->candidates);
+  // 14.3.2: the fallback and the activity of 14.4.
+  for (int a = 0; a < 3; ++a) {
+    int64_t p = v > 0 ? int64_t(q[3 * size_t(v - 1) + a]) : int64_t(top[a] >> 1);
+    if (neighbours > 0) p = floor_div(2 * neighbour_sum[a] + neighbours, 2 * neighbours);
+    out->fallback[a] = std::clamp<int64_t>(p, 0, top[a]);
+  }
+  out->fallback_kind = neighbours > 0 ? PredictionKind::kNeighbours : PredictionKind::kPrevious;
+  if (neighbours > 0)
+    out->neighbour_activity = activity / uint64_t(neighbours);
+  else
+    out->neighbour_activity = v > 0 ? residual_sum(&residual[3 * size_t(v - 1)]) : 0;
+}
+
+void select_candidates(VertexPrediction* p, unsigned mask, const uint32_t top[3]) {
+  int64_t sum[3] = {0, 0, 0}, weight = 0;
+  int used = 0;
+  for (int i = 0; i < p->candidates; ++i) {
+    if (!(mask >> i & 1)) continue;
+    for (int a = 0; a < 3; ++a) sum[a] += p->weight[i] * p->candidate[i][a];
+    weight += p->weight[i];
+    ++used;
+  }
+  if (used == 0) {
+    for (int a = 0; a < 3; ++a) p->value[a] = p->fallback[a];
+    p->kind = p->fallback_kind;
+    return;
+  }
+  for (int a = 0; a < 3; ++a)
+    p->value[a] = std::clamp<int64_t>(floor_div(2 * sum[a] + weight * kOne, 2 * weight * kOne), 0, top[a]);
+  p->kind = used > 1 ? PredictionKind::kSeveral : PredictionKind::kSingle;
+}
+
+}  // namespace qmc

@@ -1,0 +1,112 @@
+// Prediction of a vertex's quantized position from the vertices decoded
+// before it (spec/qmc-format.md section 14.3), shared by the encoder and
+// the decoder so the two cannot drift apart.
+//
+// Vertices are visited in label order, the order in which the connectivity
+// decoder first meets them; a vertex u is decoded before v when u < v. The
+// rules, all in integers:
+//  - across an edge of a triangle, the parallelogram a + b - c (Touma and
+//    Gotsman, "Triangle mesh compression", 1998), every one available being
+//    averaged (multi-parallelogram);
+//  - within a polygon of degree k >= 4, the three vertices preceding (or
+//    following) v along the face: p3 + c_k (p1 - p2), exact on a regular
+//    k-gon and the parallelogram for k = 4 (Isenburg and Alliez, "Compressing
+//    polygon mesh geometry with parallelogram prediction", 2002; Isenburg,
+//    Ivrissimtzis, Gumhold and Seidel, "Geometry prediction for high degree
+//    polygons", 2005);
+//  - across an edge (p1, p2) of a polygon whose neighbour across it is a
+//    polygon too, the extrapolation 2 p1 - y of the strip (y: p1's other
+//    neighbour in that polygon);
+//  - otherwise the mean of the decoded neighbours along face edges, else
+//    the previous vertex.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace qmc {
+
+// Section 14.3.1: the faces of CONN (degree >= 3 each, corners concatenated)
+// with, per vertex, the corners at which it appears, in face order, and
+// its face-edge neighbours by neighbour.
+class VertexCorners {
+ public:
+  // Labels must be < vertex_count. Allocates (the API boundary catches
+  // allocation failure, spec 8.1 bounds the sizes).
+  void build(uint32_t vertex_count, const std::vector<uint32_t>& face_sizes, const std::vector<uint32_t>& corners);
+
+  uint32_t vertex_count() const { return uint32_t(first_.size() - 1); }
+  const uint32_t* begin(uint32_t v) const { return corner_of_.data() + first_[v]; }
+  const uint32_t* end(uint32_t v) const { return corner_of_.data() + first_[v + 1]; }
+  // Face of a corner, its degree, and the vertex `step` corners further
+  // along the face's cycle (|step| <= 3 in spec 14.3, either sign).
+  uint32_t face(uint32_t corner) const { return face_of_[corner]; }
+  uint32_t degree(uint32_t corner) const { return face_start_[face_of_[corner] + 1] - face_start_[face_of_[corner]]; }
+  uint32_t along(uint32_t corner, int step) const {
+    for (; step > 0; --step) corner = next_[corner];
+    for (; step < 0; ++step) corner = previous_[corner];
+    return (*corners_)[corner];
+  }
+
+  // A face-edge neighbour w of a vertex u and the corner of u it is next to.
+  struct Link {
+    uint32_t neighbour, corner;
+  };
+  // The corners of u, in order, of triangles (triangles = true) or of larger
+  // faces whose face has w next to u: the searches of spec 14.3.1 in
+  // O(log degree), whatever the valence.
+  void links(uint32_t u, uint32_t w, bool triangles, const Link** begin, const Link** end) const;
+
+ private:
+  void build_links(bool triangles, std::vector<uint32_t>* first, std::vector<Link>* links) const;
+
+  std::vector<uint32_t> triangle_link_first_, polygon_link_first_;  // per vertex; one more at the end
+  std::vector<Link> triangle_links_, polygon_links_;  // per vertex, sorted by neighbour then corner
+  const std::vector<uint32_t>* corners_ = nullptr;
+  std::vector<uint32_t> next_, previous_;  // per corner, the next and previous corner of its face
+  std::vector<uint32_t> face_start_;  // per face, its first corner; one more at the end
+  std::vector<uint32_t> face_of_;     // per corner
+  std::vector<uint32_t> first_;       // per vertex, its first entry in corner_of_; one more at the end
+  std::vector<uint32_t> corner_of_;   // corners grouped by vertex, face order within a vertex
+};
+
+// Section 14.3.2: what a prediction was made from, which selects the
+// residuals' context (14.4).
+enum class PredictionKind : uint8_t {
+  kPrevious = 0,    // no decoded neighbour: the previous vertex (or the grid's centre)
+  kNeighbours = 1,  // the mean of decoded neighbours
+  kSingle = 2,      // one parallelogram, polygon or strip rule
+  kSeveral = 3,     // the weighted mean of two or more
+};
+inline constexpr int kPredictionKinds = 4;
+
+// 14.3.3: the most candidates a vertex takes; a file selects a subset of
+// them per vertex (14.3.4).
+inline constexpr int kMaxCandidates = 4;
+
+struct VertexPrediction {
+  // The candidates in enumeration order, in units of 2^-16, and their weights.
+  int candidates = 0;
+  int64_t candidate[kMaxCandidates][3];
+  int64_t weight[kMaxCandidates];
+  // Without candidates: the mean of the decoded neighbours, else the previous vertex.
+  int64_t fallback[3];
+  PredictionKind fallback_kind = PredictionKind::kPrevious;
+  uint64_t neighbour_activity = 0;  // 14.4: mean residual magnitude of decoded neighbours
+  uint64_t scale = 0;  // mean L1 length of the candidates' difference vectors
+  // The prediction of the selected subset (select_candidates), clamped to 0..top[a].
+  PredictionKind kind = PredictionKind::kPrevious;
+  int64_t value[3] = {0, 0, 0};
+};
+
+// Finds the candidates and the fallback of vertex v from q (3 per vertex,
+// labels < v decoded) and the signed
+// residuals of the decoded vertices (3 per vertex). Selects nothing yet.
+void predict_vertex(const VertexCorners& mesh, uint32_t v, const uint32_t* q, const int32_t* residual,
+                    const uint32_t top[3], VertexPrediction* out);
+
+// 14.3.4: the prediction from the candidates whose bit is set in mask (the
+// weighted mean), or the fallback if none is.
+void select_candidates(VertexPrediction* p, unsigned mask, const uint32_t top[3]);
+
+}  // namespace qmc

@@ -1,0 +1,276 @@
+// POSN method 1 (spec section 14): the prediction rules on the spec's own
+// example and on shapes they are exact for, the mask decisions, the grids
+// users can state, and round trips through encode and decode.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "bitio/position_coding.h"
+#include "bitio/range_coder.h"
+#include "bitio/vertex_prediction.h"
+#include "encoder/position_encoder.h"
+#include "mesh_generators.h"
+#include "qmc/decoder.h"
+#include "qmc/encoder.h"
+#include "roundtrip_check.h"
+
+namespace qmc {
+namespace {
+
+constexpr int64_t kOne = 65536;
+const uint32_t kTop[3] = {4095, 4095, 4095};
+
+VertexPrediction predict(const Mesh& faces, uint32_t v, const std::vector<uint32_t>& q,
+                         const std::vector<int32_t>& residual) {
+  VertexCorners corners;
+  corners.build(uint32_t(q.size() / 3), faces.face_sizes, faces.corners);
+  VertexPrediction p;
+  predict_vertex(corners, v, q.data(), residual.data(), kTop, &p);
+  return p;
+}
+
+Mesh faces(std::vector<uint32_t> sizes, std::vector<uint32_t> corners) {
+  Mesh m;
+  m.face_sizes = std::move(sizes);
+  m.corners = std::move(corners);
+  return m;
+}
+
+// Spec 14.3.4, step by step.
+TEST(PredictedPositions, SpecWorkedExample) {
+  const Mesh two = faces({3, 3}, {0, 1, 2, 2, 1, 3});
+  const std::vector<uint32_t> q = {10, 10, 5, 20, 10, 5, 15, 20, 5, 0, 0, 0};
+  const std::vector<int32_t> r = {0, 0, 0, 3, -1, 0, 0, 2, 2, 0, 0, 0};
+  VertexPrediction p = predict(two, 3, q, r);
+  ASSERT_EQ(p.candidates, 1);
+  EXPECT_EQ(p.candidate[0][0], 25 * kOne);
+  EXPECT_EQ(p.candidate[0][1], 20 * kOne);
+  EXPECT_EQ(p.candidate[0][2], 5 * kOne);
+  EXPECT_EQ(p.scale, 10u);
+  EXPECT_EQ(p.fallback[0], 18);  // (20 + 15) / 2 rounded half up
+  EXPECT_EQ(p.fallback[1], 15);
+  EXPECT_EQ(p.fallback[2], 5);
+  EXPECT_EQ(p.neighbour_activity, 4u);
+  select_candidates(&p, 1, kTop);
+  EXPECT_EQ(p.kind, PredictionKind::kSingle);
+  EXPECT_EQ(p.value[0], 25);
+  EXPECT_EQ(p.value[1], 20);
+  EXPECT_EQ(p.value[2], 5);
+}
+
+// Without decoded neighbours: the previous vertex, and for vertex 0 the
+// middle of the grid (14.3.2).
+TEST(PredictedPositions, FallbackWithoutNeighbours) {
+  const Mesh none;
+  const std::vector<uint32_t> q = {7, 8, 9, 0, 0, 0};
+  const std::vector<int32_t> r = {1, -2, 3, 0, 0, 0};
+  VertexPrediction first = predict(none, 0, q, r);
+  select_candidates(&first, 0, kTop);
+  EXPECT_EQ(first.kind, PredictionKind::kPrevious);
+  EXPECT_EQ(first.value[0], 2047);
+  VertexPrediction second = predict(none, 1, q, r);
+  select_candidates(&second, 0, kTop);
+  EXPECT_EQ(second.value[0], 7);
+  EXPECT_EQ(second.value[2], 9);
+  EXPECT_EQ(second.neighbour_activity, 6u);  // |r| of vertex 0
+}
+
+// 14.3.1: the backward run of a quad is the parallelogram, exact on one.
+TEST(PredictedPositions, QuadRunIsExactOnAParallelogram) {
+  const Mesh quad = faces({4}, {0, 1, 2, 3});
+  const std::vector<uint32_t> q = {100, 100, 50, 300, 120, 60, 350, 400, 90, 0, 0, 0};
+  VertexPrediction p = predict(quad, 3, q, std::vector<int32_t>(12, 0));
+  ASSERT_EQ(p.candidates, 1);  // d = 4: no forward run
+  EXPECT_EQ(p.weight[0], 2);
+  select_candidates(&p, 1, kTop);
+  EXPECT_EQ(p.value[0], 100 + 350 - 300);
+  EXPECT_EQ(p.value[1], 100 + 400 - 120);
+  EXPECT_EQ(p.value[2], 50 + 90 - 60);
+}
+
+// 14.3.1: c_5 makes the run exact (to rounding) on a regular pentagon.
+TEST(PredictedPositions, PentagonRunFollowsARegularPentagon) {
+  const Mesh pentagon = faces({5}, {0, 1, 2, 3, 4});
+  std::vector<uint32_t> q;
+  for (int k = 0; k < 5; ++k) {
+    const double angle = 2 * M_PI * k / 5;
+    q.insert(q.end(), {uint32_t(std::lround(2000 + 1000 * std::cos(angle))),
+                       uint32_t(std::lround(2000 + 1000 * std::sin(angle))), 7});
+  }
+  VertexPrediction p = predict(pentagon, 4, q, std::vector<int32_t>(15, 0));
+  ASSERT_EQ(p.candidates, 2);  // backward (3, 2, 1) and forward (0, 1, 2), both decoded
+  for (unsigned mask : {1u, 2u, 3u}) {
+    select_candidates(&p, mask, kTop);
+    EXPECT_NEAR(double(p.value[0]), double(q[12]), 3.0) << mask;
+    EXPECT_NEAR(double(p.value[1]), double(q[13]), 3.0) << mask;
+    EXPECT_EQ(p.value[2], 7);
+  }
+}
+
+// 14.3.1: a quad strip continued across the edge (p1, p2): 2 p1 - y.
+TEST(PredictedPositions, StripContinuesAcrossAnEdge) {
+  // Quad 0 = (0, 1, 2, 3) below, quad 1 = (0, 4, 5, 1) above, on a grid:
+  //   4 5      y = 110
+  //   0 1      y = 100
+  //   3 2      y = 90
+  const Mesh strip = faces({4, 4}, {0, 1, 2, 3, 0, 4, 5, 1});
+  const std::vector<uint32_t> q = {100, 100, 0, 110, 100, 0, 110, 90, 0, 100, 90, 0, 0, 0, 0, 0, 0, 0};
+  VertexPrediction p = predict(strip, 4, q, std::vector<int32_t>(18, 0));
+  ASSERT_EQ(p.candidates, 1);  // along -1 is 0, along -2 is 1: the strip over quad 0 gives 2 q0 - q3
+  select_candidates(&p, 1, kTop);
+  EXPECT_EQ(p.value[0], 100);
+  EXPECT_EQ(p.value[1], 110);
+}
+
+// 14.2: at most 8 corners are examined per search. Degenerate triangles
+// (0, 1, 0) use them up before the triangle (0, 1, 2) across which vertex
+// 3's parallelogram lies.
+TEST(PredictedPositions, SearchExaminesAtMostEightCorners) {
+  for (int degenerate : {7, 8}) {
+    Mesh m;
+    for (int i = 0; i < degenerate; ++i) {
+      m.face_sizes.push_back(3);
+      m.corners.insert(m.corners.end(), {0, 1, 0});
+    }
+    m.face_sizes.insert(m.face_sizes.end(), {3, 3});
+    m.corners.insert(m.corners.end(), {0, 1, 2, 1, 0, 3});
+    const std::vector<uint32_t> q = {0, 0, 0, 100, 0, 0, 50, 100, 0, 0, 0, 0};
+    const VertexPrediction p = predict(m, 3, q, std::vector<int32_t>(12, 0));
+    EXPECT_EQ(p.candidates, degenerate == 7 ? 1 : 0) << degenerate << " degenerate faces";
+  }
+}
+
+// 14.4: the mask decisions round trip, the last bit implied when no other is set.
+TEST(PredictedPositions, CandidateMaskDecisions) {
+  PositionResidualModel encoder_model, decoder_model;
+  RangeEncoder enc;
+  const int counts[] = {2, 3, 4, 4, 2, 1, 0};
+  const unsigned masks[] = {2, 5, 8, 15, 1, 1, 0};
+  for (int i = 0; i < 7; ++i) EXPECT_EQ(code_candidate_mask(&enc, &encoder_model, counts[i], masks[i]), masks[i]);
+  const std::vector<uint8_t> bytes = enc.finish();
+  RangeDecoder dec(bytes.data(), bytes.size());
+  for (int i = 0; i < 7; ++i) EXPECT_EQ(code_candidate_mask(&dec, &decoder_model, counts[i], 0), masks[i]) << i;
+  EXPECT_EQ(dec.unread(), 0u);
+  EXPECT_FALSE(dec.overrun());
+}
+
+std::vector<uint8_t> encode_with(const Mesh& mesh, const EncodeOptions& options, EncodeStats* stats = nullptr) {
+  std::vector<uint8_t> out;
+  const Status s = encode(mesh, options, &out, stats);
+  EXPECT_TRUE(s.ok()) << s.to_string();
+  return out;
+}
+
+DecodedFile decode_all(const std::vector<uint8_t>& bytes) {
+  DecodedFile file;
+  const Status s = decode(bytes.data(), bytes.size(), &file);
+  EXPECT_TRUE(s.ok()) << s.to_string();
+  return file;
+}
+
+// Round trips of generated meshes of every kind the predictor meets.
+TEST(PredictedPositions, RoundTripsGeneratedMeshes) {
+  std::vector<Mesh> meshes = {tools::make_quad_sphere(6), tools::make_torus(20, 9), tools::make_prism(9),
+                              tools::triangulated(tools::make_refined_sphere(3)),
+                              tools::make_deltoidal_hexecontahedron()};
+  for (uint64_t seed = 1; seed <= 40; ++seed) {
+    tools::RandomSoupOptions o;
+    o.vertices = 50 + uint32_t(seed * 7);
+    o.faces = 40 + uint32_t(seed * 5);
+    meshes.push_back(tools::make_random_soup(seed, o));
+  }
+  meshes.push_back(tools::make_scrambled(tools::make_torus(8, 6), 3));
+  for (size_t i = 0; i < meshes.size(); ++i)
+    for (int bits : {4, 12, 20}) {
+      EncodeOptions options;
+      options.position_bits = bits;
+      options.position_method = PositionMethod::kPredicted;
+      EncodeStats stats;
+      const DecodedFile file = decode_all(encode_with(meshes[i], options, &stats));
+      EXPECT_EQ(stats.positions.method, 1);
+      EXPECT_EQ(file.version_minor, 5);
+      const tools::RoundTripReport r = tools::check_round_trip(meshes[i], file);
+      EXPECT_TRUE(r.faces_equal) << "mesh " << i << ": " << r.face_mismatch;
+      EXPECT_TRUE(r.positions_within_bound) << "mesh " << i << " at " << bits << " bits: " << r.position_mismatch;
+    }
+}
+
+// On the per-axis grid both methods carry the same integers: identical output.
+TEST(PredictedPositions, PerAxisGridGivesMethodZerosPositions) {
+  const Mesh torus = tools::make_torus(12, 7, 2.f, 0.3f);
+  EncodeOptions options;
+  options.position_grid = PositionGrid::kPerAxis;
+  options.position_method = PositionMethod::kDeltas;
+  const DecodedFile deltas = decode_all(encode_with(torus, options));
+  options.position_method = PositionMethod::kPredicted;
+  const DecodedFile predicted = decode_all(encode_with(torus, options));
+  EXPECT_EQ(deltas.quantization.method, 0);
+  EXPECT_EQ(predicted.quantization.method, 1);
+  EXPECT_EQ(deltas.quantized, predicted.quantized);
+  EXPECT_EQ(deltas.mesh.positions, predicted.mesh.positions);
+}
+
+// The uniform grid is Draco's: the largest side in 2^bits - 1 steps.
+TEST(PredictedPositions, UniformGridStep) {
+  const Mesh torus = tools::make_torus(12, 7, 2.f, 0.3f);  // sides 4.6, 4.6, 0.6
+  EncodeOptions options;
+  options.position_bits = 10;
+  EncodeStats stats;
+  const DecodedFile file = decode_all(encode_with(torus, options, &stats));
+  const double side = double(file.quantization.max[0]) - double(file.quantization.min[0]);
+  EXPECT_DOUBLE_EQ(file.quantization.step[0], file.quantization.step[2]);
+  EXPECT_NEAR(file.quantization.step[0], side / 1023, 1e-9);
+  EXPECT_EQ(file.quantization.top[0], 1023u);
+  EXPECT_LT(file.quantization.top[2], 200u);
+}
+
+// --step and --max-error (14.1): the step asked for, the error promised.
+TEST(PredictedPositions, StepAndMaxErrorOptions) {
+  const Mesh sphere = tools::triangulated(tools::make_refined_sphere(3));
+  EncodeOptions by_step;
+  by_step.position_step = 0.004;
+  const DecodedFile stepped = decode_all(encode_with(sphere, by_step));
+  EXPECT_EQ(stepped.quantization.step[0], 0.004);
+  for (double e : {0.01, 0.001, 1e-5}) {
+    EncodeOptions by_error;
+    by_error.max_position_error = e;
+    const DecodedFile file = decode_all(encode_with(sphere, by_error));
+    const tools::RoundTripReport r = tools::check_round_trip(sphere, file);
+    EXPECT_TRUE(r.positions_within_bound);
+    EXPECT_LE(r.max_error, e) << e;
+    EXPECT_GT(r.max_error, e / 4) << "a grid much finer than asked for: " << e;
+  }
+}
+
+TEST(PredictedPositions, OptionsTheFormatCannotCarry) {
+  const Mesh cube = tools::make_cube();
+  std::vector<uint8_t> out;
+  EncodeOptions tiny;
+  tiny.position_step = 1e-12;  // 2^40 steps across the cube
+  EXPECT_EQ(encode(cube, tiny, &out).code(), ErrorCode::kInvalidArgument);
+  EncodeOptions deltas_on_uniform;
+  deltas_on_uniform.position_method = PositionMethod::kDeltas;
+  EXPECT_EQ(encode(cube, deltas_on_uniform, &out).code(), ErrorCode::kInvalidArgument);
+  EncodeOptions both;
+  both.position_step = 0.1;
+  both.max_position_error = 0.1;
+  EXPECT_EQ(encode(cube, both, &out).code(), ErrorCode::kInvalidArgument);
+  EncodeOptions below_float;
+  below_float.max_position_error = 1e-30;
+  EXPECT_EQ(encode(cube, below_float, &out).code(), ErrorCode::kInvalidArgument);
+}
+
+// 14.1's bound: vertices that cost no decision go to method 0, same output.
+TEST(PredictedPositions, CoincidentVerticesFallBackToMethodZero) {
+  Mesh points;
+  for (int i = 0; i < 6000; ++i) points.positions.insert(points.positions.end(), {1.5f, -2.f, 0.25f});
+  EncodeStats stats;
+  const DecodedFile file = decode_all(encode_with(points, EncodeOptions{}, &stats));
+  EXPECT_EQ(stats.positions.method, 0);
+  ASSERT_EQ(file.mesh.vertex_count(), 6000u);
+  EXPECT_EQ(file.mesh.positions[0], 1.5f);
+  EXPECT_EQ(file.mesh.positions[3 * 5999 + 1], -2.f);
+}
+
+}  // namespace
+}  // namespace qmc
