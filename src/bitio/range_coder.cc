@@ -51,30 +51,4 @@ RangeDecoder::RangeDecoder(const uint8_t* data, size_t size) : data_(data), size
   bad_start_ = code_ == 0xFFFFFFFFu;
 }
 
-uint8_t RangeDecoder::next_byte() {
-  if (consumed_ < size_) return data_[consumed_++];
-  ++consumed_;
-  ++invented_;
-  return 0;
-}
-
-int RangeDecoder::decode(uint32_t prob) {
-  decided_ = true;
-  const uint32_t bound = (range_ >> kRangeProbabilityBits) * prob;
-  int bit;
-  if (code_ < bound) {
-    range_ = bound;
-    bit = 0;
-  } else {
-    code_ -= bound;
-    range_ -= bound;
-    bit = 1;
-  }
-  while (range_ < kRangeTop) {
-    range_ <<= 8;
-    code_ = (code_ << 8) | next_byte();
-  }
-  return bit;
-}
-
 }  // namespace qmc

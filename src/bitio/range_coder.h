@@ -81,8 +81,31 @@ class RangeDecoder {
   uint64_t invented() const { return invented_; }
 
  private:
-  int decode(uint32_t prob);
-  uint8_t next_byte();
+  // Section 13.5.2's decode(p); inline, as it runs once per decision.
+  int decode(uint32_t prob) {
+    decided_ = true;
+    const uint32_t bound = (range_ >> kRangeProbabilityBits) * prob;
+    int bit;
+    if (code_ < bound) {
+      range_ = bound;
+      bit = 0;
+    } else {
+      code_ -= bound;
+      range_ -= bound;
+      bit = 1;
+    }
+    while (range_ < kRangeTop) {
+      range_ <<= 8;
+      code_ = (code_ << 8) | next_byte();
+    }
+    return bit;
+  }
+  uint8_t next_byte() {
+    if (consumed_ < size_) return data_[consumed_++];
+    ++consumed_;
+    ++invented_;
+    return 0;
+  }
 
   const uint8_t* data_;
   size_t size_;

@@ -46,11 +46,12 @@ constexpr int kMaxExamined = 8;
 template <class Rule>
 void search_across(const VertexCorners& m, uint32_t u, uint32_t w, bool triangles, uint32_t corner,
                    const VertexPrediction* c, Rule rule) {
-  const VertexCorners::Link *link, *end;
-  m.links(u, w, triangles, &link, &end);
-  for (int examined = 0; link != end && examined < kMaxExamined && c->candidates < kMaxCandidates;
-       ++link, ++examined)
-    if (m.face(link->corner) != m.face(corner)) rule(link->corner);
+  int examined = 0;
+  m.for_each_link(u, w, triangles, [&](uint32_t k) {
+    if (c->candidates >= kMaxCandidates) return false;
+    if (m.face(k) != m.face(corner)) rule(k);
+    return ++examined < kMaxExamined;
+  });
 }
 
 // 14.3.1, across-edge parallelogram: the triangles over the edge (a, b)
@@ -130,20 +131,13 @@ void VertexCorners::build_links(bool triangles, std::vector<uint32_t>* first, st
       if (w2 != w1) links->push_back({w2, *k});
     }
     (*first)[u + 1] = uint32_t(links->size());
-    std::sort(links->begin() + (*first)[u], links->end(), [](const Link& x, const Link& y) {
-      return x.neighbour != y.neighbour ? x.neighbour < y.neighbour : x.corner < y.corner;
-    });
+    if ((*first)[u + 1] - (*first)[u] > uint32_t(kScannedLinks))
+      std::sort(links->begin() + (*first)[u], links->end(), [](const Link& x, const Link& y) {
+        return x.neighbour != y.neighbour ? x.neighbour < y.neighbour : x.corner < y.corner;
+      });
   }
 }
 
-void VertexCorners::links(uint32_t u, uint32_t w, bool triangles, const Link** begin, const Link** end) const {
-  const std::vector<uint32_t>& first = triangles ? triangle_link_first_ : polygon_link_first_;
-  const Link* all = (triangles ? triangle_links_ : polygon_links_).data();
-  *begin = std::lower_bound(all + first[u], all + first[u + 1], w,
-                            [](const Link& link, uint32_t value) { return link.neighbour < value; });
-  *end = std::upper_bound(*begin, all + first[u + 1], w,
-                          [](uint32_t value, const Link& link) { return value < link.neighbour; });
-}
 
 
 namespace {

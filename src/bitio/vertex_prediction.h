@@ -21,6 +21,7 @@
 //    the previous vertex.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -52,16 +53,30 @@ class VertexCorners {
   struct Link {
     uint32_t neighbour, corner;
   };
-  // The corners of u, in order, of triangles (triangles = true) or of larger
-  // faces whose face has w next to u: the searches of spec 14.3.1 in
-  // O(log degree), whatever the valence.
-  void links(uint32_t u, uint32_t w, bool triangles, const Link** begin, const Link** end) const;
+  // Calls visit(corner) for the corners of u, in order, of triangles
+  // (triangles = true) or of larger faces, that have w next to u, until
+  // visit returns false: the searches of spec 14.2. A vertex's few links are
+  // scanned; many are sorted by neighbour once and searched in O(log n).
+  template <class Visit>
+  void for_each_link(uint32_t u, uint32_t w, bool triangles, Visit visit) const {
+    const std::vector<uint32_t>& first = triangles ? triangle_link_first_ : polygon_link_first_;
+    const Link* begin = (triangles ? triangle_links_ : polygon_links_).data() + first[u];
+    const Link* end = (triangles ? triangle_links_ : polygon_links_).data() + first[u + 1];
+    if (end - begin > kScannedLinks) {
+      begin = std::lower_bound(begin, end, w, [](const Link& link, uint32_t value) { return link.neighbour < value; });
+      end = std::upper_bound(begin, end, w, [](uint32_t value, const Link& link) { return value < link.neighbour; });
+    }
+    for (const Link* link = begin; link != end; ++link)
+      if (link->neighbour == w && !visit(link->corner)) return;
+  }
 
  private:
+  static constexpr int kScannedLinks = 16;  // more links than this are sorted
   void build_links(bool triangles, std::vector<uint32_t>* first, std::vector<Link>* links) const;
 
   std::vector<uint32_t> triangle_link_first_, polygon_link_first_;  // per vertex; one more at the end
-  std::vector<Link> triangle_links_, polygon_links_;  // per vertex, sorted by neighbour then corner
+  // Per vertex in corner order; above kScannedLinks sorted by neighbour, then corner.
+  std::vector<Link> triangle_links_, polygon_links_;
   const std::vector<uint32_t>* corners_ = nullptr;
   std::vector<uint32_t> next_, previous_;  // per corner, the next and previous corner of its face
   std::vector<uint32_t> face_start_;  // per face, its first corner; one more at the end
