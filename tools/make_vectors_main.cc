@@ -1421,15 +1421,38 @@ Mesh perturbed(Mesh mesh, uint64_t seed, float amount) {
 
 // Vertices a = 0, b = 1, t1 = 2, t2 = 3: `degenerate` faces (a, b, a), then
 // (a, b, t1) and (b, a, t2), the parallelogram of t2 across (a, b) being t1's.
-Mesh search_cap_mesh(int degenerate) {
+// With `own_face_first`, the triangle (t1, 4, 5) comes first, so that t1 is
+// labelled before t2, and then (b, a, t2), so that its own corner is the
+// first one 14.2's search for the edge examines.
+Mesh search_cap_mesh(int degenerate, bool own_face_first = false) {
   Mesh m;
-  m.positions = {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.5f, 1.f, 0.f, 0.5f, -1.f, 0.25f};
-  for (int i = 0; i < degenerate; ++i) {
+  m.positions = {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.5f, 1.f, 0.f, 0.5f, -1.f, 0.25f, 2.f, 2.f, 0.f, 2.f, 3.f, 1.f};
+  auto triangle = [&](uint32_t x, uint32_t y, uint32_t z) {
     m.face_sizes.push_back(3);
-    m.corners.insert(m.corners.end(), {0, 1, 0});
+    m.corners.insert(m.corners.end(), {x, y, z});
+  };
+  if (own_face_first) {
+    triangle(2, 4, 5);
+    triangle(1, 0, 3);
   }
-  m.face_sizes.insert(m.face_sizes.end(), {3, 3});
-  m.corners.insert(m.corners.end(), {0, 1, 2, 1, 0, 3});
+  for (int i = 0; i < degenerate; ++i) triangle(0, 1, 0);
+  triangle(0, 1, 2);
+  if (!own_face_first) triangle(1, 0, 3);
+  if (!own_face_first) m.positions.resize(12);
+  return m;
+}
+
+// Disjoint prisms with caps of 9 .. 16 corners: c_9 .. c_12 and beyond.
+Mesh large_polygon_prisms() {
+  Mesh m;
+  for (int n : {9, 10, 11, 12, 13, 16}) {
+    Mesh prism = perturbed(qmc::tools::make_prism(n), uint64_t(n), 0.01f);
+    const uint32_t first = uint32_t(m.vertex_count());
+    for (size_t i = 0; i < prism.positions.size(); ++i)
+      m.positions.push_back(prism.positions[i] + (i % 3 == 0 ? 3.f * float(n) : 0.f));
+    m.face_sizes.insert(m.face_sizes.end(), prism.face_sizes.begin(), prism.face_sizes.end());
+    for (uint32_t v : prism.corners) m.corners.push_back(first + v);
+  }
   return m;
 }
 
@@ -1462,6 +1485,14 @@ void write_predicted_position_valid(VectorWriter* w) {
   // across it and takes the fallback; examining more would find face 9.
   const Mesh capped = search_cap_mesh(9);
   w->valid("valid_posn1_search_cap", encode_predicted(capped, 12, qmc::ConnectivityChoice::kIndexed), &capped);
+  // Seven fill all but the 8th corner examined, which finds (a, b, t1);
+  // eight fill all 8; and with t2's own face first its corner is the 1st.
+  for (const auto& [name, mesh] : {std::pair{"valid_posn1_search_cap_eighth_examined", search_cap_mesh(7)},
+                                   std::pair{"valid_posn1_search_cap_ninth_not_examined", search_cap_mesh(8)},
+                                   std::pair{"valid_posn1_search_cap_own_face_counts", search_cap_mesh(7, true)}})
+    w->valid(name, encode_predicted(mesh, 12, qmc::ConnectivityChoice::kIndexed), &mesh);
+  const Mesh prisms = large_polygon_prisms();
+  w->valid("valid_posn1_large_polygons", encode_predicted(prisms, 14, qmc::ConnectivityChoice::kPolygon), &prisms);
 }
 
 void write_predicted_position_errors(VectorWriter* w) {
@@ -1508,6 +1539,13 @@ void write_predicted_position_errors(VectorWriter* w) {
   p.insert(p.end(), payload.begin() + tops + 2, payload.end());
   w->invalid("invalid_posn1_top_above_2_30", with_posn(p), ErrorCode::kBadChunkPayload);
   w->invalid("invalid_posn1_truncated_stream", with_posn({payload.begin(), payload.end() - 8}), ErrorCode::kTruncated);
+  // 14.4: the 5th invented byte and a value outside the grid come with the
+  // same residual (vertex 153, z); the end is checked first. Found by a
+  // decoder written from the spec alone, by random cuts.
+  Chunks quads = split_chunks(encode_predicted(perturbed(qmc::tools::make_torus(16, 10), 2, 0.005f), 14));
+  std::vector<uint8_t>& quad_posn = quads[find_chunk(quads, qmc::kChunkPositions)].payload;
+  quad_posn.resize(681);
+  w->invalid("invalid_posn1_truncated_before_bad_symbol", join_chunks(quads), ErrorCode::kTruncated);
   p = payload;
   p.insert(p.end(), {0x55, 0x55, 0x55, 0x55, 0x55, 0x55});
   w->invalid("invalid_posn1_bytes_after_stream", with_posn(p), ErrorCode::kBadChunkPayload);
