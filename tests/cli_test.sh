@@ -47,8 +47,24 @@ check compare-missing 3 "$qmc" compare "$work/torus.obj" "$work/nope.obj"
 check info 0 "$qmc" info "$work/torus.qmc"
 contains info-chunks "$work/out" "CONN"
 contains info-method "$work/out" "polygon coder (spec 5.4)"
+contains info-predicted "$work/out" "predicted (spec 14), uniform grid"
 check info-json 0 "$qmc" info --json "$work/torus.qmc"
 contains info-json-valid "$work/out" '"connectivity":"polygon"'
+# Spec 14.1's grids as a user states them.
+check encode-step 0 "$qmc" encode "$work/torus.obj" "$work/step.qmc" --step 0.01
+contains encode-step-reported "$work/out" "uniform grid, step 0.01;"
+check encode-max-error 0 "$qmc" encode "$work/torus.obj" "$work/err.qmc" --max-error 0.002
+max_error=$(sed -n 's/.*max error \([0-9.e+-]*\) .*/\1/p' "$work/out")
+if awk "BEGIN { exit !($max_error <= 0.002 && $max_error > 0.0002) }"; then passed=$((passed + 1)); else
+  failed=$((failed + 1)); echo "FAIL encode-max-error-kept: measured max error '$max_error' for --max-error 0.002"; fi
+check encode-per-axis-deltas 0 "$qmc" encode "$work/torus.obj" "$work/deltas.qmc" --grid per-axis --positions deltas
+contains encode-per-axis-deltas-reported "$work/out" "deltas (spec 6), per-axis grid"
+check info-deltas 0 "$qmc" info "$work/deltas.qmc"
+contains info-deltas-method "$work/out" "deltas (spec 6), 12 bits/axis"
+check deltas-need-per-axis 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --positions deltas
+check step-and-bits 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --step 0.01 --bits 10
+check bad-step 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --step -1
+check step-too-fine 3 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --step 1e-12
 check soup-encode 0 "$qmc" encode "$work/soup.off" "$work/soup.qmc" -q 16 --text note=soup --quiet
 check soup-verify 0 "$qmc" verify "$work/soup.off" "$work/soup.qmc"
 check verify-wrong-mesh 1 "$qmc" verify "$work/soup.off" "$work/torus.qmc"

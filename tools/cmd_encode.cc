@@ -1,6 +1,8 @@
 // qmc encode: compress, then decode in memory and report size and error.
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -26,7 +28,19 @@ const char kHelp[] =
     "options:\n"
     "  -q, --bits N        position quantization bits per axis, 1..30 (default 12:\n"
     "                      every vertex stays within 1/4096 of the largest\n"
-    "                      bounding-box side; see spec section 6.2)\n"
+    "                      bounding-box side; see spec sections 6.2, 14.1)\n"
+    "  --grid G            uniform (default): one step on every axis, the largest\n"
+    "                      bounding-box side / (2^bits - 1), as Draco and\n"
+    "                      meshoptimizer; per-axis: each axis over its own range\n"
+    "                      (spec 6.1)\n"
+    "  --step S            round positions to a uniform grid of step S (model\n"
+    "                      units) instead of --bits\n"
+    "  --max-error E       the coarsest uniform grid that keeps every vertex\n"
+    "                      within distance E (model units) of its input, binary32\n"
+    "                      rounding included; instead of --bits\n"
+    "  --positions M       auto (default): predicted positions (spec 14), or on\n"
+    "                      the per-axis grid the smaller of them and deltas;\n"
+    "                      predicted; deltas: spec 6's deltas (--grid per-axis)\n"
     "  --connectivity M    auto (default): the quad coder of seed 001 for closed\n"
     "                      genus-0 or one-boundary pure-quad manifold meshes, the\n"
     "                      polygon coder (spec 5.4) for every other mesh (the\n"
@@ -80,7 +94,7 @@ const CommandSpec kSpec{"encode",
                         {"--quiet", "--allow-empty", "--keep-order", "--progressive", "--topology-preserving",
                          "--gim-float", "--gim-quads", "--gim-store-blank", "--gim-normals"},
                         {{"--bits", "-q"}, {"--text"}, {"--connectivity"}, {"--levels"}, {"--gim"}, {"--sampling"},
-                         {"--roi"}},
+                         {"--roi"}, {"--grid"}, {"--step"}, {"--max-error"}, {"--positions"}},
                         2,
                         2};
 
@@ -119,6 +133,48 @@ int parse_gim(const CommandLine& cl, EncodeArgs* args) {
   return -1;
 }
 
+// A finite number > 0 in model units.
+bool parse_length(const std::string& text, double* out) {
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || errno != 0 || !std::isfinite(v) || !(v > 0)) return false;
+  *out = v;
+  return true;
+}
+
+// Sections 6 and 14: the grid and the POSN method; returns -1 when consistent.
+int parse_positions(const CommandLine& cl, EncodeArgs* args) {
+  EncodeOptions& o = args->options;
+  for (const auto& [name, value] : cl.options) {
+    if (name == "--grid") {
+      if (value == "uniform") o.position_grid = PositionGrid::kUniform;
+      else if (value == "per-axis") o.position_grid = PositionGrid::kPerAxis;
+      else return usage_error("encode", "--grid takes uniform or per-axis, got '" + value + "'");
+    } else if (name == "--step") {
+      if (!parse_length(value, &o.position_step))
+        return usage_error("encode", "--step takes a number > 0 in model units, got '" + value + "'");
+    } else if (name == "--max-error") {
+      if (!parse_length(value, &o.max_position_error))
+        return usage_error("encode", "--max-error takes a number > 0 in model units, got '" + value + "'");
+    } else if (name == "--positions") {
+      if (value == "auto") o.position_method = PositionMethod::kAuto;
+      else if (value == "deltas") o.position_method = PositionMethod::kDeltas;
+      else if (value == "predicted") o.position_method = PositionMethod::kPredicted;
+      else return usage_error("encode", "--positions takes auto, deltas or predicted, got '" + value + "'");
+    }
+  }
+  bool bits_or_grid = false;
+  for (const auto& option : cl.options)
+    bits_or_grid = bits_or_grid || option.first == "--bits" || option.first == "-q" || option.first == "--grid";
+  const int grids = int(bits_or_grid) + int(o.position_step > 0) + int(o.max_position_error > 0);
+  if (grids > 1) return usage_error("encode", "give one of --bits/--grid, --step or --max-error");
+  if (o.position_method == PositionMethod::kDeltas &&
+      (o.position_grid != PositionGrid::kPerAxis || o.position_step > 0 || o.max_position_error > 0))
+    return usage_error("encode", "--positions deltas (spec 6) carries only the grid of --grid per-axis");
+  return -1;
+}
+
 int parse(int argc, char** argv, EncodeArgs* args) {
   CommandLine cl;
   if (int rc = parse_command_line(kSpec, argc, argv, &cl); rc >= 0) return rc;
@@ -130,8 +186,10 @@ int parse(int argc, char** argv, EncodeArgs* args) {
   args->progressive = cl.has("--progressive");
   if (args->progressive) args->options.progressive_levels = 3;
   if (int rc = parse_gim(cl, args); rc >= 0) return rc;
+  if (int rc = parse_positions(cl, args); rc >= 0) return rc;
   for (const auto& [name, value] : cl.options) {
     if (name == "--gim" || name == "--sampling" || name == "--roi") continue;  // parse_gim
+    if (name == "--grid" || name == "--step" || name == "--max-error" || name == "--positions") continue;
     if (name == "--levels") {
       long levels = 0;
       if (!args->progressive) return usage_error("encode", "--levels needs --progressive");
@@ -209,8 +267,22 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
               args.output.c_str(), static_cast<unsigned long long>(stats.total_bytes),
               8.0 * double(stats.total_bytes) / v, double(input_bytes) / double(stats.total_bytes));
   const double side = check.max_bbox_side > 0 ? check.max_bbox_side : 1.0;
-  std::printf("positions   %d bits/axis; max error %.6g (%.3g of largest bbox side), rms %.6g\n",
-              args.options.position_bits, check.max_error, check.max_error / side, check.rms_error);
+  const PositionStats& ps = stats.positions;
+  std::printf("positions   %s, %s grid, step %.6g%s; bound %.6g, max error %.6g (%.3g of largest bbox side), "
+              "rms %.6g\n",
+              ps.method == 1 ? "predicted (spec 14)" : "deltas (spec 6)",
+              ps.step[0] == ps.step[1] && ps.step[1] == ps.step[2] ? "uniform" : "per-axis", ps.step[0],
+              ps.step[0] == ps.step[1] && ps.step[1] == ps.step[2] ? "" : " (x)", ps.error_bound, check.max_error,
+              check.max_error / side, check.rms_error);
+  if (ps.method == 1) {
+    static const char* const kKinds[4] = {"previous vertex", "neighbour mean", "one rule", "several rules"};
+    std::printf("             by prediction (spec 14.3):");
+    for (int k = 0; k < 4; ++k)
+      if (ps.vertices_by_kind[k])
+        std::printf(" %s %u vertices %.2f bits each;", kKinds[k], ps.vertices_by_kind[k],
+                    ps.bits_by_kind[k] / ps.vertices_by_kind[k]);
+    std::printf("\n");
+  }
 }
 
 void print_progressive_report(const EncodeArgs& args, const Mesh& input, const EncodeStats& stats,

@@ -1,10 +1,12 @@
 // qmc info: what a .qmc file holds and where its bytes go.
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <string>
 
 #include "cli_common.h"
 #include "commands.h"
+#include "encoder/position_encoder.h"
 #include "qmc/decoder.h"
 
 namespace qmc::cli {
@@ -40,6 +42,33 @@ std::string order_description(uint8_t flags) {
   return s + (*sep ? " reordered)" : "identity)");
 }
 
+// Section 14: the grid, its error bound, and what each prediction kind
+// costs as this encoder would code the decoded values (information content).
+void print_predicted_positions(const DecodedFile& f) {
+  const QuantizationInfo& q = f.quantization;
+  const bool uniform = q.step[0] == q.step[1] && q.step[1] == q.step[2];
+  const double bound = 0.5 * std::sqrt(q.step[0] * q.step[0] + q.step[1] * q.step[1] + q.step[2] * q.step[2]);
+  std::printf("positions    predicted (spec 14), %s grid, step %.9g", uniform ? "uniform" : "per-axis", q.step[0]);
+  if (!uniform) std::printf(" %.9g %.9g", q.step[1], q.step[2]);
+  std::printf(", tops %u %u %u, origin (%g %g %g); error bound %.6g\n", q.top[0], q.top[1], q.top[2], q.min[0],
+              q.min[1], q.min[2], bound);
+  if (f.order_restored || f.loop_level_count > 0) return;  // faces no longer in the coder's order
+  QuantizedPositions grid;
+  grid.min = q.min;
+  grid.step = q.step;
+  grid.top = q.top;
+  grid.q = f.quantized;
+  PositionStats stats;
+  const size_t payload = encode_predicted_positions(grid, f.mesh, &stats).size();
+  static const char* const kKinds[4] = {"previous vertex", "neighbour mean", "one rule", "several rules"};
+  std::printf("             re-encoded here: %zu bytes;", payload);
+  for (int k = 0; k < 4; ++k)
+    if (stats.vertices_by_kind[k])
+      std::printf(" %s %u vertices %.2f bits each;", kKinds[k], stats.vertices_by_kind[k],
+                  stats.bits_by_kind[k] / stats.vertices_by_kind[k]);
+  std::printf("\n");
+}
+
 void print_text(const std::string& path, const DecodedFile& f, uint64_t size, const Status& status) {
   const double v = f.mesh.vertex_count() ? double(f.mesh.vertex_count()) : 1.0;
   std::printf("file         %s, %llu bytes, format %u.%u\n", path.c_str(), static_cast<unsigned long long>(size),
@@ -66,10 +95,11 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
                 unsigned(f.gim.plane_count), f.gim.seam_pairs.size() / 2, (f.gim.flags & 1) ? ", masked" : "");
   else
     std::printf("connectivity %s\n", connectivity_method_name(f.method));
-  if (f.quantization.bits)
-    std::printf("positions    %d bits/axis, box (%g %g %g) - (%g %g %g)\n", f.quantization.bits,
+  if (f.quantization.bits && f.quantization.method == 0)
+    std::printf("positions    deltas (spec 6), %d bits/axis, box (%g %g %g) - (%g %g %g)\n", f.quantization.bits,
                 f.quantization.min[0], f.quantization.min[1], f.quantization.min[2], f.quantization.max[0],
                 f.quantization.max[1], f.quantization.max[2]);
+  if (f.quantization.method == 1) print_predicted_positions(f);
   if (!f.gim.present)
     std::printf("order        %s\n", f.order_restored ? order_description(f.order_flags).c_str()
                                                      : "coder order (no oRDR chunk)");
@@ -105,8 +135,8 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
   std::printf("{\"file\":\"%s\",\"bytes\":%llu,\"version\":\"%u.%u\",\"vertices\":%zu,\"faces\":%zu,",
               json_escape(path).c_str(), static_cast<unsigned long long>(size), f.version_major, f.version_minor,
               f.mesh.vertex_count(), f.mesh.face_count());
-  std::printf("\"connectivity\":\"%s\",\"quad_coding\":%d,\"position_bits\":%d,", connectivity_method_name(f.method),
-              f.quad_coding, f.quantization.bits);
+  std::printf("\"connectivity\":\"%s\",\"quad_coding\":%d,\"position_bits\":%d,\"position_method\":%d,", connectivity_method_name(f.method),
+              f.quad_coding, f.quantization.bits, f.quantization.method);
   std::printf("\"order_restored\":%s,\"order_flags\":%u,", f.order_restored ? "true" : "false", f.order_flags);
   std::printf("\"loop_levels\":%u,\"levels\":[", f.loop_level_count);
   for (size_t j = 0; j < f.levels.size(); ++j) {

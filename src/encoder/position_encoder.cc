@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "bitio/bit_writer.h"
 #include "bitio/byte_io.h"
@@ -51,15 +52,20 @@ void round_to_grid(const std::vector<float>& positions, QuantizedPositions* out)
   if (!out->per_axis_bits) out->bits = bits;
 }
 
+std::string shortest(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
+}
+
 // One step on every axis: the tops follow from the box.
 Status uniform_grid(double step, const char* what, QuantizedPositions* out) {
   for (int a = 0; a < 3; ++a) {
     const double side = double(out->max[a]) - double(out->min[a]);
     const double top = step > 0 ? std::nearbyint(side / step) : 0.0;
     if (!(top <= kMaxTop))
-      return Status(ErrorCode::kInvalidArgument, std::string(what) + " needs " + std::to_string(top) +
-                                                     " steps on axis " + std::to_string(a) +
-                                                     "; the format allows 2^30 - 1 (section 14.1)");
+      return Status(ErrorCode::kInvalidArgument, std::string(what) + " needs " + shortest(top) + " steps on axis " +
+                                                     std::to_string(a) + "; the format allows 2^30 - 1 (section 14.1)");
     out->step[a] = step;
     out->top[a] = uint32_t(top);
   }
