@@ -84,15 +84,16 @@ size_t fan_triangle_count(const qmc::Mesh& mesh) {
 // loader does: coincident vertices are distinct vertices of the input. (Where
 // merging would create a non-manifold vertex, Draco splits it again, which is
 // why suzanne's coincident seam vertices give the same bytes either way.)
-int add_positions(const qmc::Mesh& mesh, draco::Mesh* out) {
+int add_positions(const qmc::Mesh& mesh, bool at_origin, draco::Mesh* out) {
   draco::GeometryAttribute ga;
   ga.Init(draco::GeometryAttribute::POSITION, nullptr, 3, draco::DT_FLOAT32, false,
           sizeof(float) * 3, 0);
   const auto count = static_cast<uint32_t>(mesh.vertex_count());
   const int id = out->AddAttribute(ga, false, count);
   draco::PointAttribute* att = out->attribute(id);
+  const float origin[3] = {0.f, 0.f, 0.f};
   for (uint32_t v = 0; v < count; ++v) {
-    att->SetAttributeValue(draco::AttributeValueIndex(v), &mesh.positions[3 * size_t{v}]);
+    att->SetAttributeValue(draco::AttributeValueIndex(v), at_origin ? origin : &mesh.positions[3 * size_t{v}]);
   }
   return id;
 }
@@ -146,7 +147,7 @@ DracoInput build_draco_mesh(const qmc::Mesh& mesh, const DracoOptions& options) 
   // Explicit point maps are sized by the point count, so it must be known
   // before the attributes are added: one point per triangle corner.
   in.mesh->set_num_points(static_cast<uint32_t>(3 * fan_triangle_count(mesh)));
-  in.position_id = add_positions(mesh, in.mesh.get());
+  in.position_id = add_positions(mesh, options.positions_at_origin, in.mesh.get());
   if (wants_polygon_attribute(mesh, options)) in.edges_id = add_added_edges(in.mesh.get());
   add_fan_triangles(mesh, &in);
   // Corners that share vertex and flag become one point, as in the OBJ loader.

@@ -26,6 +26,11 @@ struct DracoOptions {
                                 // Always edgebreaker: draco_encoder would switch to
                                 // its sequential method at level 0.
   bool preserve_polygons = false;
+  // Every position replaced by (0,0,0): a constant attribute codes to a few
+  // bytes, so the file is essentially the connectivity (and polygon flags)
+  // plus Draco's header. Draco has no separate connectivity stream; its
+  // positions cost the real file's bytes minus this one's.
+  bool positions_at_origin = false;
 };
 
 struct DracoResult {

@@ -14,7 +14,10 @@
 #                    8-14 bits, plotted in seed003_rd.svg;
 #   gim.md           geometry images: seed 000 table 1 and seed 002 tables 1-2
 #                    rerun, lossless planes against zstd -19 and 16-bit PNG,
-#                    pictures in docs/results/gim/.
+#                    pictures in docs/results/gim/;
+#   compression.md   issue 13: qmc's positions and whole files against Draco
+#                    cl10 / cl7 and meshoptimizer + zstd -19 at 12, 14 and 16
+#                    bits, decode and encode times, with the issue's targets.
 # RUNS (default 7) runs per measurement, LARGE_RUNS (default 3) for the
 # ~1M-quad sphere; medians are reported. Run on an otherwise idle machine.
 set -euo pipefail
@@ -52,6 +55,18 @@ write_result() {
   echo "bench: wrote $file"
 }
 
+# compression_result: docs/results/compression.md (RUNS rounds, interleaved).
+compression_result() {
+  write_result docs/results/compression.md "Compression: qmc against Draco and meshoptimizer on Draco's grid (issue 13)" \
+    build/bench/qmc_compression_bench --runs "$runs" --bits 12,14,16 "$corpus"/tri/* "$corpus"/quad/*
+}
+
+# ONLY=compression regenerates docs/results/compression.md alone.
+if [ "${ONLY:-}" = compression ]; then
+  compression_result
+  exit 0
+fi
+
 # ONLY=gim regenerates docs/results/gim.md alone.
 if [ "${ONLY:-}" != gim ]; then
 out=docs/results/baseline.md
@@ -72,6 +87,7 @@ write_result docs/results/quad_vs_draco.md "Quad meshes: qmc's quad coder agains
   build/bench/qmc_quad_bench --runs "$runs" --large-runs "$large_runs" --bits 12 --sphere-levels 7 "$corpus"/quad/*
 write_result docs/results/topology.md "Connectivity: qmc's structured coders against Draco and the indexed fallback" \
   build/bench/qmc_topology_bench --runs "$runs" --large-runs "$large_runs" --bits 12 "$corpus"/quad/* "$corpus"/tri/*
+compression_result
 write_result docs/results/seed003.md "Seed 003 (Loop progressive geometry compression) rerun with qmc's progressive levels" \
   build/bench/qmc_seed003 --runs "$runs" --plot docs/results/seed003_rd.svg "$corpus"/tri/stanford-bunny.obj \
   "$corpus"/tri/armadillo.obj "$corpus"/tri/fertility.off "$corpus"/tri/camelhead.off

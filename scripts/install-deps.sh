@@ -8,6 +8,7 @@ packages=(
   clang-14 libfuzzer-14-dev libclang-rt-14-dev   # fuzzing (ASan, UBSan, libFuzzer)
   libopenmesh-dev libeigen3-dev libzstd-dev      # encoder-side tools
   libdraco-dev draco                    # baseline comparison only (bench/)
+  libmeshoptimizer-dev                  # bench/: meshoptimizer + zstd in compression.md
   libpng-dev                            # tools: geometry-image planes and pictures
 )
 missing=()
