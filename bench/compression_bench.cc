@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -64,6 +65,7 @@ struct Timings {
 
 struct QmcFigures {
   std::string error;  // empty: ok
+  std::string grid;   // empty: qmc's grid is Draco's; else how it differs
   uint64_t file_bytes = 0, conn_bytes = 0, posn_bytes = 0;
   qmc::PositionStats positions;
   Timings time;
@@ -179,9 +181,22 @@ void meshopt_round(const qmc::Mesh& mesh, int bits, MeshoptFigures* m) {
   m->time.add(r.encode_seconds, r.decode_seconds);
 }
 
+// qmc's default grid must be Draco's for the comparison to hold: the same
+// step on every axis that has an extent (a flat axis has step 0 in qmc).
+std::string grid_difference(const qmc::PositionStats& qmc_grid, double draco_step) {
+  for (int a = 0; a < 3; ++a) {
+    const double step = qmc_grid.step[a];
+    if (step != 0 && std::fabs(step - draco_step) > 1e-6 * draco_step)
+      return format("axis %d step %.9g, Draco's %.9g", a, step, draco_step);
+  }
+  return {};
+}
+
 bool has_polygon(const qmc::Mesh& mesh) {
   return std::any_of(mesh.face_sizes.begin(), mesh.face_sizes.end(), [](uint32_t n) { return n > 3; });
 }
+
+bool qmc_ok(const Case& c) { return c.qmc.error.empty(); }
 
 Case measure(const std::string& name, const qmc::Mesh& mesh, int bits, int runs) {
   Case c;
@@ -197,13 +212,13 @@ Case measure(const std::string& name, const qmc::Mesh& mesh, int bits, int runs)
     draco_round(mesh, draco_options(bits, 7, c.polygons, false), &c.cl7);
     meshopt_round(mesh, bits, &c.meshopt);
   }
+  if (qmc_ok(c)) c.qmc.grid = grid_difference(c.qmc.positions, qmc::bench::draco_grid_step(mesh, bits));
   return c;
 }
 
 // ---------------------------------------------------------------------------
 // Ratios and targets. A ratio is absent (nullopt-like: < 0) where a side failed.
 
-bool qmc_ok(const Case& c) { return c.qmc.error.empty(); }
 bool draco_positions_ok(const Case& c) { return c.cl10.error.empty() && c.cl10_connectivity.error.empty(); }
 
 long long draco_positions(const Case& c) {
@@ -261,6 +276,7 @@ std::string summary(const std::vector<Case>& cases) {
   std::string s;
   for (const Target& t : targets()) {
     size_t met = 0, measured = 0, missing = 0;
+    double log_sum = 0;
     const Case* worst = nullptr;
     for (const Case& c : cases) {
       if (!t.applies(c)) continue;
@@ -271,10 +287,13 @@ std::string summary(const std::vector<Case>& cases) {
       }
       ++measured;
       met += t.met(r);
+      log_sum += std::log(r);
       if (!worst || (t.at_least ? r < t.ratio(*worst) : r > t.ratio(*worst))) worst = &c;
     }
     s += format("- %s: **met in %zu of %zu** (mesh, bits) cases", t.what.c_str(), met, measured);
-    if (worst) s += format("; worst: %s at %d bits, %.3f", worst->name.c_str(), worst->bits, t.ratio(*worst));
+    if (worst)
+      s += format("; worst: %s at %d bits, %.3f; geometric mean %.3f", worst->name.c_str(), worst->bits,
+                  t.ratio(*worst), std::exp(log_sum / double(measured)));
     if (missing) s += format("; %zu not measured (a codec failed: see the notes)", missing);
     s += ".\n";
   }
@@ -313,7 +332,7 @@ std::string sizes_table(const std::vector<Case>& cases) {
 std::string times_table(const std::vector<Case>& cases) {
   const std::vector<Target> t = targets();
   std::string s =
-      "| mesh | bits | vertices | qmc decode ms | Draco cl10 decode ms | Draco / qmc | >= 2 (> 10k vertices) | qmc "
+      "| mesh | bits | vertices | qmc decode ms | Draco cl10 decode ms | speed-up (Draco ms / qmc ms) | >= 2 (> 10k vertices) | qmc "
       "encode ms | Draco cl10 encode ms | qmc / Draco | <= 1.5 | Draco cl7 decode / encode ms | meshopt + zstd "
       "decode / encode ms |\n"
       "| --- | ---: | ---: | ---: | ---: | ---: | --- | ---: | ---: | ---: | --- | ---: | ---: |\n";
@@ -341,10 +360,21 @@ std::string kind_shares(const qmc::PositionStats& p) {
   return s;
 }
 
+// Information content per vertex of each kind ("-" where no vertex is).
+std::string kind_bits(const qmc::PositionStats& p) {
+  std::string s;
+  for (int k = 0; k < int(p.vertices_by_kind.size()); ++k) {
+    const uint32_t n = p.vertices_by_kind[k];
+    s += (k ? " / " : "") + (n ? format("%.1f", p.bits_by_kind[k] / n) : std::string("-"));
+  }
+  return s;
+}
+
 std::string notes(const Case& c) {
   std::string n;
   const std::pair<const char*, const std::string*> parts[] = {
-      {"qmc", &c.qmc.error},          {"Draco cl10", &c.cl10.error},     {"Draco cl10", &c.cl10.losses},
+      {"qmc", &c.qmc.error},          {"qmc's grid is not Draco's", &c.qmc.grid},
+      {"Draco cl10", &c.cl10.error},  {"Draco cl10", &c.cl10.losses},
       {"Draco cl7", &c.cl7.error},    {"Draco at origin", &c.cl10_connectivity.error},
       {"meshopt", &c.meshopt.error}};
   for (const auto& [who, text] : parts)
@@ -352,18 +382,24 @@ std::string notes(const Case& c) {
   return n;
 }
 
+// A codec failed, or qmc's grid is not Draco's: the figures do not compare.
+bool failed(const Case& c) {
+  return !c.qmc.error.empty() || !c.qmc.grid.empty() || !c.cl10.error.empty() || !c.cl7.error.empty() ||
+         !c.cl10_connectivity.error.empty() || !c.meshopt.error.empty();
+}
+
 std::string parts_table(const std::vector<Case>& cases) {
   std::string s =
-      "| mesh | bits | qmc CONN | qmc POSN bits/vertex | POSN method | vertices by kind 0/1/2/3 % | Draco cl10 at "
-      "origin (connectivity) | meshopt index / vertex zstd | notes |\n"
-      "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n";
+      "| mesh | bits | qmc CONN | qmc POSN bits/vertex | POSN method | vertices by kind 0/1/2/3 % | bits/vertex by kind "
+      "0/1/2/3 | Draco cl10 at origin (connectivity) | meshopt index / vertex zstd | notes |\n"
+      "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- |\n";
   for (const Case& c : cases) {
     const bool q = qmc_ok(c);
-    s += format("| %s | %d | %s | %s | %s | %s | %s | %s | %s |\n", c.name.c_str(), c.bits,
+    s += format("| %s | %d | %s | %s | %s | %s | %s | %s | %s | %s |\n", c.name.c_str(), c.bits,
                 bytes_cell(c.qmc.error, c.qmc.conn_bytes).c_str(),
                 q ? format("%.2f", qmc::bench::bits_per_vertex(double(c.qmc.posn_bytes), c.vertices)).c_str() : "-",
                 q ? format("%d", c.qmc.positions.method).c_str() : "-",
-                q ? kind_shares(c.qmc.positions).c_str() : "-",
+                q ? kind_shares(c.qmc.positions).c_str() : "-", q ? kind_bits(c.qmc.positions).c_str() : "-",
                 bytes_cell(c.cl10_connectivity.error, c.cl10_connectivity.bytes).c_str(),
                 c.meshopt.error.empty()
                     ? format("%zu / %zu", c.meshopt.sizes.index_bytes, c.meshopt.sizes.vertex_bytes).c_str()
@@ -381,7 +417,8 @@ std::string document(const std::vector<Case>& cases, const Options& opt, double 
       "(uniform grid, automatic connectivity and POSN method), decoded by `qmc::decode` with "
       "`DecoderLimits::unlimited()`. **Draco 1.5.5** in memory through bench/draco_runner (edgebreaker; for "
       "quad/ meshes polygons preserved with draco_encoder's `added_edges` attribute, for triangle meshes plain "
-      "triangles). **Draco's positions** = its whole cl10 file minus the cl10 file of the same mesh with every "
+      "triangles; its bytes equal `draco_encoder -qp B -cl L [-preserve_polygons]` on the same positions-only "
+      "OBJ, checked on cow, bunny_small, 3holes, fandisk_quads and horse_quad at 12 bits, cl10 and cl7). **Draco's positions** = its whole cl10 file minus the cl10 file of the same mesh with every "
       "position at (0,0,0) (a constant attribute still costs a few bytes, so this slightly flatters Draco). "
       "**meshoptimizer 0.18 + zstd -19** as its users run it (bench/meshopt_runner.h): fan triangulation, "
       "optimizeVertexCache + optimizeVertexFetch, the grid integers as uint16 x 4 (uint32 x 3 above 16 bits), "
@@ -401,11 +438,13 @@ std::string document(const std::vector<Case>& cases, const Options& opt, double 
   doc += "## Sizes (bytes)\n\n" + sizes_table(cases) + "\n";
   doc += "## Times (ms, medians)\n\n" + times_table(cases) + "\n";
   doc += "## Parts\n\n"
-         "qmc's CONN and POSN chunks, POSN's method (0: deltas, 1: predicted) and the share of vertices per "
-         "prediction kind of section 14.3.2 (method 1 only; kinds as the encoder reports them in "
-         "`PositionStats::vertices_by_kind`: 0 previous vertex, 1 mean of decoded neighbours, 2 one rule, "
-         "3 several); Draco's connectivity-only file; meshopt's two zstd frames. Notes say where a codec failed "
-         "or what Draco did not store (qmc keeps every face and vertex).\n\n";
+         "qmc's CONN and POSN chunks, POSN's method (0: deltas, 1: predicted), and per prediction kind of "
+         "section 14.3.2 (method 1 only; kinds as the encoder reports them in `PositionStats`: 0 previous "
+         "vertex, 1 mean of decoded neighbours, 2 one rule, 3 several) the share of vertices and the "
+         "information content per vertex (`bits_by_kind` / `vertices_by_kind`: -log2 of the coded decisions' "
+         "probabilities, before the coder's flush and framing); Draco's connectivity-only file; meshopt's two "
+         "zstd frames. Notes say where a codec failed, where qmc's grid step differs from Draco's (checked on "
+         "every row), or what Draco did not store (qmc keeps every face and vertex).\n\n";
   doc += parts_table(cases) + "\n";
   doc += format("Run time of the whole benchmark: %.0f s.\n", seconds);
   return doc;
@@ -465,6 +504,6 @@ int main(int argc, char** argv) {
   if (progress) std::fprintf(stderr, "\r%60s\r", "");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::fputs(document(cases, opt, seconds).c_str(), stdout);
-  const bool any_failed = std::any_of(cases.begin(), cases.end(), [](const Case& c) { return !notes(c).empty(); });
+  const bool any_failed = std::any_of(cases.begin(), cases.end(), failed);
   return opt.fail_on_error && any_failed ? 1 : 0;
 }

@@ -41,9 +41,11 @@ std::vector<uint32_t> fan_triangles(const qmc::Mesh& mesh) {
 }
 
 // Draco's grid (AttributeQuantizationTransform): the largest side of the box
-// is the range, 2^bits - 1 steps over it, rounding half up in float.
+// is the range (1 if the box is a point), 2^bits - 1 steps over it, rounding
+// half up in float.
 struct Grid {
   float origin[3] = {0, 0, 0};
+  float range = 1;
   float inverse_step = 1;
 };
 
@@ -55,9 +57,9 @@ Grid draco_grid(const qmc::Mesh& mesh, int bits) {
     grid.origin[i % 3] = std::min(grid.origin[i % 3], mesh.positions[i]);
     high[i % 3] = std::max(high[i % 3], mesh.positions[i]);
   }
-  float range = std::max({high[0] - grid.origin[0], high[1] - grid.origin[1], high[2] - grid.origin[2]});
-  if (range == 0.f) range = 1.f;
-  grid.inverse_step = float((uint64_t{1} << bits) - 1) / range;
+  grid.range = std::max({high[0] - grid.origin[0], high[1] - grid.origin[1], high[2] - grid.origin[2]});
+  if (grid.range == 0.f) grid.range = 1.f;
+  grid.inverse_step = float((uint64_t{1} << bits) - 1) / grid.range;
   return grid;
 }
 
@@ -164,6 +166,10 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }
 
 }  // namespace
+
+double draco_grid_step(const qmc::Mesh& mesh, int bits) {
+  return double(draco_grid(mesh, bits).range) / double((uint64_t{1} << bits) - 1);
+}
 
 MeshoptResult run_meshopt(const qmc::Mesh& mesh, const MeshoptOptions& options, int runs) {
   MeshoptResult result;

@@ -41,6 +41,10 @@ struct MeshoptResult {
   std::vector<double> encode_seconds, decode_seconds;
 };
 
+// The step of Draco's grid for `bits`, which the integers above use: the
+// largest side of the bounding box / (2^bits - 1), in Draco's float arithmetic.
+double draco_grid_step(const qmc::Mesh& mesh, int bits);
+
 // Encodes and decodes `mesh` `runs` times (runs >= 1), and checks that the
 // decoded buffers equal the encoded ones. Fails on input it cannot take: a
 // face with fewer than 3 corners, a corner out of range, a non-finite

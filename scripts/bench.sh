@@ -18,6 +18,7 @@
 #   compression.md   issue 13: qmc's positions and whole files against Draco
 #                    cl10 / cl7 and meshoptimizer + zstd -19 at 12, 14 and 16
 #                    bits, decode and encode times, with the issue's targets.
+# ONLY=compression or ONLY=gim regenerates that one file.
 # RUNS (default 7) runs per measurement, LARGE_RUNS (default 3) for the
 # ~1M-quad sphere; medians are reported. Run on an otherwise idle machine.
 set -euo pipefail
@@ -27,7 +28,13 @@ corpus=${QMC_CORPUS_DIR:-../shared/corpus}
 runs=${RUNS:-7}
 large_runs=${LARGE_RUNS:-3}
 scripts/install-deps.sh >/dev/null
-scripts/build.sh >/dev/null
+if [ "${ONLY:-}" = compression ]; then
+  # One program: build just it (and what it links), not the whole tree.
+  cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build build --target qmc_compression_bench >/dev/null
+else
+  scripts/build.sh >/dev/null
+fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
