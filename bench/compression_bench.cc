@@ -41,6 +41,12 @@ constexpr double kDecodeSpeedTarget = 2.0;     // Draco cl10 decode time / qmc's
 constexpr size_t kDecodeSpeedMinVertices = 10000;  // ... on meshes above this many vertices
 constexpr double kEncodeTimeTarget = 1.5;      // qmc encode time / Draco cl10's, at most
 
+// A round's sample of a codec is the mean of enough back-to-back repetitions
+// to last this long (at least one), so that meshes of a few vertices are not
+// timed at the clock's resolution; meshes above ~1k vertices take one.
+constexpr double kMinSampleSeconds = 0.002;
+constexpr int kMaxRepetitions = 1000;
+
 [[noreturn]] void fail(const std::string& message) { qmc::bench::fail("qmc_compression_bench", message); }
 
 struct Options {
@@ -53,13 +59,27 @@ struct Options {
 // ---------------------------------------------------------------------------
 // One codec's figures for one mesh and bits
 
+double mean(const std::vector<double>& values) {
+  double sum = 0;
+  for (double v : values) sum += v;
+  return values.empty() ? 0 : sum / double(values.size());
+}
+
+// One sample per round (the mean of its repetitions), median over rounds.
 struct Timings {
   std::vector<double> encode_s, decode_s;
   double encode_ms() const { return 1e3 * median(encode_s); }
   double decode_ms() const { return 1e3 * median(decode_s); }
-  void add(const std::vector<double>& encode, const std::vector<double>& decode) {
-    encode_s.insert(encode_s.end(), encode.begin(), encode.end());
-    decode_s.insert(decode_s.end(), decode.begin(), decode.end());
+  void add(const std::vector<double>& encode_repetitions, const std::vector<double>& decode_repetitions) {
+    encode_s.push_back(mean(encode_repetitions));
+    decode_s.push_back(mean(decode_repetitions));
+  }
+  // Repetitions for kMinSampleSeconds of the shorter of encode and decode.
+  int repetitions() const {
+    if (encode_s.empty()) return 1;
+    const double shortest = std::min(encode_s.back(), decode_s.back());
+    if (shortest <= 0) return kMaxRepetitions;
+    return static_cast<int>(std::clamp(std::ceil(kMinSampleSeconds / shortest), 1.0, double(kMaxRepetitions)));
   }
 };
 
@@ -104,33 +124,45 @@ uint64_t chunk_bytes(const qmc::EncodeStats& stats, uint32_t type) {
   return bytes;
 }
 
-// qmc with its default options but the bits; the sizes from the first round.
-void qmc_round(const qmc::Mesh& mesh, int bits, QmcFigures* q) {
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// qmc with its default options but the bits, `repetitions` encodes then as
+// many decodes.
+void qmc_round(const qmc::Mesh& mesh, int bits, int repetitions, QmcFigures* q) {
   if (!q->error.empty()) return;
   qmc::EncodeOptions options;
   options.position_bits = bits;
   std::vector<uint8_t> file;
   qmc::EncodeStats stats;
-  auto start = std::chrono::steady_clock::now();
-  qmc::Status status = qmc::encode(mesh, options, &file, &stats);
-  const double encode_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!status.ok()) {
-    q->error = "encode: " + status.to_string();
-    return;
+  std::vector<double> encode_s, decode_s;
+  for (int r = 0; r < repetitions; ++r) {
+    file.clear();
+    stats = {};
+    const auto start = std::chrono::steady_clock::now();
+    const qmc::Status status = qmc::encode(mesh, options, &file, &stats);
+    encode_s.push_back(seconds_since(start));
+    if (!status.ok()) {
+      q->error = "encode: " + status.to_string();
+      return;
+    }
   }
   qmc::DecodedFile decoded;
-  start = std::chrono::steady_clock::now();
-  status = qmc::decode(file.data(), file.size(), &decoded, qmc::DecoderLimits::unlimited());
-  const double decode_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!status.ok()) {
-    q->error = "decode: " + status.to_string();
-    return;
+  for (int r = 0; r < repetitions; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    const qmc::Status status = qmc::decode(file.data(), file.size(), &decoded, qmc::DecoderLimits::unlimited());
+    decode_s.push_back(seconds_since(start));
+    if (!status.ok()) {
+      q->error = "decode: " + status.to_string();
+      return;
+    }
   }
   if (decoded.mesh.vertex_count() != mesh.vertex_count() || decoded.mesh.face_count() != mesh.face_count()) {
     q->error = "decoded a mesh of another size";
     return;
   }
-  q->time.add({encode_s}, {decode_s});
+  q->time.add(encode_s, decode_s);
   q->file_bytes = file.size();
   q->conn_bytes = chunk_bytes(stats, qmc::kChunkConnectivity);
   q->posn_bytes = chunk_bytes(stats, qmc::kChunkPositions);
@@ -147,9 +179,10 @@ std::string draco_losses(const qmc::bench::DracoResult& r) {
   return note;
 }
 
-void draco_round(const qmc::Mesh& mesh, const qmc::bench::DracoOptions& options, DracoFigures* d) {
+void draco_round(const qmc::Mesh& mesh, const qmc::bench::DracoOptions& options, int repetitions,
+                 DracoFigures* d) {
   if (!d->error.empty()) return;
-  const qmc::bench::DracoResult r = qmc::bench::run_draco(mesh, options, 1);
+  const qmc::bench::DracoResult r = qmc::bench::run_draco(mesh, options, repetitions);
   if (!r.ok) {
     d->error = r.error;
     return;
@@ -168,16 +201,16 @@ qmc::bench::DracoOptions draco_options(int bits, int level, bool polygons, bool 
   return options;
 }
 
-void meshopt_round(const qmc::Mesh& mesh, int bits, MeshoptFigures* m) {
+void meshopt_round(const qmc::Mesh& mesh, int bits, int repetitions, MeshoptFigures* m) {
   if (!m->error.empty()) return;
   qmc::bench::MeshoptOptions options;
   options.position_bits = bits;
-  const qmc::bench::MeshoptResult r = qmc::bench::run_meshopt(mesh, options, 1);
+  const qmc::bench::MeshoptResult r = qmc::bench::run_meshopt(mesh, options, repetitions);
   if (!r.ok) {
     m->error = r.error;
     return;
   }
-  if (m->time.encode_s.empty()) m->sizes = r;
+  m->sizes = r;
   m->time.add(r.encode_seconds, r.decode_seconds);
 }
 
@@ -198,20 +231,33 @@ bool has_polygon(const qmc::Mesh& mesh) {
 
 bool qmc_ok(const Case& c) { return c.qmc.error.empty(); }
 
+struct Repetitions {
+  int qmc = 1, cl10 = 1, cl7 = 1, meshopt = 1;
+};
+
+// Every codec once, in a fixed order.
+void round(const qmc::Mesh& mesh, const Repetitions& n, Case* c) {
+  qmc_round(mesh, c->bits, n.qmc, &c->qmc);
+  draco_round(mesh, draco_options(c->bits, 10, c->polygons, false), n.cl10, &c->cl10);
+  draco_round(mesh, draco_options(c->bits, 7, c->polygons, false), n.cl7, &c->cl7);
+  meshopt_round(mesh, c->bits, n.meshopt, &c->meshopt);
+}
+
 Case measure(const std::string& name, const qmc::Mesh& mesh, int bits, int runs) {
   Case c;
   c.name = name;
   c.polygons = name.rfind("quad/", 0) == 0 || has_polygon(mesh);
   c.bits = bits;
   c.vertices = mesh.vertex_count();
+  // A warm-up round, not reported: it fills the caches and tells how many
+  // repetitions make a sample of each codec.
+  Case warm_up = c;
+  round(mesh, Repetitions{}, &warm_up);
+  const Repetitions n = {warm_up.qmc.time.repetitions(), warm_up.cl10.time.repetitions(),
+                         warm_up.cl7.time.repetitions(), warm_up.meshopt.time.repetitions()};
+  for (int r = 0; r < runs; ++r) round(mesh, n, &c);
   // Deterministic bytes: once.
-  draco_round(mesh, draco_options(bits, 10, c.polygons, true), &c.cl10_connectivity);
-  for (int r = 0; r < runs; ++r) {
-    qmc_round(mesh, bits, &c.qmc);
-    draco_round(mesh, draco_options(bits, 10, c.polygons, false), &c.cl10);
-    draco_round(mesh, draco_options(bits, 7, c.polygons, false), &c.cl7);
-    meshopt_round(mesh, bits, &c.meshopt);
-  }
+  draco_round(mesh, draco_options(bits, 10, c.polygons, true), 1, &c.cl10_connectivity);
   if (qmc_ok(c)) c.qmc.grid = grid_difference(c.qmc.positions, qmc::bench::draco_grid_step(mesh, bits));
   return c;
 }
@@ -426,8 +472,11 @@ std::string document(const std::vector<Case>& cases, const Options& opt, double 
       "size, grid); polygons are not kept.\n\n";
   doc += "Bytes are whole chunks (12 bytes of framing included) and whole files. Times are medians of " +
          std::to_string(opt.runs) +
-         " rounds; in each round every codec encodes and decodes the mesh once, so ratios compare the same "
-         "moments of the machine. qmc's encode time is all of `qmc::encode` from a `qmc::Mesh`; Draco's is "
+         " rounds after an unreported warm-up round; in each round every codec encodes and decodes the mesh in "
+         "turn, so ratios compare the same moments of the machine. A codec's sample in a round is the mean of "
+         "enough back-to-back repetitions to last " + format("%.0f", 1e3 * kMinSampleSeconds) +
+         " ms for the shorter of its encode and decode (one repetition above ~1k vertices), as the clock "
+         "cannot time an 8-vertex cube. qmc's encode time is all of `qmc::encode` from a `qmc::Mesh`; Draco's is "
          "`EncodeToBuffer` (building its `draco::Mesh` untimed), its decode `DecodeMeshFromBuffer` (turning "
          "triangles back into polygons untimed); meshopt's encode runs from the `qmc::Mesh` to the bytes, its "
          "decode is zstd plus its two decoders, to integer buffers. Decode ratio = Draco cl10 decode time / "
