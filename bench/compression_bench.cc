@@ -236,7 +236,7 @@ struct Repetitions {
 };
 
 // Every codec once, in a fixed order.
-void round(const qmc::Mesh& mesh, const Repetitions& n, Case* c) {
+void run_round(const qmc::Mesh& mesh, const Repetitions& n, Case* c) {
   qmc_round(mesh, c->bits, n.qmc, &c->qmc);
   draco_round(mesh, draco_options(c->bits, 10, c->polygons, false), n.cl10, &c->cl10);
   draco_round(mesh, draco_options(c->bits, 7, c->polygons, false), n.cl7, &c->cl7);
@@ -252,10 +252,10 @@ Case measure(const std::string& name, const qmc::Mesh& mesh, int bits, int runs)
   // A warm-up round, not reported: it fills the caches and tells how many
   // repetitions make a sample of each codec.
   Case warm_up = c;
-  round(mesh, Repetitions{}, &warm_up);
+  run_round(mesh, Repetitions{}, &warm_up);
   const Repetitions n = {warm_up.qmc.time.repetitions(), warm_up.cl10.time.repetitions(),
                          warm_up.cl7.time.repetitions(), warm_up.meshopt.time.repetitions()};
-  for (int r = 0; r < runs; ++r) round(mesh, n, &c);
+  for (int r = 0; r < runs; ++r) run_round(mesh, n, &c);
   // Deterministic bytes: once.
   draco_round(mesh, draco_options(bits, 10, c.polygons, true), 1, &c.cl10_connectivity);
   if (qmc_ok(c)) c.qmc.grid = grid_difference(c.qmc.positions, qmc::bench::draco_grid_step(mesh, bits));
