@@ -1,0 +1,70 @@
+// Web Worker of QMCLoader: decodes the files the page streams to it, off the
+// page's thread, and posts each progressive level's mesh (spec 12) the moment
+// its chunk is decoded, then the file's mesh once QEND is in (3.5).
+//
+// page -> worker: {type: 'open', id, limits} {type: 'chunk', id, bytes} {type: 'end', id}
+// worker -> page: {type: 'level', id, mesh, ...} {type: 'done', id, mesh, ...} {type: 'error', id, ...}
+import { FINEST, loadQMC } from './qmc.js';
+
+const ready = loadQMC();
+const files = new Map(); // id -> { stream, shownLevel, decodeMs }
+
+function transferables(mesh) {
+  return [mesh.positions.buffer, mesh.indices.buffer, mesh.faceSizes.buffer, mesh.corners.buffer];
+}
+
+function post(type, id, file, mesh) {
+  const message = { type, id, mesh, levelCount: file.stream.levelCount, bytesFed: file.stream.bytesFed,
+                    decodeMs: file.decodeMs };
+  self.postMessage(message, mesh ? transferables(mesh) : []);
+}
+
+function timed(file, work) {
+  const start = performance.now();
+  try {
+    return work();
+  } finally {
+    file.decodeMs += performance.now() - start;
+  }
+}
+
+// Every level completed by the last chunk, in order.
+function postNewLevels(id, file) {
+  while (file.shownLevel < file.stream.completeLevel) {
+    file.shownLevel += 1;
+    post('level', id, file, timed(file, () => file.stream.mesh(file.shownLevel)));
+  }
+}
+
+function handle(qmc, { type, id, limits, bytes }) {
+  if (type === 'open') {
+    files.set(id, { stream: qmc.createStreamDecoder({ limits }), shownLevel: -1, decodeMs: 0 });
+    return;
+  }
+  const file = files.get(id);
+  if (!file) return;
+  if (type === 'chunk') {
+    timed(file, () => file.stream.feed(new Uint8Array(bytes)));
+    postNewLevels(id, file);
+  } else if (type === 'end') {
+    timed(file, () => file.stream.finish());
+    post('done', id, file, timed(file, () => file.stream.mesh(FINEST)));
+    file.stream.dispose();
+    files.delete(id);
+  } else if (type === 'cancel') {
+    file.stream.dispose();
+    files.delete(id);
+  }
+}
+
+self.onmessage = async ({ data }) => {
+  const qmc = await ready;
+  try {
+    handle(qmc, data);
+  } catch (e) {
+    const file = files.get(data.id);
+    file?.stream.dispose();
+    files.delete(data.id);
+    self.postMessage({ type: 'error', id: data.id, identifier: e.identifier ?? 'error', message: e.message });
+  }
+};

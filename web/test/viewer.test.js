@@ -1,0 +1,99 @@
+// The viewer in headless Chromium (Debian's, driven by puppeteer-core): a
+// progressive file (spec 12) streams from a throttled local server, a
+// screenshot is taken while each level is on screen, and each is checked
+// from its pixels: the mesh is there (not blank) and gains detail level by
+// level (more distinct flat-shaded facets). The last level must equal the
+// whole-file decode, and each level below it must have been on screen before
+// the whole body had arrived. Screenshots: web/test-output/.
+import assert from 'node:assert/strict';
+import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
+import { test } from 'node:test';
+
+import puppeteer from 'puppeteer-core';
+
+import { startServer } from '../tools/serve.mjs';
+
+const CHROMIUM = '/usr/bin/chromium';
+const FILE = '/conformance/vectors/valid_loop_octahedron_sphere_5_levels.qmc';
+const BYTES_PER_SECOND = 3000; // 4869 bytes: about 1.6 s
+
+// Runs in the page: decodes a screenshot and measures it against the
+// background colour (#20242a).
+async function measure(base64) {
+  const bitmap = await createImageBitmap(await (await fetch(`data:image/png;base64,${base64}`)).blob());
+  const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+  const context = canvas.getContext('2d');
+  context.drawImage(bitmap, 0, 0);
+  const { data } = context.getImageData(0, 0, bitmap.width, bitmap.height);
+  const colours = new Set();
+  let foreground = 0;
+  for (let i = 0; i < data.length; i += 4) {
+    const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
+    if (Math.abs(r - 0x20) + Math.abs(g - 0x24) + Math.abs(b - 0x2a) < 24) continue;
+    foreground += 1;
+    colours.add((r << 16) | (g << 8) | b);
+  }
+  return { foregroundFraction: foreground / (bitmap.width * bitmap.height), distinctColours: colours.size };
+}
+
+// Runs in the page: the last streamed level against qmc.decode of the whole file.
+async function lastLevelEqualsWholeDecode(url) {
+  const { loadQMC } = await import('../src/qmc.js');
+  const whole = (await loadQMC()).decode(new Uint8Array(await (await fetch(url)).arrayBuffer()));
+  const last = window.qmcViewer.levels.at(-1);
+  const same = (a, b) => a.length === b.length && a.every((v, i) => v === b[i]);
+  return same(last.attributes.position.array, whole.positions) && same(last.index.array, whole.indices);
+}
+
+test('the viewer shows a throttled progressive file level by level', { timeout: 60000 }, async () => {
+  assert.ok(existsSync(CHROMIUM), `${CHROMIUM} (scripts/install-web-deps.sh installs it)`);
+  const server = await startServer({ port: 0, throttle: BYTES_PER_SECOND });
+  const browser = await puppeteer.launch({
+    executablePath: CHROMIUM, headless: true,
+    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--window-size=640,480'],
+  });
+  try {
+    const page = await browser.newPage();
+    await page.setViewport({ width: 640, height: 480 });
+    const pageErrors = [];
+    page.on('pageerror', (e) => pageErrors.push(e.message));
+    const origin = `http://127.0.0.1:${server.address().port}`;
+    await page.goto(`${origin}/web/viewer/`);
+    const shots = [];
+    await page.exposeFunction('qmcTestLevelShown', async (info) => {
+      shots.push({ info, png: await page.screenshot({ encoding: 'base64' }) });
+    });
+    const started = Date.now();
+    await page.evaluate((url) => {
+      window.qmcViewer.onLevelShown = (info) => window.qmcTestLevelShown(info);
+      document.getElementById('url').value = url;
+      document.getElementById('open').requestSubmit();
+    }, FILE);
+    await page.waitForFunction(() => window.qmcViewer.done || window.qmcViewer.error, { timeout: 30000 });
+    assert.deepEqual(pageErrors, []);
+    assert.equal(await page.evaluate(() => window.qmcViewer.error), null);
+    const total = await page.evaluate(() => window.qmcViewer.total);
+    assert.equal(shots.length, 6, 'base mesh and 5 levels, one screenshot each');
+
+    mkdirSync(new URL('../test-output/', import.meta.url), { recursive: true });
+    const measured = [];
+    for (const [level, { info, png }] of shots.entries()) {
+      writeFileSync(new URL(`../test-output/level${level}.png`, import.meta.url), Buffer.from(png, 'base64'));
+      measured.push(await page.evaluate(measure, png));
+      assert.equal(info.level, level);
+      assert.equal(info.faceCount, 8 * 4 ** level);
+      assert.ok(measured[level].foregroundFraction > 0.05, `level ${level} on screen: ${JSON.stringify(measured[level])}`);
+      if (level < 5) assert.ok(info.bytesReceived < total, `level ${level} shown after ${info.bytesReceived} of ${total} bytes`);
+    }
+    console.log(`first level on screen after ${shots[0].info.bytesReceived} bytes; all in ${Date.now() - started} ms;`,
+                measured.map((m) => `${m.distinctColours} colours / ${(100 * m.foregroundFraction).toFixed(1)}%`).join(', '));
+    for (let level = 1; level < 4; ++level) {
+      assert.ok(measured[level].distinctColours > measured[level - 1].distinctColours,
+        `level ${level} has more facets than level ${level - 1}: ${measured[level].distinctColours} colours`);
+    }
+    assert.ok(await page.evaluate(lastLevelEqualsWholeDecode, FILE), 'the last level is the whole-file decode');
+  } finally {
+    await browser.close();
+    server.close();
+  }
+});
