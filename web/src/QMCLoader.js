@@ -6,6 +6,7 @@
 //               (error) => console.error(error));
 //   const geometry = await loader.loadAsync('model.qmc');
 //   loader.parse(arrayBuffer, onLoad, onError);
+//   loader.preload();  // optional: start the worker before the first load
 //   loader.dispose();
 //
 // Decoding runs in a Web Worker (qmc_worker.js). The HTTP body is read as a
@@ -23,6 +24,13 @@ export class QMCLoader extends Loader {
     this.worker = null;
     this.nextId = 1;
     this.pending = new Map(); // id -> { onLevel, resolve, reject }
+  }
+
+  // Starts the worker and its WebAssembly now rather than at the first load,
+  // as DRACOLoader.preload does: the first mesh then shows sooner.
+  preload() {
+    this.workerFor();
+    return this;
   }
 
   // What one file may cost (qmc.js: maxVertices, maxFaces, maxOutputBytes ...).

@@ -9,11 +9,8 @@ import assert from 'node:assert/strict';
 import { existsSync, mkdirSync, writeFileSync } from 'node:fs';
 import { test } from 'node:test';
 
-import puppeteer from 'puppeteer-core';
+import { CHROMIUM, openViewer, streamIntoViewer } from './browser.mjs';
 
-import { startServer } from '../tools/serve.mjs';
-
-const CHROMIUM = '/usr/bin/chromium';
 const FILE = '/conformance/vectors/valid_loop_octahedron_sphere_5_levels.qmc';
 const BYTES_PER_SECOND = 3000; // 4869 bytes: about 1.6 s
 
@@ -47,31 +44,15 @@ async function lastLevelEqualsWholeDecode(url) {
 
 test('the viewer shows a throttled progressive file level by level', { timeout: 60000 }, async () => {
   assert.ok(existsSync(CHROMIUM), `${CHROMIUM} (scripts/install-web-deps.sh installs it)`);
-  const server = await startServer({ port: 0, throttle: BYTES_PER_SECOND });
-  const browser = await puppeteer.launch({
-    executablePath: CHROMIUM, headless: true,
-    args: ['--no-sandbox', '--use-angle=swiftshader', '--enable-unsafe-swiftshader', '--window-size=640,480'],
-  });
+  const { page, pageErrors, close } = await openViewer({ throttle: BYTES_PER_SECOND });
   try {
-    const page = await browser.newPage();
-    await page.setViewport({ width: 640, height: 480 });
-    const pageErrors = [];
-    page.on('pageerror', (e) => pageErrors.push(e.message));
-    const origin = `http://127.0.0.1:${server.address().port}`;
-    await page.goto(`${origin}/web/viewer/`);
     const shots = [];
-    await page.exposeFunction('qmcTestLevelShown', async (info) => {
+    const started = Date.now();
+    const error = await streamIntoViewer(page, FILE, async (info) => {
       shots.push({ info, png: await page.screenshot({ encoding: 'base64' }) });
     });
-    const started = Date.now();
-    await page.evaluate((url) => {
-      window.qmcViewer.onLevelShown = (info) => window.qmcTestLevelShown(info);
-      document.getElementById('url').value = url;
-      document.getElementById('open').requestSubmit();
-    }, FILE);
-    await page.waitForFunction(() => window.qmcViewer.done || window.qmcViewer.error, { timeout: 30000 });
     assert.deepEqual(pageErrors, []);
-    assert.equal(await page.evaluate(() => window.qmcViewer.error), null);
+    assert.equal(error, null);
     const total = await page.evaluate(() => window.qmcViewer.total);
     assert.equal(shots.length, 6, 'base mesh and 5 levels, one screenshot each');
 
@@ -93,7 +74,6 @@ test('the viewer shows a throttled progressive file level by level', { timeout: 
     }
     assert.ok(await page.evaluate(lastLevelEqualsWholeDecode, FILE), 'the last level is the whole-file decode');
   } finally {
-    await browser.close();
-    server.close();
+    await close();
   }
 });

@@ -26,7 +26,7 @@ controls.addEventListener('change', render);
 const material = new THREE.MeshStandardMaterial({ color: 0xc8b89a, flatShading: true, side: THREE.DoubleSide });
 const mesh = new THREE.Mesh(new THREE.BufferGeometry(), material);
 scene.add(mesh);
-const loader = new QMCLoader();
+const loader = new QMCLoader().preload();
 
 // What a test reads: every level shown so far, and the load's outcome.
 const state = { url: null, levels: [], shown: null, total: 0, received: 0, done: false, error: null,
@@ -78,17 +78,22 @@ function show(geometry) {
   render();
 }
 
-// Levels are shown one after another: a test's hook may hold each on screen.
+// Geometries are shown one after another, each until its frame is drawn and
+// a test's hook (onLevelShown) has returned.
 let queue = Promise.resolve();
+async function showUntilDrawn(geometry) {
+  show(geometry);
+  await new Promise((resolve) => requestAnimationFrame(resolve));
+  await state.onLevelShown?.(geometry.userData);
+}
+
 function showLevel(geometry) {
-  queue = queue.then(async () => {
+  queue = queue.then(() => {
     state.levels.push(geometry);
     slider.max = String(state.levels.length - 1);
     slider.value = slider.max;
     slider.disabled = state.levels.length < 2;
-    show(geometry);
-    await new Promise((resolve) => requestAnimationFrame(resolve));
-    await state.onLevelShown?.(geometry.userData);
+    return showUntilDrawn(geometry);
   });
 }
 
@@ -102,8 +107,8 @@ function open(source, name) {
     describe();
   };
   const onLoad = (geometry) => {
-    queue = queue.then(() => {
-      if (state.levels.length === 0) show(geometry); // progressive files: shown level by level
+    queue = queue.then(async () => {
+      if (state.levels.length === 0) await showUntilDrawn(geometry); // progressive files: shown level by level
       state.done = true;
       describe();
     });
