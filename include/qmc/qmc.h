@@ -12,7 +12,7 @@
  *   ... m.positions, m.triangles ...
  *   qmc_mesh_free(&m); qmc_decoder_destroy(d);
  *
- * Arrays handed out (qmc_mesh's, canonical output) are the caller's: free them
+ * Arrays handed out (qmc_mesh's, attributes, canonical output) are the caller's: free them
  * with qmc_mesh_free, or keep one by copying its pointer and setting the
  * field to NULL before qmc_mesh_free, then release it with qmc_free.
  */
@@ -131,6 +131,21 @@ QMC_API int qmc_decoder_complete_level(const qmc_decoder* decoder);
  * (13.9), or the mesh of a file without LOOP. */
 #define QMC_FINEST (-1)
 QMC_API int qmc_decoder_mesh(const qmc_decoder* decoder, int level, qmc_mesh* out);
+
+/* Section 13.2: a geometry image's planes after X, Y, Z are per-vertex
+ * attributes of its mesh (13.9): kind 3, 4, 5 a normal's X, Y, Z, 6 a
+ * curvature, 7 a colour or texture channel, 8 any other scalar. Attribute i
+ * is plane 3 + i, one value per vertex of the QMC_FINEST mesh, its
+ * representative pixel's sample (13.2). attribute_count counts those decoded
+ * so far (0 for a file without GIMG); values are freed with qmc_free. */
+typedef struct qmc_attribute {
+  uint32_t kind;
+  uint32_t count;  /* the mesh's vertex_count */
+  float* values;
+} qmc_attribute;
+
+QMC_API int qmc_decoder_attribute_count(const qmc_decoder* decoder);
+QMC_API int qmc_decoder_attribute(const qmc_decoder* decoder, int index, qmc_attribute* out);
 
 /* Spec 10.2, 12.9, 13.10: the canonical output of the file decoded so far,
  * whose SHA-256 the conformance manifest lists. *bytes is freed with qmc_free. */

@@ -236,6 +236,33 @@ int qmc_decoder_mesh(const qmc_decoder* decoder, int level, qmc_mesh* out) {
   QMC_CATCH_ALL(qmc_mesh_free(out); return QMC_LIMIT_EXCEEDED)
 }
 
+int qmc_decoder_attribute_count(const qmc_decoder* decoder) {
+  if (!decoder || !decoder->status.ok()) return 0;
+  const qmc::DecodedFile& file = decoder->stream.file();
+  const qmc::GeometryImageData& gim = file.gim;
+  // The 13.9 mesh exists once plane 2 is in; planes arrive in order (13.1).
+  if (!gim.present || gim.vertex_pixels.size() != file.mesh.vertex_count()) return 0;
+  int count = 0;
+  while (size_t(3 + count) < gim.planes.size() && !gim.planes[size_t(3 + count)].samples.empty()) ++count;
+  return count;
+}
+
+int qmc_decoder_attribute(const qmc_decoder* decoder, int index, qmc_attribute* out) {
+  if (!decoder || !out) return QMC_INVALID_ARGUMENT;
+  std::memset(out, 0, sizeof(*out));
+  if (!decoder->status.ok()) return int(decoder->status.code());
+  if (index < 0 || index >= qmc_decoder_attribute_count(decoder)) return QMC_INVALID_ARGUMENT;
+  const qmc::GeometryImageData& gim = decoder->stream.file().gim;
+  const int plane = 3 + index;
+  const size_t count = gim.vertex_pixels.size();
+  out->values = static_cast<float*>(std::malloc(count ? count * sizeof(float) : 1));
+  if (!out->values) return QMC_LIMIT_EXCEEDED;
+  for (size_t v = 0; v < count; ++v) out->values[v] = float(gim.value(plane, gim.vertex_pixels[v]));
+  out->kind = gim.planes[size_t(plane)].kind;
+  out->count = uint32_t(count);
+  return QMC_OK;
+}
+
 int qmc_decoder_canonical_output(const qmc_decoder* decoder, uint8_t** bytes, size_t* size) {
   if (!decoder || !bytes || !size) return QMC_INVALID_ARGUMENT;
   *bytes = nullptr;

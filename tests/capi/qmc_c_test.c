@@ -3,7 +3,7 @@
  * streamed in 1-byte, random and 4 KB pieces (spec 3.5). A valid vector must
  * give the manifest's SHA-256 of the canonical output (10.2), an invalid one
  * the manifest's error identifier (section 9). Then the API's own promises:
- * limits, peek, polygon and triangle arrays, ownership, bad arguments.
+ * limits, peek, polygon and triangle arrays, attributes, ownership, bad arguments.
  *
  *   qmc_c_test conformance/MANIFEST
  *
@@ -201,11 +201,48 @@ static void check_mesh_arrays(const char* manifest) {
   check(mesh.corners == NULL && mesh.vertex_count == 0, "qmc_mesh_free zeroes the mesh", "mesh");
   qmc_free(kept);
   check(qmc_decoder_mesh(d, 0, &mesh) == QMC_INVALID_ARGUMENT, "a file without LOOP has no level 0", "mesh");
+  check(qmc_decoder_attribute_count(d) == 0, "a file without GIMG has no attributes", "mesh");
   check(qmc_decoder_feed(NULL, cube, size) == QMC_INVALID_ARGUMENT, "feeding a NULL decoder", "mesh");
   check(strcmp(qmc_error_name(QMC_BAD_CRC), "bad_crc") == 0 && strcmp(qmc_error_name(99), "unknown") == 0,
         "error names are spec 9's identifiers", "mesh");
   qmc_decoder_destroy(d);
   free(cube);
+}
+
+/* Spec 13.2: valid_gim_f32_attributes carries planes of kinds 3..6 after
+ * X Y Z, made by the vector generator as the position over 3 (kinds 3..5)
+ * and half the pixel's raster index (kind 6); each is one value a vertex. */
+static void check_attributes(const char* manifest) {
+  size_t size = 0;
+  uint8_t* gim = read_file(vector_path(manifest, "valid_gim_f32_attributes.qmc"), &size);
+  qmc_decoder* d = qmc_decoder_create(NULL);
+  qmc_mesh mesh;
+  qmc_attribute attribute;
+  uint32_t v, over_three = 1, halves = 1;
+  int i, kinds_ok = 1;
+  check(qmc_decoder_decode(d, gim, size) == QMC_OK && qmc_decoder_mesh(d, QMC_FINEST, &mesh) == QMC_OK &&
+            qmc_decoder_attribute_count(d) == 4,
+        "a geometry image with 4 attribute planes", "attributes");
+  for (i = 0; i < qmc_decoder_attribute_count(d); ++i) {
+    if (qmc_decoder_attribute(d, i, &attribute) != QMC_OK || attribute.kind != (uint32_t)(3 + i) ||
+        attribute.count != mesh.vertex_count) {
+      kinds_ok = 0;
+      continue;
+    }
+    for (v = 0; v < attribute.count; ++v) {
+      const float value = attribute.values[v];
+      if (i < 3) over_three &= value - mesh.positions[3 * v + i] / 3 < 1e-6f && mesh.positions[3 * v + i] / 3 - value < 1e-6f;
+      else halves &= value >= 0 && value <= 40 && value * 2 == (float)(int)(value * 2);
+    }
+    qmc_free(attribute.values);
+  }
+  check(kinds_ok, "attribute i has kind 3 + i and a value per vertex", "attributes");
+  check(over_three, "kinds 3..5 are the vertex's X, Y, Z over 3", "attributes");
+  check(halves, "kind 6 is half a raster index of the 9 x 9 image", "attributes");
+  check(qmc_decoder_attribute(d, 4, &attribute) == QMC_INVALID_ARGUMENT, "no fifth attribute", "attributes");
+  qmc_mesh_free(&mesh);
+  qmc_decoder_destroy(d);
+  free(gim);
 }
 
 int main(int argc, char** argv) {
@@ -219,6 +256,7 @@ int main(int argc, char** argv) {
   check_limits(argv[1]);
   check_peek(argv[1]);
   check_mesh_arrays(argv[1]);
+  check_attributes(argv[1]);
   printf("%d vectors x %d ways\n%d passed, %d failed\n", vectors, MODE_COUNT, passed, failed);
   return failed ? 1 : 0;
 }

@@ -14,7 +14,8 @@
 // (spec 12) calls onProgress with each level's BufferGeometry as soon as its
 // chunk has arrived; onLoad gets the finest. Geometry userData carries level,
 // levelCount, vertexCount, faceCount, the polygon structure (faceSizes,
-// corners), bytesReceived and decodeMs.
+// corners), a geometry image's attributes (its normals also become the
+// 'normal' attribute), bytesReceived and decodeMs.
 import { BufferAttribute, BufferGeometry, Loader } from 'three';
 
 export class QMCLoader extends Loader {
@@ -138,8 +139,21 @@ function toGeometry(mesh, info) {
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new BufferAttribute(mesh.positions, 3));
   geometry.setIndex(new BufferAttribute(mesh.indices, 1));
-  geometry.computeVertexNormals();
+  const normal = normalsOf(mesh);
+  if (normal) geometry.setAttribute('normal', new BufferAttribute(normal, 3));
+  else geometry.computeVertexNormals();
   geometry.userData = { level: mesh.level, vertexCount: mesh.vertexCount, faceCount: mesh.faceCount,
-                        faceSizes: mesh.faceSizes, corners: mesh.corners, ...info };
+                        faceSizes: mesh.faceSizes, corners: mesh.corners, attributes: mesh.attributes, ...info };
   return geometry;
+}
+
+// A geometry image's normal planes (spec 13.2 kinds 3, 4, 5), interleaved.
+function normalsOf(mesh) {
+  const planes = [3, 4, 5].map((kind) => mesh.attributes.find((a) => a.kind === kind));
+  if (planes.some((p) => !p)) return null;
+  const normal = new Float32Array(3 * mesh.vertexCount);
+  for (let v = 0; v < mesh.vertexCount; ++v) {
+    for (let axis = 0; axis < 3; ++axis) normal[3 * v + axis] = planes[axis].values[v];
+  }
+  return normal;
 }

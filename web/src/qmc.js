@@ -10,7 +10,8 @@
 //
 // Meshes are plain objects of typed arrays the caller owns: positions
 // (Float32Array, 3 per vertex), indices (Uint32Array, the polygons cut into
-// fans for rendering), faceSizes and corners (the polygon structure).
+// fans for rendering), faceSizes and corners (the polygon structure), and
+// attributes (a geometry image's planes after X Y Z: normals, curvature ...).
 // Rejections throw a QMCError whose `identifier` is spec section 9's.
 import createQmcModule from '../dist/qmc_decoder.mjs';
 
@@ -22,6 +23,7 @@ const NO_LIMIT = 0xffffffffffffffffn;
 const LIMITS_SIZE = 40; // qmc_limits: two uint32, four uint64
 const MESH_SIZE = 32; // qmc_mesh on wasm32: four uint32, four pointers
 const SUMMARY_SIZE = 88;
+const ATTRIBUTE_SIZE = 12; // qmc_attribute on wasm32: kind, count, pointer
 export const FINEST = -1;
 
 export class QMCError extends Error {
@@ -146,15 +148,36 @@ class StreamDecoder {
   get levelCount() { return this.qmc.wasm._qmc_decoder_level_count(this.handle); }
   get completeLevel() { return this.qmc.wasm._qmc_decoder_complete_level(this.handle); }
 
-  // The mesh of a complete level, or with FINEST the file's mesh so far.
+  // The mesh of a complete level, or with FINEST the file's mesh so far,
+  // with a geometry image's attribute planes (spec 13.2): attributes is a
+  // list of { kind, values: Float32Array, one per vertex }.
   mesh(level = FINEST) {
     const w = this.qmc.wasm;
     const out = w._malloc(MESH_SIZE);
     try {
       this.check(w._qmc_decoder_mesh(this.handle, level, out));
-      return readMesh(w, out, level === FINEST ? this.completeLevel : level);
+      const mesh = readMesh(w, out, level === FINEST ? this.completeLevel : level);
+      mesh.attributes = level === FINEST ? this.attributes() : [];
+      return mesh;
     } finally {
       w._qmc_mesh_free(out);
+      w._free(out);
+    }
+  }
+
+  attributes() {
+    const w = this.qmc.wasm;
+    const out = w._malloc(ATTRIBUTE_SIZE);
+    try {
+      const attributes = [];
+      for (let i = 0; i < w._qmc_decoder_attribute_count(this.handle); ++i) {
+        this.check(w._qmc_decoder_attribute(this.handle, i, out));
+        const [kind, count, values] = w.HEAPU32.subarray(out >> 2, (out >> 2) + 3);
+        attributes.push({ kind, values: new Float32Array(w.HEAPF32.buffer.slice(values, values + 4 * count)) });
+        w._qmc_free(values);
+      }
+      return attributes;
+    } finally {
       w._free(out);
     }
   }

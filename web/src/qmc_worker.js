@@ -10,7 +10,8 @@ const ready = loadQMC();
 const files = new Map(); // id -> { stream, shownLevel, decodeMs }
 
 function transferables(mesh) {
-  return [mesh.positions.buffer, mesh.indices.buffer, mesh.faceSizes.buffer, mesh.corners.buffer];
+  return [mesh.positions.buffer, mesh.indices.buffer, mesh.faceSizes.buffer, mesh.corners.buffer,
+          ...mesh.attributes.map((a) => a.values.buffer)];
 }
 
 function post(type, id, file, mesh) {

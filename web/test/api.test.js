@@ -49,3 +49,14 @@ test('a progressive file streams level by level, each 4 times the faces of the o
   assert.throws(() => stream.mesh(6), (e) => e.identifier === 'invalid_argument');
   stream.dispose();
 });
+
+test('a geometry image with normals and a curvature: attributes of kinds 3..6, one value per vertex', () => {
+  const mesh = qmc.decode(vector('valid_gim_f32_attributes.qmc'));
+  assert.deepEqual(mesh.attributes.map((a) => a.kind), [3, 4, 5, 6]);
+  for (const { values } of mesh.attributes) assert.equal(values.length, mesh.vertexCount);
+  // The vector generator made kinds 3..5 the position over 3 (tools/make_vectors_main.cc).
+  for (let v = 0; v < mesh.vertexCount; ++v) {
+    assert.ok(Math.abs(mesh.attributes[0].values[v] - mesh.positions[3 * v] / 3) < 1e-6);
+  }
+  assert.deepEqual(qmc.decode(vector('valid_cube_8bit.qmc')).attributes, []);
+});

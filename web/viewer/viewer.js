@@ -59,10 +59,12 @@ function frame(geometry) {
 
 function describe() {
   const g = state.shown?.userData;
-  const lines = [`${state.url ?? 'no file'}: ${state.received} of ${state.total || '?'} bytes received`];
+  const name = state.url ? state.url.split('/').pop() : 'no file';
+  const lines = [`${name}: ${state.received} of ${state.total || '?'} bytes received`];
   if (g) {
     const level = g.levelCount > 0 ? `level ${g.level} of ${g.levelCount}` : 'single mesh';
-    lines.push(`${level}: ${g.vertexCount} vertices, ${g.faceCount} faces; decode ${g.decodeMs.toFixed(1)} ms`);
+    const planes = g.attributes.length ? `, ${g.attributes.length} attribute planes` : '';
+    lines.push(`${level}: ${g.vertexCount} vertices, ${g.faceCount} faces${planes}; decode ${g.decodeMs.toFixed(1)} ms`);
   }
   if (state.error) lines.push(`error: ${state.error}`);
   else if (state.done) lines.push('complete');
