@@ -60,3 +60,13 @@ test('a geometry image with normals and a curvature: attributes of kinds 3..6, o
   }
   assert.deepEqual(qmc.decode(vector('valid_cube_8bit.qmc')).attributes, []);
 });
+
+test('hostile files of under 130 bytes are refused by the default limits, not allocated (spec 8.1)', () => {
+  const hostile = (name) => readFileSync(new URL(`../../fuzz/regressions/decode_file/${name}`, import.meta.url));
+  for (const name of ['loop_base_claims_2p32_vertices', 'loop_base_claims_200M_vertices', 'gim_unmasked_33M_triangles']) {
+    const bytes = hostile(name);
+    assert.ok(bytes.length < 130, name);
+    assert.throws(() => qmc.decode(bytes), (e) => e.identifier === 'limit_exceeded', name);
+  }
+  assert.ok(qmc.wasm.HEAPU8.length < 64 * 2 ** 20, `the wasm heap stayed small: ${qmc.wasm.HEAPU8.length} bytes`);
+});
