@@ -25,6 +25,8 @@ export class QMCLoader extends Loader {
     this.worker = null;
     this.nextId = 1;
     this.pending = new Map(); // id -> { onLevel, resolve, reject }
+    // Resolves once the worker's decoder is loaded and warmed up (preload starts it).
+    this.ready = new Promise((resolve) => { this.onReady = resolve; });
   }
 
   // Starts the worker and its WebAssembly now rather than at the first load,
@@ -116,6 +118,7 @@ export class QMCLoader extends Loader {
   }
 
   receive({ type, id, mesh, levelCount, bytesFed, decodeMs, identifier, message }) {
+    if (type === 'ready') this.onReady();
     const pending = this.pending.get(id);
     if (!pending) return;
     if (type === 'error') {

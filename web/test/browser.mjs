@@ -8,8 +8,9 @@ import { startServer } from '../tools/serve.mjs';
 export const CHROMIUM = '/usr/bin/chromium';
 
 // The viewer page at 640 x 480 behind a server sending .qmc bodies at
-// `throttle` bytes per second; close() stops both.
-export async function openViewer({ throttle = 0, data = null } = {}) {
+// `throttle` bytes per second; close() stops both. With warm, returns once
+// the loader's worker has its decoder loaded and warmed up.
+export async function openViewer({ throttle = 0, data = null, warm = false } = {}) {
   const server = await startServer({ port: 0, throttle, data });
   const browser = await puppeteer.launch({
     executablePath: CHROMIUM, headless: true,
@@ -20,6 +21,7 @@ export async function openViewer({ throttle = 0, data = null } = {}) {
   const pageErrors = [];
   page.on('pageerror', (e) => pageErrors.push(e.message));
   await page.goto(`http://127.0.0.1:${server.address().port}/web/viewer/`);
+  if (warm) await page.waitForFunction(() => window.qmcViewer.decoderReady, { timeout: 30000 });
   const close = async () => {
     await browser.close();
     server.close();

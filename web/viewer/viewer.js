@@ -30,8 +30,9 @@ const loader = new QMCLoader().preload();
 
 // What a test reads: every level shown so far, and the load's outcome.
 const state = { url: null, levels: [], shown: null, total: 0, received: 0, done: false, error: null,
-                onLevelShown: null };
+                onLevelShown: null, decoderReady: false };
 window.qmcViewer = state;
+loader.ready.then(() => { state.decoderReady = true; });
 
 function render() {
   renderer.render(scene, camera);
@@ -146,6 +147,12 @@ document.body.addEventListener('drop', async (event) => {
 });
 window.addEventListener('resize', resize);
 resize();
+// The material's shaders compiled now, not when the first mesh arrives.
+mesh.geometry = new THREE.TetrahedronGeometry(1e-6);
+renderer.compile(scene, camera);
+render();
+mesh.geometry = new THREE.BufferGeometry();
+render();
 const initial = new URLSearchParams(location.search).get('url');
 if (initial) {
   document.getElementById('url').value = initial;
