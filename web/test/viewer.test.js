@@ -73,6 +73,32 @@ test('the viewer shows a throttled progressive file level by level', { timeout: 
         `level ${level} has more facets than level ${level - 1}: ${measured[level].distinctColours} colours`);
     }
     assert.ok(await page.evaluate(lastLevelEqualsWholeDecode, FILE), 'the last level is the whole-file decode');
+    const slidToLevel1 = await page.evaluate(() => {
+      const slider = document.getElementById('level');
+      slider.value = '1';
+      slider.dispatchEvent(new Event('input'));
+      return [window.qmcViewer.shown.userData.level, document.getElementById('status').textContent];
+    });
+    assert.equal(slidToLevel1[0], 1, 'the slider shows level 1 again');
+    assert.match(slidToLevel1[1], /level 1 of 5: 18 vertices, 32 faces/);
+  } finally {
+    await close();
+  }
+});
+
+test('a .qmc dropped on the viewer is shown with its counts', { timeout: 60000 }, async () => {
+  const { page, pageErrors, close } = await openViewer();
+  try {
+    await page.evaluate(async () => {
+      const bytes = await (await fetch('/conformance/vectors/valid_cube_8bit.qmc')).arrayBuffer();
+      const transfer = new DataTransfer();
+      transfer.items.add(new File([bytes], 'cube.qmc'));
+      document.body.dispatchEvent(new DragEvent('drop', { dataTransfer: transfer, bubbles: true, cancelable: true }));
+    });
+    await page.waitForFunction(() => window.qmcViewer.done || window.qmcViewer.error, { timeout: 30000 });
+    assert.deepEqual(pageErrors, []);
+    const status = await page.evaluate(() => document.getElementById('status').textContent);
+    assert.match(status, /cube\.qmc: \d+ of \d+ bytes received\nsingle mesh: 8 vertices, 6 faces/);
   } finally {
     await close();
   }
