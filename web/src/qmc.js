@@ -102,8 +102,9 @@ class QMC {
     const w = this.wasm;
     if (bytes.length > this.scratchSize) {
       w._free(this.scratch);
-      this.scratchSize = Math.max(bytes.length, 2 * this.scratchSize, 65536);
-      this.scratch = w._malloc(this.scratchSize);
+      const size = Math.max(bytes.length, 2 * this.scratchSize, 65536);
+      this.scratch = w._malloc(size);
+      this.scratchSize = this.scratch ? size : 0;
       if (!this.scratch) throw new QMCError(14, 'limit_exceeded', `no memory for ${bytes.length} input bytes`);
     }
     w.HEAPU8.set(bytes, this.scratch);
