@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian packages qmc needs to build, test and benchmark.
 # Idempotent: installs only what is missing, and touches nothing else.
+#   scripts/install-deps.sh [PACKAGE...]
 set -euo pipefail
 packages=(
   cmake ninja-build g++ pkg-config      # build
@@ -11,6 +12,8 @@ packages=(
   libmeshoptimizer-dev                  # bench/: meshoptimizer + zstd in compression.md
   libpng-dev                            # tools: geometry-image planes and pictures
 )
+# Given package names, installs those instead (scripts/install-web-deps.sh).
+[ $# -eq 0 ] || packages=("$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,0 +1,162 @@
+// three.js loader for .qmc files, in the shape of three's DRACOLoader:
+//
+//   const loader = new QMCLoader();
+//   loader.load('model.qmc', (geometry) => scene.add(new Mesh(geometry, material)),
+//               (event) => { if (event.geometry) show(event.geometry); },  // each progressive level
+//               (error) => console.error(error));
+//   const geometry = await loader.loadAsync('model.qmc');
+//   loader.parse(arrayBuffer, onLoad, onError);
+//   loader.preload();  // optional: start the worker before the first load
+//   loader.dispose();
+//
+// Decoding runs in a Web Worker (qmc_worker.js). The HTTP body is read as a
+// stream and handed to the worker chunk by chunk, so a progressive file
+// (spec 12) calls onProgress with each level's BufferGeometry as soon as its
+// chunk has arrived; onLoad gets the finest. Geometry userData carries level,
+// levelCount, vertexCount, faceCount, the polygon structure (faceSizes,
+// corners), a geometry image's attributes (its normals also become the
+// 'normal' attribute), bytesReceived and decodeMs.
+import { BufferAttribute, BufferGeometry, Loader } from 'three';
+
+export class QMCLoader extends Loader {
+  constructor(manager) {
+    super(manager);
+    this.limits = undefined; // spec 8.1, as qmc.js's limits; undefined: the defaults
+    this.worker = null;
+    this.nextId = 1;
+    this.pending = new Map(); // id -> { onLevel, resolve, reject }
+    // Resolves once the worker's decoder is loaded and warmed up (preload starts it).
+    this.ready = new Promise((resolve) => { this.onReady = resolve; });
+  }
+
+  // Starts the worker and its WebAssembly now rather than at the first load,
+  // as DRACOLoader.preload does: the first mesh then shows sooner.
+  preload() {
+    this.workerFor();
+    return this;
+  }
+
+  // What one file may cost (qmc.js: maxVertices, maxFaces, maxOutputBytes ...).
+  setLimits(limits) {
+    this.limits = limits;
+    return this;
+  }
+
+  load(url, onLoad, onProgress, onError) {
+    this.manager.itemStart(url);
+    this.stream(this.resolveURL(url), onProgress)
+      .then((geometry) => onLoad?.(geometry))
+      .catch((error) => {
+        if (onError) onError(error);
+        else console.error(error);
+        this.manager.itemError(url);
+      })
+      .finally(() => this.manager.itemEnd(url));
+  }
+
+  // The finest level's geometry of a complete file held in memory; like
+  // load, onProgress (optional) gets each level's geometry of a progressive file.
+  parse(buffer, onLoad, onError, onProgress) {
+    const id = this.open();
+    const bytes = buffer instanceof ArrayBuffer ? buffer.slice(0) : buffer.slice().buffer;
+    const total = bytes.byteLength;
+    this.finished(id, (geometry) => onProgress?.({ loaded: total, total, lengthComputable: true, geometry }))
+      .then(onLoad, onError);
+    this.workerFor().postMessage({ type: 'chunk', id, bytes }, [bytes]);
+    this.workerFor().postMessage({ type: 'end', id });
+  }
+
+  dispose() {
+    this.worker?.terminate();
+    this.worker = null;
+    for (const { reject } of this.pending.values()) reject(new Error('QMCLoader disposed'));
+    this.pending.clear();
+    return this;
+  }
+
+  resolveURL(url) {
+    return this.path ? this.path + url : url;
+  }
+
+  async stream(url, onProgress) {
+    const response = await fetch(url, { headers: this.requestHeader, credentials: this.withCredentials ? 'include' : 'same-origin' });
+    if (!response.ok) throw new Error(`QMCLoader: ${url}: HTTP ${response.status}`);
+    const total = Number(response.headers.get('Content-Length')) || 0;
+    const id = this.open();
+    let loaded = 0;
+    const done = this.finished(id, (geometry) => onProgress?.({ loaded, total, lengthComputable: total > 0, geometry }));
+    const reader = response.body.getReader();
+    for (;;) {
+      const { value, done: ended } = await reader.read();
+      if (ended || !this.pending.has(id)) break;
+      loaded += value.byteLength;
+      const bytes = value.buffer.slice(value.byteOffset, value.byteOffset + value.byteLength);
+      this.workerFor().postMessage({ type: 'chunk', id, bytes }, [bytes]);
+      onProgress?.({ loaded, total, lengthComputable: total > 0 });
+    }
+    if (this.pending.has(id)) this.workerFor().postMessage({ type: 'end', id });
+    else reader.cancel();
+    return done;
+  }
+
+  open() {
+    const id = this.nextId++;
+    this.workerFor().postMessage({ type: 'open', id, limits: this.limits });
+    return id;
+  }
+
+  finished(id, onLevel) {
+    return new Promise((resolve, reject) => this.pending.set(id, { onLevel, resolve, reject }));
+  }
+
+  workerFor() {
+    if (!this.worker) {
+      this.worker = new Worker(new URL('./qmc_worker.js', import.meta.url), { type: 'module' });
+      this.worker.onmessage = ({ data }) => this.receive(data);
+    }
+    return this.worker;
+  }
+
+  receive({ type, id, mesh, levelCount, bytesFed, decodeMs, identifier, message }) {
+    if (type === 'ready') this.onReady();
+    const pending = this.pending.get(id);
+    if (!pending) return;
+    if (type === 'error') {
+      this.pending.delete(id);
+      const error = new Error(`QMCLoader: ${identifier}: ${message}`);
+      error.identifier = identifier; // spec section 9
+      pending.reject(error);
+      return;
+    }
+    const geometry = toGeometry(mesh, { levelCount, bytesReceived: bytesFed, decodeMs });
+    if (type === 'level') {
+      pending.onLevel?.(geometry);
+    } else {
+      this.pending.delete(id);
+      pending.resolve(geometry);
+    }
+  }
+}
+
+function toGeometry(mesh, info) {
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(mesh.positions, 3));
+  geometry.setIndex(new BufferAttribute(mesh.indices, 1));
+  const normal = normalsOf(mesh);
+  if (normal) geometry.setAttribute('normal', new BufferAttribute(normal, 3));
+  else geometry.computeVertexNormals();
+  geometry.userData = { level: mesh.level, vertexCount: mesh.vertexCount, faceCount: mesh.faceCount,
+                        faceSizes: mesh.faceSizes, corners: mesh.corners, attributes: mesh.attributes, ...info };
+  return geometry;
+}
+
+// A geometry image's normal planes (spec 13.2 kinds 3, 4, 5), interleaved.
+function normalsOf(mesh) {
+  const planes = [3, 4, 5].map((kind) => mesh.attributes.find((a) => a.kind === kind));
+  if (planes.some((p) => !p)) return null;
+  const normal = new Float32Array(3 * mesh.vertexCount);
+  for (let v = 0; v < mesh.vertexCount; ++v) {
+    for (let axis = 0; axis < 3; ++axis) normal[3 * v + axis] = planes[axis].values[v];
+  }
+  return normal;
+}
