@@ -64,6 +64,7 @@ contains info-deltas-method "$work/out" "deltas (spec 6), 12 bits/axis"
 check deltas-need-per-axis 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --positions deltas
 check step-and-bits 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --step 0.01 --bits 10
 check bad-step 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --step -1
+check step-progressive 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --progressive --step 0.01
 check step-too-fine 3 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --step 1e-12
 check soup-encode 0 "$qmc" encode "$work/soup.off" "$work/soup.qmc" -q 16 --text note=soup --quiet
 check soup-verify 0 "$qmc" verify "$work/soup.off" "$work/soup.qmc"

@@ -168,8 +168,13 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
   for (const auto& option : cl.options)
     bits_or_grid = bits_or_grid || option.first == "--bits" || option.first == "-q" || option.first == "--grid";
   const int grids = int(bits_or_grid) + int(o.position_step > 0) + int(o.max_position_error > 0);
+  bool grid_given = o.position_step > 0 || o.max_position_error > 0;
+  for (const auto& option : cl.options) grid_given = grid_given || option.first == "--grid";
+  if (grid_given && (args->progressive || args->options.gim.size > 0))
+    return usage_error("encode", "--grid, --step and --max-error are for plain files: a progressive base takes "
+                                 "--bits on spec 6.1's grid, a geometry image its own planes");
   if (grids > 1) return usage_error("encode", "give one of --bits/--grid, --step or --max-error");
-  if (o.position_method == PositionMethod::kDeltas &&
+  if (o.position_method == PositionMethod::kDeltas && !args->progressive &&
       (o.position_grid != PositionGrid::kPerAxis || o.position_step > 0 || o.max_position_error > 0))
     return usage_error("encode", "--positions deltas (spec 6) carries only the grid of --grid per-axis");
   return -1;

@@ -1491,6 +1491,16 @@ void write_predicted_position_valid(VectorWriter* w) {
                                    std::pair{"valid_posn1_search_cap_ninth_not_examined", search_cap_mesh(8)},
                                    std::pair{"valid_posn1_search_cap_own_face_counts", search_cap_mesh(7, true)}})
     w->valid(name, encode_predicted(mesh, 12, qmc::ConnectivityChoice::kIndexed), &mesh);
+  // Section 12.2: a progressive file's base may use method 1 (on 6.1's grid).
+  std::vector<uint8_t> progressive;
+  if (qmc::Status s = qmc::tools::make_loop_file(qmc::tools::triangulated(qmc::tools::make_torus(9, 6)), 2,
+                                                qmc::tools::torus_targets(1, 0.35), 12, &progressive, nullptr,
+                                                qmc::PositionMethod::kPredicted);
+      !s.ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: %s\n", s.to_string().c_str());
+    std::exit(3);
+  }
+  w->valid("valid_posn1_loop_base", progressive, nullptr);
   const Mesh prisms = large_polygon_prisms();
   w->valid("valid_posn1_large_polygons", encode_predicted(prisms, 14, qmc::ConnectivityChoice::kPolygon), &prisms);
 }

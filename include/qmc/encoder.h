@@ -62,6 +62,9 @@ enum class PositionMethod : uint8_t {
 
 struct EncodeOptions {
   int position_bits = kDefaultPositionBits;  // 1..30, section 6.1
+  // The grid of a plain file. A progressive file's base always takes
+  // section 6.1's per-axis grid of position_bits (step and max error are
+  // refused there); a geometry image has grids of its own (section 13).
   PositionGrid position_grid = PositionGrid::kUniform;
   // > 0: this step (model units) on every axis instead of bits and grid.
   double position_step = 0;

@@ -63,9 +63,11 @@ Status validate(const Mesh& mesh, const EncodeOptions& options) {
     return invalid("the max position error must be a finite number > 0 (or 0: from the bits)");
   if (options.position_step > 0 && options.max_position_error > 0)
     return invalid("give a position step or a max position error, not both");
-  if (options.position_method == PositionMethod::kDeltas &&
+  if (options.position_method == PositionMethod::kDeltas && options.progressive_levels == 0 &&
       (options.position_grid != PositionGrid::kPerAxis || options.position_step > 0 || options.max_position_error > 0))
     return invalid("position method 0 (deltas, section 6) carries only the per-axis grid of section 6.1");
+  if (options.progressive_levels > 0 && (options.position_step > 0 || options.max_position_error > 0))
+    return invalid("a progressive file's base takes section 6.1's grid of position_bits: no step or max error");
   if (options.quad_coding < -1 || options.quad_coding >= kQuadCodingCount)
     return invalid("quad coding must be -1 (smallest) or 0.." + std::to_string(kQuadCodingCount - 1));
   return Status::Ok();

@@ -130,9 +130,13 @@ Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& 
                        const EncodeOptions& options, const LevelTargets& targets, std::vector<uint8_t>* out,
                        EncodeStats* st) {
   LoopEncodeStats& ls = st->loop;
+  // The base keeps section 6.1's per-axis grid, which both POSN methods
+  // carry (method 1 with grid 1 outputs the same positions); the method is
+  // the smaller one unless the options name one.
   const QuantizedPositions quantized =
       quantize_positions(std::vector<float>(base_positions.begin(), base_positions.end()), options.position_bits);
-  const std::vector<uint8_t> positions_payload = encode_positions(quantized);
+  const std::vector<uint8_t> positions_payload =
+      encode_positions(quantized, conn.mesh, options.position_method, &st->positions);
   LoopMesh current;
   current.triangles = conn.mesh.corners;
   loop_base_positions(info_of(quantized), quantized.q, &current);
@@ -142,7 +146,7 @@ Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& 
 
   out->clear();
   write_signature(out);
-  add_chunk(out, st, kChunkHeader, {kFormatMajor, 3});
+  add_chunk(out, st, kChunkHeader, {kFormatMajor, uint8_t(st->positions.method == 1 ? 5 : 3)});
   for (const std::string& text : options.texts)
     add_chunk(out, st, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));
   add_chunk(out, st, kChunkLoop, {uint8_t(levels), 0});
