@@ -116,29 +116,29 @@ void VertexCorners::build(uint32_t vertex_count, const std::vector<uint32_t>& fa
     build_links(false, &polygon_link_first_, &polygon_links_);
 }
 
-// Each corner k of u links u to the vertices the searches of 14.3.1 look
-// for next to it: along(k, +1), and along(k, +2) for a triangle or
-// along(k, -1) for a larger face, the second only when it differs.
+// Each corner k of a vertex u of many corners links u to the vertices the
+// searches of 14.2 look for next to it: along(k, +1), and along(k, +2) for
+// a triangle or along(k, -1) for a larger face, the second only when it
+// differs (so a corner is found once).
 void VertexCorners::build_links(bool triangles, std::vector<uint32_t>* first, std::vector<Link>* links) const {
   const uint32_t n = vertex_count();
   first->assign(size_t(n) + 1, 0);
   links->clear();
   for (uint32_t u = 0; u < n; ++u) {
-    for (const uint32_t* k = begin(u); k != end(u); ++k) {
-      if ((degree(*k) == 3) != triangles) continue;
-      const uint32_t w1 = along(*k, 1), w2 = along(*k, triangles ? 2 : -1);
-      links->push_back({w1, *k});
-      if (w2 != w1) links->push_back({w2, *k});
-    }
-    (*first)[u + 1] = uint32_t(links->size());
-    if ((*first)[u + 1] - (*first)[u] > uint32_t(kScannedLinks))
+    if (end(u) - begin(u) > kScannedCorners) {
+      for (const uint32_t* k = begin(u); k != end(u); ++k) {
+        if ((degree(*k) == 3) != triangles) continue;
+        const uint32_t w1 = along(*k, 1), w2 = along(*k, triangles ? 2 : -1);
+        links->push_back({w1, *k});
+        if (w2 != w1) links->push_back({w2, *k});
+      }
       std::sort(links->begin() + (*first)[u], links->end(), [](const Link& x, const Link& y) {
         return x.neighbour != y.neighbour ? x.neighbour < y.neighbour : x.corner < y.corner;
       });
+    }
+    (*first)[u + 1] = uint32_t(links->size());
   }
 }
-
-
 
 namespace {
 

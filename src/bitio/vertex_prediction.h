@@ -55,27 +55,32 @@ class VertexCorners {
   };
   // Calls visit(corner) for the corners of u, in order, of triangles
   // (triangles = true) or of larger faces, that have w next to u, until
-  // visit returns false: the searches of spec 14.2. A vertex's few links are
-  // scanned; many are sorted by neighbour once and searched in O(log n).
+  // visit returns false: the searches of spec 14.2. A vertex of few corners
+  // is scanned; one of many has its links sorted by neighbour once and is
+  // searched in O(log n).
   template <class Visit>
   void for_each_link(uint32_t u, uint32_t w, bool triangles, Visit visit) const {
-    const std::vector<uint32_t>& first = triangles ? triangle_link_first_ : polygon_link_first_;
-    const Link* begin = (triangles ? triangle_links_ : polygon_links_).data() + first[u];
-    const Link* end = (triangles ? triangle_links_ : polygon_links_).data() + first[u + 1];
-    if (end - begin > kScannedLinks) {
-      begin = std::lower_bound(begin, end, w, [](const Link& link, uint32_t value) { return link.neighbour < value; });
-      end = std::upper_bound(begin, end, w, [](uint32_t value, const Link& link) { return value < link.neighbour; });
+    if (end(u) - begin(u) <= kScannedCorners) {
+      for (const uint32_t* k = begin(u); k != end(u); ++k)
+        if ((degree(*k) == 3) == triangles && (along(*k, 1) == w || along(*k, triangles ? 2 : -1) == w) &&
+            !visit(*k))
+          return;
+      return;
     }
-    for (const Link* link = begin; link != end; ++link)
-      if (link->neighbour == w && !visit(link->corner)) return;
+    const std::vector<uint32_t>& first = triangles ? triangle_link_first_ : polygon_link_first_;
+    const Link* all = (triangles ? triangle_links_ : polygon_links_).data();
+    const Link* from = std::lower_bound(all + first[u], all + first[u + 1], w,
+                                        [](const Link& link, uint32_t value) { return link.neighbour < value; });
+    for (const Link* link = from; link != all + first[u + 1] && link->neighbour == w; ++link)
+      if (!visit(link->corner)) return;
   }
 
  private:
-  static constexpr int kScannedLinks = 16;  // more links than this are sorted
+  static constexpr int kScannedCorners = 12;  // vertices of more corners get sorted links
   void build_links(bool triangles, std::vector<uint32_t>* first, std::vector<Link>* links) const;
 
   std::vector<uint32_t> triangle_link_first_, polygon_link_first_;  // per vertex; one more at the end
-  // Per vertex in corner order; above kScannedLinks sorted by neighbour, then corner.
+  // Of the vertices of more than kScannedCorners corners, sorted by neighbour, then corner.
   std::vector<Link> triangle_links_, polygon_links_;
   const std::vector<uint32_t>* corners_ = nullptr;
   std::vector<uint32_t> next_, previous_;  // per corner, the next and previous corner of its face
