@@ -1403,6 +1403,7 @@ std::vector<uint8_t> encode_predicted(const Mesh& mesh, int bits,
   options.connectivity = connectivity;
   options.position_grid = grid;
   options.position_method = qmc::PositionMethod::kPredicted;
+  options.candidate_choice = qmc::CandidateChoice::kNearest;  // the choice when these vectors were made
   std::vector<uint8_t> out;
   qmc::EncodeStats stats;
   if (qmc::Status s = qmc::encode(mesh, options, &out, &stats); !s.ok() || stats.positions.method != 1) {

@@ -60,6 +60,12 @@ enum class PositionMethod : uint8_t {
   kPredicted,  // method 1: predicted from the decoded mesh, range coded (section 14)
 };
 
+// Section 14.5: how the encoder picks each vertex's candidates.
+enum class CandidateChoice : uint8_t {
+  kFewestBits,  // the mask and residuals cheapest under the coder's current probabilities
+  kNearest,     // the prediction nearest to the vertex (L1): faster, about 1.5 % larger
+};
+
 struct EncodeOptions {
   int position_bits = kDefaultPositionBits;  // 1..30, section 6.1
   // The grid of a plain file. A progressive file's base always takes
@@ -73,6 +79,7 @@ struct EncodeOptions {
   // of bits, grid and step.
   double max_position_error = 0;
   PositionMethod position_method = PositionMethod::kAuto;
+  CandidateChoice candidate_choice = CandidateChoice::kFewestBits;
   ConnectivityChoice connectivity = ConnectivityChoice::kAuto;
   // Quad coder only: force a coding (0..4, section 5.3.5); -1 picks the
   // smallest. A forced coding that cannot express the mesh is an error.

@@ -198,7 +198,7 @@ Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_
   if (Status s = choose_connectivity(mesh, options, &conn, &st); !s.ok()) return s;
   QuantizedPositions quantized;
   if (Status s = quantize_positions(conn.mesh.positions, options, &quantized); !s.ok()) return s;
-  const std::vector<uint8_t> positions = encode_positions(quantized, conn.mesh, options.position_method, &st.positions);
+  const std::vector<uint8_t> positions = encode_positions(quantized, conn.mesh, options.position_method, options.candidate_choice, &st.positions);
 
   out->clear();
   write_signature(out);

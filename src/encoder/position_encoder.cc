@@ -192,20 +192,55 @@ class MeteredRangeEncoder {
   double bits = 0;
 };
 
-// The subset of the candidates (14.3.4) whose prediction is nearest (L1)
-// to the vertex; ties go to the lower mask.
-unsigned best_candidates(const uint32_t* q, const uint32_t* top, VertexPrediction* p) {
+// Adds up the information content of decisions under the current
+// probabilities, leaving them as they are: what coding would cost now.
+class CostMeter {
+ public:
+  int code(int bit, uint16_t* prob) {
+    bits += kCost[bit ? kRangeProbabilityOne - *prob : *prob];
+    return bit;
+  }
+  int code_direct(int bit) {
+    bits += 1;
+    return bit;
+  }
+  double bits = 0;
+
+ private:
+  struct Table {
+    double cost[kRangeProbabilityOne + 1];
+    Table() {
+      for (int p = 1; p <= kRangeProbabilityOne; ++p) cost[p] = -std::log2(p / double(kRangeProbabilityOne));
+      cost[0] = 64;
+    }
+    double operator[](int p) const { return cost[p]; }
+  };
+  static const Table kCost;
+};
+const CostMeter::Table CostMeter::kCost;
+
+// The subset of the candidates (14.3.3) chosen as 14.5 says: the mask and
+// residuals cheapest under the current probabilities, or the prediction
+// nearest to the vertex (L1); ties go to the lower mask.
+unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidualModel* model, CandidateChoice choice,
+                         VertexPrediction* p) {
   if (p->candidates < 2) return p->candidates == 1 ? 1u : 0u;
   unsigned best = 1;
   double best_cost = INFINITY;
   for (unsigned mask = 1; mask < (1u << p->candidates); ++mask) {
     select_candidates(p, mask, top);
-    double cost = 0;
+    CostMeter meter;
+    double distance = 0;
+    if (choice == CandidateChoice::kFewestBits) code_candidate_mask(&meter, model, p->candidates, mask);
+    uint32_t magnitude[3] = {0, 0, 0};
     for (int a = 0; a < 3; ++a) {
       const int64_t r = int64_t(q[a]) - p->value[a];
-      const uint32_t m = uint32_t(r < 0 ? -r : r);
-      cost += double(m);
+      magnitude[a] = uint32_t(r < 0 ? -r : r);
+      distance += magnitude[a];
+      if (choice == CandidateChoice::kFewestBits)
+        code_position_residual(&meter, model, *p, magnitude, a, top[a], SignedResidual{magnitude[a], r < 0});
     }
+    const double cost = choice == CandidateChoice::kFewestBits ? meter.bits : distance;
     if (cost < best_cost) best_cost = cost, best = mask;
   }
   return best;
@@ -214,7 +249,7 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, VertexPredictio
 }  // namespace
 
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
-                                                PositionStats* stats) {
+                                                PositionStats* stats, CandidateChoice choice) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
   std::vector<uint8_t> payload;
   put_varint(&payload, n);
@@ -236,7 +271,7 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
   for (uint32_t v = 0; v < n; ++v) {
     predict_vertex(corners, v, positions.q.data(), residual.data(), positions.top.data(), &p);
     const double before = rc.bits;
-    const unsigned mask = best_candidates(&positions.q[3 * size_t(v)], positions.top.data(), &p);
+    const unsigned mask = best_candidates(&positions.q[3 * size_t(v)], positions.top.data(), &model[0], choice, &p);
     code_candidate_mask(&rc, &model[0], p.candidates, mask);
     select_candidates(&p, mask, positions.top.data());
     uint32_t magnitude[3] = {0, 0, 0};
@@ -256,7 +291,7 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
 }
 
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces, PositionMethod method,
-                                      PositionStats* stats) {
+                                      CandidateChoice choice, PositionStats* stats) {
   *stats = PositionStats{};
   stats->step = positions.step;
   stats->top = positions.top;
@@ -266,7 +301,7 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const
   if (positions.per_axis_bits && method != PositionMethod::kPredicted) deltas = encode_positions(positions);
   if (method == PositionMethod::kDeltas) return deltas;
   PositionStats predicted_stats = *stats;
-  std::vector<uint8_t> predicted = encode_predicted_positions(positions, faces, &predicted_stats);
+  std::vector<uint8_t> predicted = encode_predicted_positions(positions, faces, &predicted_stats, choice);
   if (predicted.empty()) {
     // Only vertices that all coincide cost so little (section 14.1); on
     // one point method 0's per-axis grid gives the same positions.

@@ -38,11 +38,12 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions);
 // Method 1 (section 14) over the file's faces; stats may be null. Empty
 // when the vertices cost too little for 14.1's bound (all on one point).
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
-                                                PositionStats* stats);
+                                                PositionStats* stats,
+                                                CandidateChoice choice = CandidateChoice::kFewestBits);
 
 // The POSN payload the options ask for: method 1, method 0, or the smaller
 // of the two when both can carry the grid. Fills stats.
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces,
-                                      PositionMethod method, PositionStats* stats);
+                                      PositionMethod method, CandidateChoice choice, PositionStats* stats);
 
 }  // namespace qmc

@@ -56,6 +56,7 @@ Status make_loop_file(const Mesh& base, int levels, const LevelTargets& targets,
   options.position_bits = bits;
   options.position_grid = PositionGrid::kPerAxis;  // LEVL's arithmetic starts from section 6.1's grid
   options.position_method = base_positions;
+  options.candidate_choice = CandidateChoice::kNearest;  // the choice when valid_posn1_loop_base was made
   options.connectivity = ConnectivityChoice::kPolygon;
   EncodeStats local;
   EncodeStats& st = stats ? *stats : local;
