@@ -300,16 +300,17 @@ void print_progressive_report(const EncodeArgs& args, const Mesh& input, const E
                 ls.unreferenced_vertices_dropped);
   std::printf("pipeline    simplify %.2f s, fit %.2f s, subdivide+displace+inverse %.2f s, code %.2f s\n",
               ls.seconds_simplify, ls.seconds_fit, ls.seconds_remesh, ls.seconds_code);
-  std::printf("levels      level  vertices     faces  edge points  zero %%     step        bytes\n");
+  std::printf("levels      level  vertices     faces  edge points  zero %%     step        bytes  code\n");
   for (size_t j = 0; j < ls.levels.size(); ++j) {
     const LoopLevelStats& l = ls.levels[j];
     if (j == 0)
-      std::printf("            base  %9u %9u  %11s  %6s  %9s  %10llu  (CONN + POSN, %s coder)\n", l.vertices, l.faces,
-                  "-", "-", "-", static_cast<unsigned long long>(l.bytes), connectivity_method_name(stats.method));
+      std::printf("            base  %9u %9u  %11s  %6s  %9s  %10llu     -  (CONN + POSN: %s coder, %s positions)\n",
+                  l.vertices, l.faces, "-", "-", "-", static_cast<unsigned long long>(l.bytes),
+                  connectivity_method_name(stats.method), stats.positions.method == 1 ? "predicted" : "delta");
     else
-      std::printf("            %4zu  %9u %9u  %11u  %6.2f  %9.3g  %10llu%s\n", j, l.vertices, l.faces, l.edge_points,
-                  100.0 * l.zeros / (l.edge_points ? l.edge_points : 1), l.step,
-                  static_cast<unsigned long long>(l.bytes),
+      std::printf("            %4zu  %9u %9u  %11u  %6.2f  %9.3g  %10llu  %4u%s\n", j, l.vertices, l.faces,
+                  l.edge_points, 100.0 * l.zeros / (l.edge_points ? l.edge_points : 1), l.step,
+                  static_cast<unsigned long long>(l.bytes), unsigned(l.code),
                   l.clamped ? (" (" + std::to_string(l.clamped) + " clamped to 127)").c_str() : "");
   }
   std::printf("            finest level along its normals: %u hit the input surface, %u kept the remesh position\n",

@@ -899,9 +899,13 @@ void write_polygon_seam_vectors(VectorWriter* w) {
 
 // Section 12: progressive files aiming at analytic surfaces, then the ways a
 // level can be wrong.
-std::vector<uint8_t> loop_file(const Mesh& base, int levels, const qmc::LevelTargets& targets, int bits = 12) {
+std::vector<uint8_t> loop_file(const Mesh& base, int levels, const qmc::LevelTargets& targets, int bits = 12,
+                               qmc::PositionMethod base_positions = qmc::PositionMethod::kDeltas,
+                               int displacement_code = 0) {
   std::vector<uint8_t> out;
-  if (qmc::Status s = qmc::tools::make_loop_file(base, levels, targets, bits, &out); !s.ok()) {
+  if (qmc::Status s = qmc::tools::make_loop_file(base, levels, targets, bits, &out, nullptr, base_positions,
+                                                displacement_code);
+      !s.ok()) {
     std::fprintf(stderr, "qmc-make-vectors: %s\n", s.to_string().c_str());
     std::exit(3);
   }
@@ -1457,6 +1461,52 @@ Mesh large_polygon_prisms() {
   return m;
 }
 
+// Section 12.7.1 (format 1.5): LEVL displacement code 2, valid and invalid.
+void write_displacement_code_2_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  const Mesh octahedron = qmc::tools::loop_octahedron();
+  w->valid("valid_levl2_octahedron_sphere_4_levels",
+           loop_file(octahedron, 4, qmc::tools::unit_sphere_targets(), 14, qmc::PositionMethod::kDeltas, 2), nullptr);
+  w->valid("valid_levl2_torus_genus1_3_levels",
+           loop_file(qmc::tools::triangulated(qmc::tools::make_torus(9, 6)), 3, qmc::tools::torus_targets(1, 0.35), 12,
+                     qmc::PositionMethod::kDeltas, 2),
+           nullptr);
+  w->valid("valid_levl2_grid_boundary_3_levels",
+           loop_file(qmc::tools::triangulated(qmc::tools::make_grid(4, 3)), 3, qmc::tools::height_field_targets(), 12,
+                     qmc::PositionMethod::kDeltas, 2),
+           nullptr);
+  // The encoder's own choice: code 0 on the small first levels, code 2 on the larger ones.
+  w->valid("valid_levl2_mixed_codes",
+           loop_file(octahedron, 5, qmc::tools::unit_sphere_targets(), 14, qmc::PositionMethod::kDeltas, -1),
+           nullptr);
+  const Chunks base = split_chunks(loop_file(octahedron, 3, qmc::tools::unit_sphere_targets(), 14, qmc::PositionMethod::kDeltas, 2));
+  const size_t last = find_chunk(base, qmc::kChunkLevel, 2);
+  const std::vector<uint8_t> payload = base[last].payload;  // level, code, varint edge_count (192), step (8)
+  const size_t stream = 2 + 2 + 8;
+  auto with_level = [&](std::vector<uint8_t> p) {
+    Chunks c = base;
+    c[last].payload = std::move(p);
+    return join_chunks(c);
+  };
+  std::vector<uint8_t> p = payload;
+  p[1] = 3;
+  w->invalid("invalid_levl_code_3", with_level(p), ErrorCode::kUnsupportedFeature);
+  w->invalid("invalid_levl2_truncated", with_level({payload.begin(), payload.begin() + stream + 6}),
+             ErrorCode::kTruncated);
+  p = payload;
+  p.insert(p.end(), {0x55, 0x55, 0x55, 0x55, 0x55, 0x55});
+  w->invalid("invalid_levl2_bytes_after_stream", with_level(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  std::fill(p.begin() + stream, p.begin() + stream + 4, 0xFF);
+  w->invalid("invalid_levl2_stream_start_ffffffff", with_level(p), ErrorCode::kBadChunkPayload);
+  // 12.1: the 12288 edges of the octahedron's level 5 in one stream byte, above 512 (1 + 8).
+  const Chunks deep = split_chunks(loop_file(octahedron, 6, qmc::tools::unit_sphere_targets(), 14, qmc::PositionMethod::kDeltas, 2));
+  const size_t sixth = find_chunk(deep, qmc::kChunkLevel, 5);
+  Chunks c = deep;
+  c[sixth].payload.resize(2 + 2 + 8 + 1);  // level, code, varint 12288, step, one byte of stream
+  w->invalid("invalid_levl2_edges_unjustified", join_chunks(c), ErrorCode::kLimitExceeded);
+}
+
 void write_predicted_position_valid(VectorWriter* w) {
   using namespace qmc::tools;
   const Mesh sphere = perturbed(triangulated(make_refined_sphere(2)), 1, 0.01f);  // parallelograms, flags
@@ -1493,15 +1543,11 @@ void write_predicted_position_valid(VectorWriter* w) {
                                    std::pair{"valid_posn1_search_cap_own_face_counts", search_cap_mesh(7, true)}})
     w->valid(name, encode_predicted(mesh, 12, qmc::ConnectivityChoice::kIndexed), &mesh);
   // Section 12.2: a progressive file's base may use method 1 (on 6.1's grid).
-  std::vector<uint8_t> progressive;
-  if (qmc::Status s = qmc::tools::make_loop_file(qmc::tools::triangulated(qmc::tools::make_torus(9, 6)), 2,
-                                                qmc::tools::torus_targets(1, 0.35), 12, &progressive, nullptr,
-                                                qmc::PositionMethod::kPredicted);
-      !s.ok()) {
-    std::fprintf(stderr, "qmc-make-vectors: %s\n", s.to_string().c_str());
-    std::exit(3);
-  }
-  w->valid("valid_posn1_loop_base", progressive, nullptr);
+  w->valid("valid_posn1_loop_base",
+           loop_file(qmc::tools::triangulated(qmc::tools::make_torus(9, 6)), 2, qmc::tools::torus_targets(1, 0.35), 12,
+                     qmc::PositionMethod::kPredicted),
+           nullptr);
+  write_displacement_code_2_vectors(w);
   const Mesh prisms = large_polygon_prisms();
   w->valid("valid_posn1_large_polygons", encode_predicted(prisms, 14, qmc::ConnectivityChoice::kPolygon), &prisms);
 }

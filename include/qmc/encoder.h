@@ -97,6 +97,9 @@ struct EncodeOptions {
   // the input surface, not its vertices. The input must be a manifold,
   // consistently oriented triangle mesh; position_bits applies to the base.
   int progressive_levels = 0;
+  // The LEVL displacement code: -1 the smaller of 0 (the seed's 1/9-bit
+  // code, section 12.7) and 2 (range coded in contexts, 12.7.1); or 0 or 2.
+  int displacement_code = -1;
   GeometryImageOptions gim;
   // Called during long operations (the progressive pipeline) with a stage
   // name and the fraction done, 0..1; may be empty.
@@ -130,6 +133,7 @@ struct LoopLevelStats {
   uint32_t edge_points = 0, zeros = 0, clamped = 0;
   double step = 0;
   uint64_t bytes = 0;                // the LEVL chunk (level 0: CONN + POSN)
+  uint8_t code = 0;                  // level >= 1: the displacement code (12.7: 0; 12.7.1: 2)
 };
 struct LoopEncodeStats {
   uint32_t input_vertices = 0, input_faces = 0, unreferenced_vertices_dropped = 0;

@@ -8,7 +8,9 @@
 
 #include "bitio/bit_reader.h"
 #include "bitio/byte_io.h"
+#include "bitio/displacement_coding.h"
 #include "bitio/exact_arith.h"
+#include "bitio/range_coder.h"
 #include "decoder/no_throw.h"
 #include "decoder/position_decoder.h"
 
@@ -60,30 +62,15 @@ void loop_base_positions(const QuantizationInfo& info, const std::vector<uint32_
   for (size_t i = 0; i < quantized.size(); ++i) base->positions[i] = lo[i % 3] + mul(double(quantized[i]), step[i % 3]);
 }
 
-Status decode_level_code(const uint8_t* payload, size_t size, uint8_t expected_level, uint32_t edge_count,
-                         LevelCode* code) {
-  ByteReader in(payload, size);
-  uint8_t level = 0, method = 0;
-  if (!in.get_u8(&level) || level != expected_level)
-    return bad_payload("LEVL", "level field " + (size ? std::to_string(level) : std::string("missing")) +
-                                   ", expected " + std::to_string(expected_level));
-  if (!in.get_u8(&method)) return bad_payload("LEVL", "code field missing");
-  if (method != 0)
-    return Status(ErrorCode::kUnsupportedFeature,
-                  "LEVL: displacement code " + std::to_string(method) + " is not defined (section 12.1 knows 0)");
-  uint64_t edges = 0;
-  if (!in.get_varint(&edges)) return bad_payload("LEVL", "edge_count missing or malformed");
-  if (edges != edge_count)
-    return bad_payload("LEVL", "edge_count " + std::to_string(edges) + " but level " +
-                                   std::to_string(expected_level - 1) + " has " + std::to_string(edge_count) +
-                                   " edges");
-  if (!in.get_f64le(&code->step)) return bad_payload("LEVL", "step missing");
-  if (!std::isfinite(code->step) || !(code->step > 0))
-    return bad_payload("LEVL", "step is not a finite number greater than zero");
-  BitReader bits(in.cursor(), in.remaining());
-  if (edges > bits.bits_remaining())
-    return Status(ErrorCode::kLimitExceeded, "LEVL: " + std::to_string(edges) + " displacement codes cannot fit in " +
-                                                 std::to_string(in.remaining()) + " bytes");
+namespace {
+
+// 12.7: the seed's 1-bit / 9-bit code.
+Status decode_bit_code(ByteReader* in, uint32_t edge_count, LevelCode* code) {
+  BitReader bits(in->cursor(), in->remaining());
+  if (edge_count > bits.bits_remaining())
+    return Status(ErrorCode::kLimitExceeded, "LEVL: " + std::to_string(edge_count) +
+                                                 " displacement codes cannot fit in " +
+                                                 std::to_string(in->remaining()) + " bytes");
   code->m.assign(edge_count, 0);
   for (uint32_t e = 0; e < edge_count; ++e) {
     if (!bits.read_bit()) continue;
@@ -97,6 +84,59 @@ Status decode_level_code(const uint8_t* payload, size_t size, uint8_t expected_l
   if (bits.overrun()) return Status(ErrorCode::kTruncated, "LEVL: bit stream ends before the last displacement");
   if (!bits.at_clean_end()) return bad_payload("LEVL", "bits left over after the last displacement");
   return Status::Ok();
+}
+
+// 12.7.1: code 2, range coded in contexts of the edges' ends.
+Status decode_range_code(ByteReader* in, const LoopEdges& edges, uint32_t coarse_vertices, LevelCode* code) {
+  const uint32_t edge_count = edges.edge_count();
+  if (uint64_t(edge_count) > 512 * (uint64_t(in->remaining()) + 8))
+    return Status(ErrorCode::kLimitExceeded, "LEVL: " + std::to_string(edge_count) + " edges for " +
+                                                 std::to_string(in->remaining()) +
+                                                 " stream bytes, above 512 (L + 8) (section 12.7.1)");
+  code->m.assign(edge_count, 0);
+  std::vector<int8_t> last(coarse_vertices, 0);
+  std::vector<DisplacementModel> model(1);
+  RangeDecoder rc(in->cursor(), in->remaining());
+  if (rc.bad_start()) return bad_payload("LEVL", "the range coder's first four bytes are 0xFFFFFFFF (section 13.5.2)");
+  int previous = 0;
+  for (uint32_t e = 0; e < edge_count; ++e) {
+    const uint32_t a = edges.a[e], b = edges.b[e];
+    const int m = code_displacement(&rc, &model[0], DisplacementContext(last[a], last[b], previous), 0);
+    if (rc.overrun())
+      return Status(ErrorCode::kTruncated, "LEVL: the range-coded stream ends at edge " + std::to_string(e));
+    code->m[e] = int8_t(m);
+    last[a] = last[b] = int8_t(m);
+    previous = m;
+  }
+  if (rc.unread() != 0)
+    return bad_payload("LEVL", std::to_string(rc.unread()) + " bytes after the range-coded data (section 13.5.2)");
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status decode_level_code(const uint8_t* payload, size_t size, uint8_t expected_level, const LoopEdges& edges,
+                         uint32_t coarse_vertices, LevelCode* code) {
+  const uint32_t edge_count = edges.edge_count();
+  ByteReader in(payload, size);
+  uint8_t level = 0, method = 0;
+  if (!in.get_u8(&level) || level != expected_level)
+    return bad_payload("LEVL", "level field " + (size ? std::to_string(level) : std::string("missing")) +
+                                   ", expected " + std::to_string(expected_level));
+  if (!in.get_u8(&method)) return bad_payload("LEVL", "code field missing");
+  if (method != 0 && method != 2)
+    return Status(ErrorCode::kUnsupportedFeature, "LEVL: displacement code " + std::to_string(method) +
+                                                      " is not defined (section 12.1 knows 0 and 2)");
+  uint64_t declared = 0;
+  if (!in.get_varint(&declared)) return bad_payload("LEVL", "edge_count missing or malformed");
+  if (declared != edge_count)
+    return bad_payload("LEVL", "edge_count " + std::to_string(declared) + " but level " +
+                                   std::to_string(expected_level - 1) + " has " + std::to_string(edge_count) +
+                                   " edges");
+  if (!in.get_f64le(&code->step)) return bad_payload("LEVL", "step missing");
+  if (!std::isfinite(code->step) || !(code->step > 0))
+    return bad_payload("LEVL", "step is not a finite number greater than zero");
+  return method == 0 ? decode_bit_code(&in, edge_count, code) : decode_range_code(&in, edges, coarse_vertices, code);
 }
 
 void displace_edge_points(const std::vector<double>& normals, const LevelCode& code, uint32_t coarse_vertices,
@@ -122,7 +162,8 @@ Status check_level_range(const LoopMesh& level, uint8_t level_index) {
 Status decode_level(const uint8_t* payload, size_t size, uint8_t expected_level, const LoopMesh& coarse,
                     const LoopEdges& coarse_edges, LoopMesh* fine) {
   LevelCode code;
-  if (Status s = decode_level_code(payload, size, expected_level, coarse_edges.edge_count(), &code); !s.ok())
+  if (Status s = decode_level_code(payload, size, expected_level, coarse_edges, coarse.vertex_count(), &code);
+      !s.ok())
     return s;
   loop_subdivide(coarse, coarse_edges, fine);
   std::vector<double> normals;

@@ -24,14 +24,14 @@ Status loop_base_connectivity(const Mesh& mesh, uint32_t vertex_count, LoopMesh*
 // Section 12.2: the binary64 base positions, 6.4 without the final rounding.
 void loop_base_positions(const QuantizationInfo& info, const std::vector<uint32_t>& quantized, LoopMesh* base);
 
-// Section 12.1 and 12.7: one LEVL payload. Fills the displacement integers,
+// Sections 12.1, 12.7 and 12.7.1: one LEVL payload. Fills the displacement integers,
 // one per coarse edge, and the step; nothing is subdivided yet.
 struct LevelCode {
   double step = 0;
   std::vector<int8_t> m;  // -127 .. 127 per edge of the coarse level
 };
-Status decode_level_code(const uint8_t* payload, size_t size, uint8_t expected_level, uint32_t edge_count,
-                         LevelCode* code);
+Status decode_level_code(const uint8_t* payload, size_t size, uint8_t expected_level, const LoopEdges& edges,
+                         uint32_t coarse_vertices, LevelCode* code);
 
 // Section 12.5 steps 4-5 and 12.7: moves each edge point of `fine` (a
 // loop_subdivide result of the coarse level) by m * step along its normal.

@@ -52,6 +52,9 @@ Status validate(const Mesh& mesh, const EncodeOptions& options) {
     if (text.size() > kMaxChunkLength) return invalid("text too long for one chunk");
   if (options.polygon_coding < -1 || options.polygon_coding >= kPolygonCodingCount)
     return invalid("polygon coding must be -1 (smallest) or 0.." + std::to_string(kPolygonCodingCount - 1));
+  if (options.displacement_code != -1 && options.displacement_code != 0 && options.displacement_code != 2)
+    return invalid("the displacement code must be -1 (smaller), 0 (section 12.7) or 2 (12.7.1), got " +
+                   std::to_string(options.displacement_code));
   if (options.progressive_levels < 0 || options.progressive_levels > 8)
     return invalid("progressive levels must be 0 (not progressive) or 1..8, got " +
                    std::to_string(options.progressive_levels));

@@ -7,6 +7,8 @@
 
 #include "bitio/bit_writer.h"
 #include "bitio/byte_io.h"
+#include "bitio/displacement_coding.h"
+#include "bitio/range_coder.h"
 #include "encoder/chunk_writer.h"
 #include "encoder/position_encoder.h"
 
@@ -95,8 +97,41 @@ void predict_level(const LoopMesh& coarse, const LoopEdges& coarse_edges, LoopMe
   edge_point_normals(*fine, coarse_edges, coarse.vertex_count(), normals);
 }
 
-std::vector<uint8_t> encode_level(uint8_t level, uint32_t coarse_vertices, const std::vector<double>& normals,
-                                  const std::vector<double>& targets, LoopMesh* fine, LevelCodeStats* stats) {
+namespace {
+
+// 12.7: the seed's code, a 1-bit zero or a 9-bit sign and magnitude.
+std::vector<uint8_t> bit_code_stream(const std::vector<int8_t>& m) {
+  BitWriter bits;
+  for (int8_t v : m) {
+    bits.write_bit(v != 0);
+    if (v == 0) continue;
+    bits.write_bit(v < 0);
+    bits.write_bits(uint32_t(v < 0 ? -v : v), 7);
+  }
+  return bits.finish();
+}
+
+// 12.7.1: code 2, range coded in contexts of the edges' ends.
+std::vector<uint8_t> range_code_stream(const std::vector<int8_t>& m, const LoopEdges& edges,
+                                       uint32_t coarse_vertices) {
+  std::vector<int8_t> last(coarse_vertices, 0);
+  std::vector<DisplacementModel> model(1);
+  RangeEncoder rc;
+  int previous = 0;
+  for (size_t e = 0; e < m.size(); ++e) {
+    const uint32_t a = edges.a[e], b = edges.b[e];
+    code_displacement(&rc, &model[0], DisplacementContext(last[a], last[b], previous), m[e]);
+    last[a] = last[b] = m[e];
+    previous = m[e];
+  }
+  return rc.finish();
+}
+
+}  // namespace
+
+std::vector<uint8_t> encode_level(uint8_t level, const LoopEdges& coarse_edges, uint32_t coarse_vertices,
+                                  const std::vector<double>& normals, const std::vector<double>& targets,
+                                  int code_choice, LoopMesh* fine, LevelCodeStats* stats) {
   const Projection p = project(coarse_vertices, *fine, normals, targets);
   LevelCode code;
   code.step = choose_step(p);
@@ -104,24 +139,28 @@ std::vector<uint8_t> encode_level(uint8_t level, uint32_t coarse_vertices, const
   *stats = LevelCodeStats{};
   stats->edge_points = uint32_t(p.r.size());
   stats->step = code.step;
-  BitWriter bits;
   for (size_t e = 0; e < p.r.size(); ++e) {
     const int m = quantize(p.r[e], code.step);
     code.m[e] = int8_t(m);
     stats->zeros += m == 0;
     stats->clamped += std::fabs(p.r[e] / code.step) > kMaxMagnitude + 0.5;
-    bits.write_bit(m != 0);
-    if (m == 0) continue;
-    bits.write_bit(m < 0);
-    bits.write_bits(uint32_t(m < 0 ? -m : m), 7);
   }
   displace_edge_points(normals, code, coarse_vertices, fine);
+  std::vector<uint8_t> stream = bit_code_stream(code.m);
+  if (code_choice != 0) {
+    std::vector<uint8_t> ranged = range_code_stream(code.m, coarse_edges, coarse_vertices);
+    // 12.7.1's bound, which only a level of nearly all zeros could exceed.
+    const bool fits = p.r.size() <= 512 * (ranged.size() + 8);
+    if (fits && (code_choice == 2 || ranged.size() < stream.size())) {
+      stream = std::move(ranged);
+      stats->code = 2;
+    }
+  }
   std::vector<uint8_t> payload;
   put_u8(&payload, level);
-  put_u8(&payload, 0);  // 12.7's code
+  put_u8(&payload, stats->code);
   put_varint(&payload, p.r.size());
   put_f64le(&payload, code.step);
-  const std::vector<uint8_t> stream = bits.finish();
   payload.insert(payload.end(), stream.begin(), stream.end());
   return payload;
 }
@@ -144,35 +183,39 @@ Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& 
   if (Status s = build_loop_edges(current, &edges); !s.ok())
     return Status(ErrorCode::kInvalidArgument, "the base mesh cannot carry Loop levels: " + s.message());
 
-  out->clear();
-  write_signature(out);
-  add_chunk(out, st, kChunkHeader, {kFormatMajor, uint8_t(st->positions.method == 1 ? 5 : 3)});
-  for (const std::string& text : options.texts)
-    add_chunk(out, st, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));
-  add_chunk(out, st, kChunkLoop, {uint8_t(levels), 0});
-  add_chunk(out, st, kChunkConnectivity, conn.payload);
-  add_chunk(out, st, kChunkPositions, positions_payload);
   ls.levels.clear();
   ls.levels.push_back({current.vertex_count(), current.face_count(), 0, 0, 0, 0,
                        24 + conn.payload.size() + positions_payload.size()});
+  std::vector<std::vector<uint8_t>> level_payloads;
+  bool format_1_5 = st->positions.method == 1;
   for (int j = 1; j <= levels; ++j) {
     LoopMesh fine;
     std::vector<double> normals, level_targets;
     predict_level(current, edges, &fine, &normals);
     targets(j, fine, normals, current.vertex_count(), &level_targets);
     LevelCodeStats code_stats;
-    const std::vector<uint8_t> payload =
-        encode_level(uint8_t(j), current.vertex_count(), normals, level_targets, &fine, &code_stats);
+    level_payloads.push_back(encode_level(uint8_t(j), edges, current.vertex_count(), normals, level_targets,
+                                          options.displacement_code, &fine, &code_stats));
     if (Status s = check_level_range(fine, uint8_t(j)); !s.ok())
       return Status(ErrorCode::kInvalidArgument, "level " + std::to_string(j) + " leaves the binary32 range");
-    add_chunk(out, st, kChunkLevel, payload);
+    format_1_5 = format_1_5 || code_stats.code == 2;
     ls.levels.push_back({fine.vertex_count(), fine.face_count(), code_stats.edge_points, code_stats.zeros,
-                         code_stats.clamped, code_stats.step, 12 + payload.size()});
+                         code_stats.clamped, code_stats.step, 12 + level_payloads.back().size(), code_stats.code});
     if (j < levels)
       if (Status s = number_loop_edges(fine, &edges); !s.ok())
         return Status(ErrorCode::kInvalidArgument, "internal: level " + std::to_string(j) + ": " + s.message());
     current = std::move(fine);
   }
+  // The lowest minor version that defines everything in the file (4.1).
+  out->clear();
+  write_signature(out);
+  add_chunk(out, st, kChunkHeader, {kFormatMajor, uint8_t(format_1_5 ? 5 : 3)});
+  for (const std::string& text : options.texts)
+    add_chunk(out, st, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));
+  add_chunk(out, st, kChunkLoop, {uint8_t(levels), 0});
+  add_chunk(out, st, kChunkConnectivity, conn.payload);
+  add_chunk(out, st, kChunkPositions, positions_payload);
+  for (const std::vector<uint8_t>& payload : level_payloads) add_chunk(out, st, kChunkLevel, payload);
   add_chunk(out, st, kChunkEnd, {});
   st->method = conn.method;
   st->total_bytes = out->size();

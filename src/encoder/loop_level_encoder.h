@@ -23,13 +23,16 @@ void predict_level(const LoopMesh& coarse, const LoopEdges& coarse_edges, LoopMe
 struct LevelCodeStats {
   uint32_t edge_points = 0, zeros = 0, clamped = 0;
   double step = 0;
+  uint8_t code = 0;  // the displacement code written (12.7 or 12.7.1)
 };
 
 // Chooses the step and the integers m for edge-point targets (3 doubles per
 // coarse edge), applies them to `fine` exactly as the decoder will, and
-// returns the LEVL payload.
-std::vector<uint8_t> encode_level(uint8_t level, uint32_t coarse_vertices, const std::vector<double>& normals,
-                                  const std::vector<double>& targets, LoopMesh* fine, LevelCodeStats* stats);
+// returns the LEVL payload: displacement code 0 (12.7), 2 (12.7.1), or with
+// code = -1 the smaller of the two.
+std::vector<uint8_t> encode_level(uint8_t level, const LoopEdges& coarse_edges, uint32_t coarse_vertices,
+                                  const std::vector<double>& normals, const std::vector<double>& targets,
+                                  int code, LoopMesh* fine, LevelCodeStats* stats);
 
 // Where the edge points of `level` should go: given the decoder's
 // subdivided level (before displacement) and the edge-point normals (3 per

@@ -28,9 +28,11 @@ LevelTargets height_field_targets();
 
 // A progressive file of the triangle mesh `base` (coded with the polygon
 // coder, positions with `bits` bits on section 6.1's grid, by the POSN
-// method given) and `levels` levels aiming at `targets`. Fails on a base
+// method given) and `levels` levels aiming at `targets`, with the LEVL
+// displacement code given (0, 2, or -1 for the smaller). Fails on a base
 // that section 12.2 does not allow.
 Status make_loop_file(const Mesh& base, int levels, const LevelTargets& targets, int bits, std::vector<uint8_t>* out,
-                      EncodeStats* stats = nullptr, PositionMethod base_positions = PositionMethod::kDeltas);
+                      EncodeStats* stats = nullptr, PositionMethod base_positions = PositionMethod::kDeltas,
+                      int displacement_code = 0);
 
 }  // namespace qmc::tools
