@@ -18,7 +18,7 @@
 #   compression.md   issue 13: qmc's positions and whole files against Draco
 #                    cl10 / cl7 and meshoptimizer + zstd -19 at 12, 14 and 16
 #                    bits, decode and encode times, with the issue's targets.
-# ONLY=compression or ONLY=gim regenerates that one file.
+# ONLY=compression, ONLY=seed003 or ONLY=gim regenerates that one file.
 # RUNS (default 7) runs per measurement, LARGE_RUNS (default 3) for the
 # ~1M-quad sphere; medians are reported. Run on an otherwise idle machine.
 set -euo pipefail
@@ -28,10 +28,10 @@ corpus=${QMC_CORPUS_DIR:-../shared/corpus}
 runs=${RUNS:-7}
 large_runs=${LARGE_RUNS:-3}
 scripts/install-deps.sh >/dev/null
-if [ "${ONLY:-}" = compression ]; then
+if [ "${ONLY:-}" = compression ] || [ "${ONLY:-}" = seed003 ]; then
   # One program: build just it (and what it links), not the whole tree.
   cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build build --target qmc_compression_bench >/dev/null
+  cmake --build build --target "qmc_${ONLY/compression/compression_bench}" >/dev/null
 else
   scripts/build.sh >/dev/null
 fi
@@ -68,9 +68,19 @@ compression_result() {
     build/bench/qmc_compression_bench --runs "$runs" --bits 12,14,16 "$corpus"/tri/* "$corpus"/quad/*
 }
 
-# ONLY=compression regenerates docs/results/compression.md alone.
+# seed003_result: docs/results/seed003.md and its plot (progressive files).
+seed003_result() {
+  write_result docs/results/seed003.md "Seed 003 (Loop progressive geometry compression) rerun with qmc's progressive levels" \
+    build/bench/qmc_seed003 --runs "$runs" --plot docs/results/seed003_rd.svg "$corpus"/tri/stanford-bunny.obj \
+    "$corpus"/tri/armadillo.obj "$corpus"/tri/fertility.off "$corpus"/tri/camelhead.off
+}
+
 if [ "${ONLY:-}" = compression ]; then
   compression_result
+  exit 0
+fi
+if [ "${ONLY:-}" = seed003 ]; then
+  seed003_result
   exit 0
 fi
 
@@ -95,9 +105,7 @@ write_result docs/results/quad_vs_draco.md "Quad meshes: qmc's quad coder agains
 write_result docs/results/topology.md "Connectivity: qmc's structured coders against Draco and the indexed fallback" \
   build/bench/qmc_topology_bench --runs "$runs" --large-runs "$large_runs" --bits 12 "$corpus"/quad/* "$corpus"/tri/*
 compression_result
-write_result docs/results/seed003.md "Seed 003 (Loop progressive geometry compression) rerun with qmc's progressive levels" \
-  build/bench/qmc_seed003 --runs "$runs" --plot docs/results/seed003_rd.svg "$corpus"/tri/stanford-bunny.obj \
-  "$corpus"/tri/armadillo.obj "$corpus"/tri/fertility.off "$corpus"/tri/camelhead.off
+seed003_result
 fi
 mkdir -p docs/results/gim
 write_result docs/results/gim.md "Geometry images: seeds 000 and 002 rerun with qmc, and lossless planes against zstd and PNG" \
