@@ -22,7 +22,7 @@ struct PositionResidualModel {
   uint16_t cls[kPositionGroups][kPositionBuckets][kPositionMaxClass];  // by group, bucket, i
   uint16_t sign[3];
   uint16_t mantissa[kPositionMaxClass + 1][3];
-  uint16_t use[kMaxCandidates - 1][kMaxCandidates];  // 14.3.4: "candidate i is used", by count - 2
+  uint16_t use[kMaxCandidates - 1][kMaxCandidates];  // 14.4: "candidate k is selected", by count - 2
   PositionResidualModel() {
     std::fill(&use[0][0], &use[0][0] + sizeof(use) / sizeof(uint16_t), uint16_t(1024));
     std::fill(&cls[0][0][0], &cls[0][0][0] + sizeof(cls) / sizeof(uint16_t), uint16_t(1024));
@@ -54,7 +54,7 @@ inline int bit_length(uint32_t v) {
   return n;
 }
 
-// 14.3.4: which of the vertex's count candidates its prediction uses. With
+// 14.4: which of the vertex's count candidates its prediction uses. With
 // one candidate it is used; with two or more, a bit per candidate, the last
 // one implied when no other is used.
 template <class Coder>

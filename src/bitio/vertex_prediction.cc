@@ -169,7 +169,7 @@ void predict_vertex(const VertexCorners& m, uint32_t v, const uint32_t* q, const
   int64_t neighbours = 0;
   uint64_t activity = 0;
   for (const uint32_t* corner = m.begin(v); corner != m.end(v); ++corner) {
-    for (int side = -1; side <= 1; side += 2) {  // 14.3.2: decoded neighbours along face edges
+    for (int side = -1; side <= 1; side += 2) {  // 14.2: the neighbour list
       const uint32_t u = m.along(*corner, side);
       if (u >= v) continue;
       for (int a = 0; a < 3; ++a) neighbour_sum[a] += q[3 * size_t(u) + a];

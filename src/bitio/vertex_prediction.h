@@ -27,7 +27,7 @@
 
 namespace qmc {
 
-// Section 14.3.1: the faces of CONN (degree >= 3 each, corners concatenated)
+// Section 14.2: the faces of CONN (degree >= 3 each, corners concatenated)
 // with, per vertex, the corners at which it appears, in face order, and
 // its face-edge neighbours by neighbour.
 class VertexCorners {
@@ -90,7 +90,7 @@ class VertexCorners {
   std::vector<uint32_t> corner_of_;   // corners grouped by vertex, face order within a vertex
 };
 
-// Section 14.3.2: what a prediction was made from, which selects the
+// Sections 14.3.2 and 14.4: what a prediction was made from, which selects the
 // residuals' context (14.4).
 enum class PredictionKind : uint8_t {
   kPrevious = 0,    // no decoded neighbour: the previous vertex (or the grid's centre)
@@ -100,8 +100,8 @@ enum class PredictionKind : uint8_t {
 };
 inline constexpr int kPredictionKinds = 4;
 
-// 14.3.3: the most candidates a vertex takes; a file selects a subset of
-// them per vertex (14.3.4).
+// 14.3.1: the most candidates a vertex takes; a file selects a subset of
+// them per vertex (14.3.3, 14.4).
 inline constexpr int kMaxCandidates = 4;
 
 struct VertexPrediction {
@@ -112,7 +112,7 @@ struct VertexPrediction {
   // Without candidates: the mean of the decoded neighbours, else the previous vertex.
   int64_t fallback[3];
   PredictionKind fallback_kind = PredictionKind::kPrevious;
-  uint64_t neighbour_activity = 0;  // 14.4: mean residual magnitude of decoded neighbours
+  uint64_t neighbour_activity = 0;  // 14.3.2: the activity A, used by 14.4
   uint64_t scale = 0;  // mean L1 length of the candidates' difference vectors
   // The prediction of the selected subset (select_candidates), clamped to 0..top[a].
   PredictionKind kind = PredictionKind::kPrevious;
@@ -125,7 +125,7 @@ struct VertexPrediction {
 void predict_vertex(const VertexCorners& mesh, uint32_t v, const uint32_t* q, const int32_t* residual,
                     const uint32_t top[3], VertexPrediction* out);
 
-// 14.3.4: the prediction from the candidates whose bit is set in mask (the
+// 14.3.3: the prediction from the candidates whose bit is set in mask (the
 // weighted mean), or the fallback if none is.
 void select_candidates(VertexPrediction* p, unsigned mask, const uint32_t top[3]);
 
