@@ -94,9 +94,9 @@ void VertexCorners::build(uint32_t vertex_count, const std::vector<uint32_t>& fa
                           const std::vector<uint32_t>& corners) {
   corners_ = &corners;
     face_start_.assign(face_sizes.size() + 1, 0);
-    face_of_.resize(corners.size());
-    next_.resize(corners.size());
-    previous_.resize(corners.size());
+    face_of_.allocate(corners.size());
+    next_.allocate(corners.size());
+    previous_.allocate(corners.size());
     for (size_t f = 0; f < face_sizes.size(); ++f) {
       const uint32_t start = face_start_[f], end = start + face_sizes[f];
       face_start_[f + 1] = end;
@@ -109,7 +109,7 @@ void VertexCorners::build(uint32_t vertex_count, const std::vector<uint32_t>& fa
     first_.assign(size_t(vertex_count) + 1, 0);
     for (uint32_t v : corners) ++first_[v + 1];
     for (size_t v = 0; v < vertex_count; ++v) first_[v + 1] += first_[v];
-    corner_of_.resize(corners.size());
+    corner_of_.allocate(corners.size());
     std::vector<uint32_t> next(first_.begin(), first_.end() - 1);
     for (uint32_t k = 0; k < corners.size(); ++k) corner_of_[next[corners[k]]++] = k;
     build_links(true, &triangle_link_first_, &triangle_links_);

@@ -22,10 +22,26 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace qmc {
+
+// A table of T that build() fills completely, so it is not zeroed first
+// (that would be one more pass over a few megabytes for nothing).
+template <class T>
+class FilledTable {
+ public:
+  void allocate(size_t n) { data_.reset(new T[n]); }
+  T& operator[](size_t i) { return data_[i]; }
+  const T& operator[](size_t i) const { return data_[i]; }
+  const T* data() const { return data_.get(); }
+
+ private:
+  std::unique_ptr<T[]> data_;
+};
 
 // Section 14.2: the faces of CONN (degree >= 3 each, corners concatenated)
 // with, per vertex, the corners at which it appears, in face order, and
@@ -83,11 +99,11 @@ class VertexCorners {
   // Of the vertices of more than kScannedCorners corners, sorted by neighbour, then corner.
   std::vector<Link> triangle_links_, polygon_links_;
   const std::vector<uint32_t>* corners_ = nullptr;
-  std::vector<uint32_t> next_, previous_;  // per corner, the next and previous corner of its face
-  std::vector<uint32_t> face_start_;  // per face, its first corner; one more at the end
-  std::vector<uint32_t> face_of_;     // per corner
-  std::vector<uint32_t> first_;       // per vertex, its first entry in corner_of_; one more at the end
-  std::vector<uint32_t> corner_of_;   // corners grouped by vertex, face order within a vertex
+  FilledTable<uint32_t> next_, previous_;  // per corner, the next and previous corner of its face
+  std::vector<uint32_t> face_start_;       // per face, its first corner; one more at the end
+  FilledTable<uint32_t> face_of_;          // per corner
+  std::vector<uint32_t> first_;            // per vertex, its first entry in corner_of_; one more at the end
+  FilledTable<uint32_t> corner_of_;        // corners grouped by vertex, face order within a vertex
 };
 
 // Sections 14.3.2 and 14.4: what a prediction was made from, which selects the
