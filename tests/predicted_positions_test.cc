@@ -142,7 +142,7 @@ TEST(PredictedPositions, SearchExaminesAtMostEightCorners) {
 
 // 14.4: the mask decisions round trip, the last bit implied when no other is set.
 TEST(PredictedPositions, CandidateMaskDecisions) {
-  PositionResidualModel encoder_model, decoder_model;
+  PositionResidualModel encoder_model(kTop), decoder_model(kTop);
   RangeEncoder enc;
   const int counts[] = {2, 3, 4, 4, 2, 1, 0};
   const unsigned masks[] = {2, 5, 8, 15, 1, 1, 0};

@@ -17,13 +17,21 @@ inline constexpr int kPositionBuckets = 16;
 inline constexpr int kPositionGroups = 3;
 inline constexpr int kPositionMaxClass = 30;  // |r| <= top <= 2^30 - 1
 
+inline int bit_length(uint32_t v) {
+  int n = 0;
+  for (; v != 0; v >>= 1) ++n;
+  return n;
+}
+
 // Adaptive probabilities of one POSN payload, all starting at 1024.
 struct PositionResidualModel {
   uint16_t cls[kPositionGroups][kPositionBuckets][kPositionMaxClass];  // by group, bucket, i
   uint16_t sign[3];
   uint16_t mantissa[kPositionMaxClass + 1][3];
   uint16_t use[kMaxCandidates - 1][kMaxCandidates];  // 14.4: "candidate k is selected", by count - 2
-  PositionResidualModel() {
+  int max_class[3];  // bitlen(top_a): k of 13.5.6 per axis
+  explicit PositionResidualModel(const uint32_t top[3]) {
+    for (int a = 0; a < 3; ++a) max_class[a] = bit_length(top[a]);
     std::fill(&use[0][0], &use[0][0] + sizeof(use) / sizeof(uint16_t), uint16_t(1024));
     std::fill(&cls[0][0][0], &cls[0][0][0] + sizeof(cls) / sizeof(uint16_t), uint16_t(1024));
     std::fill(sign, sign + 3, uint16_t(1024));
@@ -48,12 +56,6 @@ inline int position_bucket(uint64_t t0, const uint32_t* magnitude, int axis) {
   return len;
 }
 
-inline int bit_length(uint32_t v) {
-  int n = 0;
-  for (; v != 0; v >>= 1) ++n;
-  return n;
-}
-
 // 14.4: which of the vertex's count candidates its prediction uses. With
 // one candidate it is used; with two or more, a bit per candidate, the last
 // one implied when no other is used.
@@ -68,14 +70,13 @@ unsigned code_candidate_mask(Coder* coder, PositionResidualModel* m, int count, 
   return out;
 }
 
-// Codes the residual of one axis, top[a] bounding its class (14.4).
+// Codes the residual of one axis, its class bounded by bitlen(top_a) (14.4).
 template <class Coder>
 SignedResidual code_position_residual(Coder* coder, PositionResidualModel* m, const VertexPrediction& p,
-                                      const uint32_t* magnitude, int axis, uint32_t top, SignedResidual value) {
+                                      const uint32_t* magnitude, int axis, SignedResidual value) {
   const int bucket = position_bucket(p.neighbour_activity + p.scale / 8, magnitude, axis);
   const int group = p.kind >= PredictionKind::kSingle ? 2 : int(p.kind);
-  return code_class_residual(coder, m->cls[group][bucket], &m->sign[axis], m->mantissa,
-                             bit_length(top), value);
+  return code_class_residual(coder, m->cls[group][bucket], &m->sign[axis], m->mantissa, m->max_class[axis], value);
 }
 
 }  // namespace qmc

@@ -136,7 +136,7 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, uint32_t v,
   if (rc->overrun()) return truncated_at(v);
   uint32_t magnitude[3] = {0, 0, 0};
   for (int a = 0; a < 3; ++a) {
-    const SignedResidual r = code_position_residual(rc, model, *p, magnitude, a, top[a], SignedResidual{});
+    const SignedResidual r = code_position_residual(rc, model, *p, magnitude, a, SignedResidual{});
     if (rc->overrun()) return truncated_at(v);
     const int64_t value = p->value[a] + (r.negative ? -int64_t(r.magnitude) : int64_t(r.magnitude));
     if (value < 0 || value > int64_t(top[a]))
@@ -164,7 +164,7 @@ Status decode_predicted(const uint8_t* stream, size_t size, const Mesh& mesh, ui
   VertexCorners corners;
   corners.build(vertex_count, mesh.face_sizes, mesh.corners);
   std::vector<int32_t> residual(3 * size_t(vertex_count));
-  std::vector<PositionResidualModel> model(1);
+  std::vector<PositionResidualModel> model(1, PositionResidualModel(info.top.data()));
   RangeDecoder rc(stream, size);
   if (rc.bad_start()) return bad_payload("the range coder's first four bytes are 0xFFFFFFFF (section 13.5.2)");
   VertexPrediction p;

@@ -238,7 +238,7 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
       magnitude[a] = uint32_t(r < 0 ? -r : r);
       distance += magnitude[a];
       if (choice == CandidateChoice::kFewestBits)
-        code_position_residual(&meter, model, *p, magnitude, a, top[a], SignedResidual{magnitude[a], r < 0});
+        code_position_residual(&meter, model, *p, magnitude, a, SignedResidual{magnitude[a], r < 0});
     }
     const double cost = choice == CandidateChoice::kFewestBits ? meter.bits : distance;
     if (cost < best_cost) best_cost = cost, best = mask;
@@ -263,7 +263,7 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
   VertexCorners corners;
   corners.build(n, faces.face_sizes, faces.corners);
   std::vector<int32_t> residual(3 * size_t(n));
-  std::vector<PositionResidualModel> model(1);
+  std::vector<PositionResidualModel> model(1, PositionResidualModel(positions.top.data()));
   MeteredRangeEncoder rc;
   PositionStats local;
   PositionStats& st = stats ? *stats : local;
@@ -279,7 +279,7 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
       const int64_t r = int64_t(positions.q[3 * size_t(v) + a]) - p.value[a];
       magnitude[a] = uint32_t(r < 0 ? -r : r);
       residual[3 * size_t(v) + a] = int32_t(r);
-      code_position_residual(&rc, &model[0], p, magnitude, a, positions.top[a], SignedResidual{magnitude[a], r < 0});
+      code_position_residual(&rc, &model[0], p, magnitude, a, SignedResidual{magnitude[a], r < 0});
     }
     ++st.vertices_by_kind[int(p.kind)];
     st.bits_by_kind[int(p.kind)] += rc.bits - before;
