@@ -260,7 +260,9 @@ Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const st
     for (uint32_t i = 1; i < components[c]; ++i, ++f) corners += shapes.degree[f];
     largest = std::max(largest, corners);
     most_faces = std::max<uint64_t>(most_faces, components[c]);
-    all_corners += corners + first_degree[c];  // the coded faces and the component's first face
+    // The coded faces only: their degrees are backed by the stream's bits
+    // (5.4.3), a first face's degree is not until the spiral has built it.
+    all_corners += corners;
   }
   PolygonSpiraleReversi decoder{size_t(largest), size_t(most_faces)};
   surface->face_degree.reserve(components.size() + shapes.size());
