@@ -21,6 +21,14 @@ inline constexpr uint32_t kRangeTop = 1u << 24;  // renormalize below this range
 // the encoder's flush leaves out); one more is `truncated`.
 inline constexpr uint32_t kRangeMaxInventedBytes = 4;
 
+// Sections 12.7.1 and 14.1: a stream of L bytes justifies at most
+// 512 (L + 8) coded items. Every decision costs more than 1/46 bit (the
+// probabilities stay within 31 .. 2017 of 2048), so fewer decisions than
+// that fit; items that may cost no decision at all are held to the same bound.
+inline bool range_stream_justifies(uint64_t items, uint64_t stream_bytes) {
+  return items <= 512 * (stream_bytes + 8);
+}
+
 // Probability update after coding `bit` with probability *prob of a 0.
 inline void range_adapt(uint16_t* prob, int bit) {
   if (bit == 0)

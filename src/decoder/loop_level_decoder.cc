@@ -89,7 +89,7 @@ Status decode_bit_code(ByteReader* in, uint32_t edge_count, LevelCode* code) {
 // 12.7.1: code 2, range coded in contexts of the edges' ends.
 Status decode_range_code(ByteReader* in, const LoopEdges& edges, uint32_t coarse_vertices, LevelCode* code) {
   const uint32_t edge_count = edges.edge_count();
-  if (uint64_t(edge_count) > 512 * (uint64_t(in->remaining()) + 8))
+  if (!range_stream_justifies(edge_count, in->remaining()))
     return Status(ErrorCode::kLimitExceeded, "LEVL: " + std::to_string(edge_count) + " edges for " +
                                                  std::to_string(in->remaining()) +
                                                  " stream bytes, above 512 (L + 8) (section 12.7.1)");

@@ -22,7 +22,6 @@ Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadCh
 
 // Section 14.1: the byte after vertex_count selects the method.
 constexpr uint8_t kPredictedSelector = 0x81;
-constexpr uint64_t kPredictedVerticesPerByte = 512;
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
   for (int a = 0; a < 3; ++a)
@@ -154,10 +153,7 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, uint32_t v,
 // (14.3), its decisions range coded (14.4).
 Status decode_predicted(const uint8_t* stream, size_t size, const Mesh& mesh, uint32_t vertex_count,
                         const QuantizationInfo& info, std::vector<uint32_t>* quantized) {
-  // Section 14.1: every decision costs more than 1/46 bit, so a stream of L
-  // bytes holds fewer than 512 (L + 8) of them; vertices that cost nothing
-  // must fit the same bound.
-  if (uint64_t(vertex_count) > kPredictedVerticesPerByte * (uint64_t(size) + 8))
+  if (!range_stream_justifies(vertex_count, size))  // section 14.1
     return Status(ErrorCode::kLimitExceeded, "POSN: " + std::to_string(vertex_count) + " vertices for " +
                                                  std::to_string(size) + " stream bytes, above 512 (L + 8) (section 14.1)");
   quantized->resize(size_t(vertex_count) * 3);

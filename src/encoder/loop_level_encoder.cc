@@ -150,7 +150,7 @@ std::vector<uint8_t> encode_level(uint8_t level, const LoopEdges& coarse_edges, 
   if (code_choice != 0) {
     std::vector<uint8_t> ranged = range_code_stream(code.m, coarse_edges, coarse_vertices);
     // 12.7.1's bound, which only a level of nearly all zeros could exceed.
-    const bool fits = p.r.size() <= 512 * (ranged.size() + 8);
+    const bool fits = range_stream_justifies(p.r.size(), ranged.size());
     if (fits && (code_choice == 2 || ranged.size() < stream.size())) {
       stream = std::move(ranged);
       stats->code = 2;

@@ -20,7 +20,6 @@ namespace qmc {
 namespace {
 
 constexpr uint8_t kPredictedSelector = 0x81;  // section 14.1
-constexpr uint64_t kPredictedVerticesPerByte = 512;  // section 14.1: V <= 512 (L + 8)
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
 
 void bounding_box(const std::vector<float>& positions, QuantizedPositions* out) {
@@ -176,24 +175,6 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions) {
 
 namespace {
 
-// The range encoder, also adding up each decision's information content
-// for the statistics of PositionStats.
-class MeteredRangeEncoder {
- public:
-  int code(int bit, uint16_t* prob) {
-    bits += -std::log2((bit ? kRangeProbabilityOne - *prob : *prob) / double(kRangeProbabilityOne));
-    return rc.code(bit, prob);
-  }
-  int code_direct(int bit) {
-    bits += 1;
-    return rc.code_direct(bit);
-  }
-  RangeEncoder rc;
-  double bits = 0;
-};
-
-// Adds up the information content of decisions under the current
-// probabilities, leaving them as they are: what coding would cost now.
 class CostMeter {
  public:
   int code(int bit, uint16_t* prob) {
@@ -218,6 +199,23 @@ class CostMeter {
   static const Table kCost;
 };
 const CostMeter::Table CostMeter::kCost;
+
+// The range encoder, also adding up each decision's information content
+// (CostMeter's, before the decision adapts the probability) for
+// PositionStats.
+class MeteredRangeEncoder {
+ public:
+  int code(int bit, uint16_t* prob) {
+    meter.code(bit, prob);
+    return rc.code(bit, prob);
+  }
+  int code_direct(int bit) {
+    meter.code_direct(bit);
+    return rc.code_direct(bit);
+  }
+  RangeEncoder rc;
+  CostMeter meter;
+};
 
 // The subset of the candidates (14.3.3) chosen as 14.5 says: the mask and
 // residuals cheapest under the current probabilities, or the prediction
@@ -270,7 +268,7 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
   VertexPrediction p;
   for (uint32_t v = 0; v < n; ++v) {
     predict_vertex(corners, v, positions.q.data(), residual.data(), positions.top.data(), &p);
-    const double before = rc.bits;
+    const double before = rc.meter.bits;
     const unsigned mask = best_candidates(&positions.q[3 * size_t(v)], positions.top.data(), &model[0], choice, &p);
     code_candidate_mask(&rc, &model[0], p.candidates, mask);
     select_candidates(&p, mask, positions.top.data());
@@ -282,10 +280,10 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
       code_position_residual(&rc, &model[0], p, magnitude, a, SignedResidual{magnitude[a], r < 0});
     }
     ++st.vertices_by_kind[int(p.kind)];
-    st.bits_by_kind[int(p.kind)] += rc.bits - before;
+    st.bits_by_kind[int(p.kind)] += rc.meter.bits - before;
   }
   const std::vector<uint8_t> stream = rc.rc.finish();
-  if (n > kPredictedVerticesPerByte * (stream.size() + 8)) return {};
+  if (!range_stream_justifies(n, stream.size())) return {};
   payload.insert(payload.end(), stream.begin(), stream.end());
   return payload;
 }
