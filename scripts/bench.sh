@@ -18,7 +18,7 @@
 #   compression.md   issue 13: qmc's positions and whole files against Draco
 #                    cl10 / cl7 and meshoptimizer + zstd -19 at 12, 14 and 16
 #                    bits, decode and encode times, with the issue's targets.
-# ONLY=compression, ONLY=seed003 or ONLY=gim regenerates that one file.
+# ONLY=compression, ONLY=topology, ONLY=seed003 or ONLY=gim regenerates that one file.
 # RUNS (default 7) runs per measurement, LARGE_RUNS (default 3) for the
 # ~1M-quad sphere; medians are reported. Run on an otherwise idle machine.
 set -euo pipefail
@@ -28,10 +28,11 @@ corpus=${QMC_CORPUS_DIR:-../shared/corpus}
 runs=${RUNS:-7}
 large_runs=${LARGE_RUNS:-3}
 scripts/install-deps.sh >/dev/null
-if [ "${ONLY:-}" = compression ] || [ "${ONLY:-}" = seed003 ]; then
+if [ "${ONLY:-}" = compression ] || [ "${ONLY:-}" = topology ] || [ "${ONLY:-}" = seed003 ]; then
   # One program: build just it (and what it links), not the whole tree.
   cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
-  cmake --build build --target "qmc_${ONLY/compression/compression_bench}" >/dev/null
+  target=qmc_${ONLY/compression/compression_bench}
+  cmake --build build --target "${target/topology/topology_bench}" >/dev/null
 else
   scripts/build.sh >/dev/null
 fi
@@ -75,8 +76,18 @@ seed003_result() {
     "$corpus"/tri/armadillo.obj "$corpus"/tri/fertility.off "$corpus"/tri/camelhead.off
 }
 
+# topology_result: docs/results/topology.md (connectivity alone, issue 14).
+topology_result() {
+  write_result docs/results/topology.md "Connectivity: qmc's structured coders against Draco and the indexed fallback" \
+    build/bench/qmc_topology_bench --runs "$runs" --large-runs "$large_runs" --bits 12 "$corpus"/quad/* "$corpus"/tri/*
+}
+
 if [ "${ONLY:-}" = compression ]; then
   compression_result
+  exit 0
+fi
+if [ "${ONLY:-}" = topology ]; then
+  topology_result
   exit 0
 fi
 if [ "${ONLY:-}" = seed003 ]; then
@@ -102,8 +113,7 @@ write_result docs/results/seed001.md "Seed 001 (Q. Jing's thesis), chapter 5, re
   build/bench/qmc_seed001 --runs "$runs" --bits 8 "$corpus"/tri/cow.obj
 write_result docs/results/quad_vs_draco.md "Quad meshes: qmc's quad coder against Draco with polygons preserved" \
   build/bench/qmc_quad_bench --runs "$runs" --large-runs "$large_runs" --bits 12 --sphere-levels 7 "$corpus"/quad/*
-write_result docs/results/topology.md "Connectivity: qmc's structured coders against Draco and the indexed fallback" \
-  build/bench/qmc_topology_bench --runs "$runs" --large-runs "$large_runs" --bits 12 "$corpus"/quad/* "$corpus"/tri/*
+topology_result
 compression_result
 seed003_result
 fi

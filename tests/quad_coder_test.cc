@@ -50,6 +50,13 @@ std::vector<uint8_t> traverse(const Mesh& mesh) {
   return t.types;
 }
 
+// The quad coder itself, not the smaller of it and polygon coding 7.
+EncodeOptions quad_coder_options() {
+  EncodeOptions options;
+  options.connectivity = ConnectivityChoice::kQuad;
+  return options;
+}
+
 TEST(ThesisExample, DecodesToA14QuadDiskAndReencodesToTheSameCode) {
   Mesh m;
   ASSERT_TRUE(spirale_reversi_decode(kThesisExample, false, 1000, &m).ok());
@@ -176,7 +183,7 @@ TEST(SeedClaim, ValenceTwoVerticesBreakItAndTheFileStaysCorrect) {
     violations += t.claim_violations;
     std::vector<uint8_t> bytes;
     EncodeStats stats;
-    ASSERT_TRUE(encode(m, EncodeOptions{}, &bytes, &stats).ok());
+    ASSERT_TRUE(encode(m, quad_coder_options(), &bytes, &stats).ok());
     EXPECT_EQ(stats.method, ConnectivityMethod::kQuad);
     if (t.claim_violations) {
       EXPECT_LT(stats.quad.coding_bits[1], 0);  // Coding I cannot express it
@@ -198,7 +205,7 @@ TEST(QuadCoder, TinyClosedMeshesAndStrips) {
                         tools::make_grid(1, 300), tools::make_grid(2, 2)}) {
     std::vector<uint8_t> bytes;
     EncodeStats stats;
-    ASSERT_TRUE(encode(m, EncodeOptions{}, &bytes, &stats).ok());
+    ASSERT_TRUE(encode(m, quad_coder_options(), &bytes, &stats).ok());
     EXPECT_EQ(stats.method, ConnectivityMethod::kQuad) << stats.fallback_reason;
     DecodedFile d;
     ASSERT_TRUE(decode(bytes.data(), bytes.size(), &d).ok());
@@ -282,7 +289,10 @@ TEST(SpiraleReversi, FixedCodingsRejectBadWords) {
   EXPECT_TRUE(decode_payload(p).ok());
 }
 
-TEST(QuadCorpus, EveryInScopeCorpusQuadMeshUsesTheQuadCoder) {
+// The quad coder can take every closed all-quad corpus mesh; by default
+// the encoder keeps it unless polygon coding 7's CONN is smaller (5.4.10),
+// and says so.
+TEST(QuadCorpus, EveryInScopeCorpusQuadMeshGoesThroughTheQuadCoder) {
   namespace fs = std::filesystem;
   const fs::path dir = testing::corpus_dir() / "quad";
   if (!fs::is_directory(dir)) GTEST_SKIP() << "corpus not found at " << dir;
@@ -293,9 +303,18 @@ TEST(QuadCorpus, EveryInScopeCorpusQuadMeshUsesTheQuadCoder) {
     ASSERT_TRUE(tools::read_mesh((dir / name).string(), &m, &warnings).ok());
     std::vector<uint8_t> bytes;
     EncodeStats stats;
-    ASSERT_TRUE(encode(m, EncodeOptions{}, &bytes, &stats).ok());
+    ASSERT_TRUE(encode(m, quad_coder_options(), &bytes, &stats).ok());
     quad_coded += stats.method == ConnectivityMethod::kQuad;
     EXPECT_EQ(stats.quad.claim_violations, 0u) << name;
+    const uint64_t quad_conn = stats.chunks[1].bytes;
+    EncodeStats automatic;
+    ASSERT_TRUE(encode(m, EncodeOptions{}, &bytes, &automatic).ok());
+    if (automatic.method == ConnectivityMethod::kPolygon) {
+      EXPECT_LT(automatic.chunks[1].bytes, quad_conn) << name;
+      EXPECT_NE(automatic.fallback_reason.find("smaller"), std::string::npos) << name;
+    } else {
+      EXPECT_EQ(automatic.method, ConnectivityMethod::kQuad) << name;
+    }
   }
   EXPECT_EQ(quad_coded, 3u);
 }

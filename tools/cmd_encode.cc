@@ -245,6 +245,7 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
     if (!stats.fallback_reason.empty()) std::printf("connectivity quad coder not used: %s\n", stats.fallback_reason.c_str());
     std::printf("connectivity polygon coder (spec 5.4), coding %u:", p.coding);
     for (int c = 0; c < kPolygonCodingCount; ++c) {
+      if (c == kPolygonUnassignedCoding) continue;
       if (p.coding_bits[c] < 0) std::printf(" %d n/a", c);
       else std::printf(" %d %.3f", c, double(p.coding_bits[c]) / v);
     }

@@ -18,7 +18,9 @@
 #include "bitio/byte_io.h"
 #include "bitio/huffman.h"
 #include "bitio/magnitude_code.h"
+#include "bitio/polygon_symbol_coding.h"
 #include "bitio/polygon_symbols.h"
+#include "bitio/range_coder.h"
 #include "bitio/quad_codings.h"
 #include "analytic_loop_files.h"
 #include "chunk_list.h"
@@ -41,6 +43,7 @@ qmc::EncodeOptions format_1_4_options() {
   qmc::EncodeOptions options;
   options.position_grid = qmc::PositionGrid::kPerAxis;
   options.position_method = qmc::PositionMethod::kDeltas;
+  options.polygon_context_coding = false;
   return options;
 }
 
@@ -68,6 +71,23 @@ std::vector<uint8_t> encode(const Mesh& mesh, int bits, std::vector<std::string>
   }
   return out;
 }
+
+// A file whose CONN payload is replaced (invalid streams on a valid file).
+class ConnReplacer {
+ public:
+  explicit ConnReplacer(const std::vector<uint8_t>& file)
+      : base_(split_chunks(file)), conn_(find_chunk(base_, qmc::kChunkConnectivity)) {}
+  std::vector<uint8_t> operator()(std::vector<uint8_t> payload) const {
+    Chunks c = base_;
+    c[conn_].payload = std::move(payload);
+    return join_chunks(c);
+  }
+  const std::vector<uint8_t>& payload() const { return base_[conn_].payload; }
+
+ private:
+  Chunks base_;
+  size_t conn_;
+};
 
 class VectorWriter {
  public:
@@ -276,28 +296,22 @@ void write_order_errors(VectorWriter* w) {
 void write_connectivity_errors(VectorWriter* w) {
   using qmc::ErrorCode;
   const Mesh tetra = qmc::tools::make_tetrahedron();
-  const Chunks base = split_chunks(encode(tetra, 12));
-  const size_t conn = find_chunk(base, qmc::kChunkConnectivity);
-  auto with_conn = [&](std::vector<uint8_t> payload) {
-    Chunks c = base;
-    c[conn].payload = std::move(payload);
-    return join_chunks(c);
-  };
-  std::vector<uint8_t> p = base[conn].payload;
+  const ConnReplacer with_conn(encode(tetra, 12));
+  std::vector<uint8_t> p = with_conn.payload();
   p[0] = 9;
   w->invalid("invalid_conn_unknown_method", with_conn(p), ErrorCode::kUnsupportedFeature);
-  p = base[conn].payload;
+  p = with_conn.payload();
   p[1] = 3;  // vertex_count 3: the fourth vertex cannot be introduced
   w->invalid("invalid_conn_vertex_beyond_count", with_conn(p), ErrorCode::kBadSymbol);
-  p = base[conn].payload;
+  p = with_conn.payload();
   p.insert(p.begin() + 1, 0x84);  // vertex_count 4 written as 84 00: not shortest form
   p[2] = 0x00;
   w->invalid("invalid_conn_varint_not_shortest", with_conn(p), ErrorCode::kBadChunkPayload);
-  p = base[conn].payload;
+  p = with_conn.payload();
   p.push_back(0);
   w->invalid("invalid_conn_trailing_byte", with_conn(p), ErrorCode::kBadChunkPayload);
   p = {0, 4, 0xFF, 0xFF, 0xFF, 0xFF, 0x0F};
-  p.insert(p.end(), base[conn].payload.begin() + 3, base[conn].payload.end());
+  p.insert(p.end(), with_conn.payload().begin() + 3, with_conn.payload().end());
   w->invalid("invalid_conn_face_count_unjustified", with_conn(p), ErrorCode::kLimitExceeded);
 
   const size_t A = 65;
@@ -521,13 +535,7 @@ std::vector<uint8_t> quad_conn(uint64_t vertices, uint64_t faces, uint8_t flags,
 
 void write_quad_errors(VectorWriter* w) {
   using qmc::ErrorCode;
-  const Chunks base = split_chunks(encode_quads(qmc::tools::make_cube()));
-  const size_t conn = find_chunk(base, qmc::kChunkConnectivity);
-  auto with_conn = [&](std::vector<uint8_t> payload) {
-    Chunks c = base;
-    c[conn].payload = std::move(payload);
-    return join_chunks(c);
-  };
+  const ConnReplacer with_conn(encode_quads(qmc::tools::make_cube()));
   // Types are listed in stream (encoder) order; the decoder applies them last to first.
   w->invalid("invalid_quad_no_boundary_for_q5", with_conn(quad_conn(8, 2, 0, 0, {1, 5})), ErrorCode::kBadSymbol);
   w->invalid("invalid_quad_empty_loop_stack", with_conn(quad_conn(8, 2, 0, 0, {3, 1})), ErrorCode::kBadSymbol);
@@ -632,13 +640,7 @@ void pillow(qmc::BitWriter* b, int first_degree_minus_3 = 1, int type = 1,
 
 void write_polygon_errors(VectorWriter* w) {
   using qmc::ErrorCode;
-  const Chunks base = split_chunks(encode_polygons(qmc::tools::make_cube()));
-  const size_t conn = find_chunk(base, qmc::kChunkConnectivity);
-  auto with_conn = [&](std::vector<uint8_t> payload) {
-    Chunks c = base;
-    c[conn].payload = std::move(payload);
-    return join_chunks(c);
-  };
+  const ConnReplacer with_conn(encode_polygons(qmc::tools::make_cube()));
   auto ok = [](qmc::BitWriter* b) { pillow(b); };
   // The pillow itself decodes (vertex_count 8: four of the cube's vertices are used by no face).
   w->valid("polygon_pillow_plain", with_conn(polygon_conn(8, 2, 0, 0, ok)), nullptr);
@@ -901,10 +903,10 @@ void write_polygon_seam_vectors(VectorWriter* w) {
 // level can be wrong.
 std::vector<uint8_t> loop_file(const Mesh& base, int levels, const qmc::LevelTargets& targets, int bits = 12,
                                qmc::PositionMethod base_positions = qmc::PositionMethod::kDeltas,
-                               int displacement_code = 0) {
+                               int displacement_code = 0, bool context_coded_faces = false) {
   std::vector<uint8_t> out;
   if (qmc::Status s = qmc::tools::make_loop_file(base, levels, targets, bits, &out, nullptr, base_positions,
-                                                displacement_code);
+                                                displacement_code, context_coded_faces);
       !s.ok()) {
     std::fprintf(stderr, "qmc-make-vectors: %s\n", s.to_string().c_str());
     std::exit(3);
@@ -1408,6 +1410,7 @@ std::vector<uint8_t> encode_predicted(const Mesh& mesh, int bits,
   options.position_grid = grid;
   options.position_method = qmc::PositionMethod::kPredicted;
   options.candidate_choice = qmc::CandidateChoice::kNearest;  // the choice when these vectors were made
+  options.polygon_context_coding = false;                      // format 1.5's codings
   std::vector<uint8_t> out;
   qmc::EncodeStats stats;
   if (qmc::Status s = qmc::encode(mesh, options, &out, &stats); !s.ok() || stats.positions.method != 1) {
@@ -1635,6 +1638,175 @@ void write_predicted_position_errors(VectorWriter* w) {
 
 }  // namespace
 
+// Section 5.4.10 (format 1.6): polygon coding 7, the face symbols range
+// coded in the contexts of Spirale Reversi's gate.
+std::vector<uint8_t> coding7_conn(uint32_t vertices, uint32_t faces, uint8_t groups, const std::vector<uint8_t>& symbols,
+                                  const std::function<void(qmc::BitWriter*)>& stream, uint64_t length_extra = 0) {
+  std::vector<uint8_t> p{uint8_t(qmc::ConnectivityMethod::kPolygon)};
+  qmc::put_varint(&p, vertices);
+  qmc::put_varint(&p, faces);
+  p.push_back(0);
+  p.push_back(uint8_t(qmc::kPolygonContextCoded));
+  p.push_back(groups);
+  qmc::put_varint(&p, symbols.size() + length_extra);
+  p.insert(p.end(), symbols.begin(), symbols.end());
+  qmc::BitWriter bits;
+  stream(&bits);
+  const std::vector<uint8_t> raw = bits.finish();
+  p.insert(p.end(), raw.begin(), raw.end());
+  return p;
+}
+
+// A hand-made symbol stream: `body` codes decisions with the model of 5.4.10.
+std::vector<uint8_t> coding7_symbols(uint8_t groups,
+                                     const std::function<void(qmc::RangeEncoder*, qmc::PolygonSymbolModel*)>& body) {
+  qmc::RangeEncoder range;
+  qmc::PolygonSymbolModel model;
+  model.groups = groups;
+  body(&range, &model);
+  return range.finish();
+}
+
+// One component of n - 2 = `faces_minus_2`, first degree d - 3, then the
+// records H, S, I, L all 0.
+std::function<void(qmc::BitWriter*)> one_component(uint32_t faces_minus_2, uint32_t first_degree_minus_3) {
+  return [=](qmc::BitWriter* b) {
+    b->write_exp_golomb(1);
+    b->write_exp_golomb(faces_minus_2);
+    b->write_exp_golomb(first_degree_minus_3);
+    for (int i = 0; i < 4; ++i) b->write_exp_golomb(0);
+  };
+}
+
+void write_context_coded_valid(VectorWriter* w) {
+  using namespace qmc::tools;
+  const Mesh sphere = perturbed(triangulated(make_refined_sphere(3)), 5, 0.01f);
+  w->valid("valid_polygon_coding7_sphere", encode_polygons(sphere, qmc::kPolygonContextCoded), &sphere);
+  const Mesh torus = triangulated(make_torus(12, 8));  // genus 1: a seam
+  w->valid("valid_polygon_coding7_torus_triangles", encode_polygons(torus, qmc::kPolygonContextCoded), &torus);
+  const Mesh grid = triangulated(make_grid(6, 5));  // one hole: a virtual face of degree 22, symbol 18
+  w->valid("valid_polygon_coding7_grid_hole", encode_polygons(grid, qmc::kPolygonContextCoded), &grid);
+  const Mesh quads = make_torus(16, 10);  // quads only: groups = 2
+  w->valid("valid_polygon_coding7_quads", encode_polygons(quads, qmc::kPolygonContextCoded), &quads);
+  // Triangles, quads and heptagons in three components: every group, both NT and OT.
+  const Mesh mixed = combined(combined(make_prism(7), shifted(triangulated(make_refined_sphere(1)), 3.f)),
+                              shifted(make_torus(6, 4), 6.f));
+  w->valid("valid_polygon_coding7_all_groups", encode_polygons(mixed, qmc::kPolygonContextCoded), &mixed);
+  RandomSoupOptions soup_options;  // non-manifold edges and vertices, loose faces, identifications
+  soup_options.vertices = 120;
+  soup_options.faces = 160;
+  const Mesh soup = make_random_soup(21, soup_options);
+  w->valid("valid_polygon_coding7_soup", encode_polygons(soup, qmc::kPolygonContextCoded), &soup);
+  // What `qmc encode` writes by default: coding 7 with predicted positions (1.6).
+  qmc::EncodeOptions options;
+  options.position_method = qmc::PositionMethod::kPredicted;
+  options.candidate_choice = qmc::CandidateChoice::kFewestBits;
+  options.polygon_coding = qmc::kPolygonContextCoded;
+  std::vector<uint8_t> bytes;
+  if (qmc::Status s = qmc::encode(sphere, options, &bytes); !s.ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: coding 7 with POSN 1: %s\n", s.to_string().c_str());
+    std::exit(3);
+  }
+  w->valid("valid_polygon_coding7_posn1", bytes, &sphere);
+  w->valid("valid_polygon_coding7_loop_base",
+           loop_file(triangulated(make_torus(9, 6)), 2, torus_targets(1, 0.35), 12, qmc::PositionMethod::kPredicted, 2,
+                     true),
+           nullptr);
+  // No component: K = 0, no decision, an empty `symbols` field.
+  const Chunks base = split_chunks(encode_polygons(make_cube()));
+  Chunks c = base;
+  const size_t conn = find_chunk(c, qmc::kChunkConnectivity);
+  c[conn].payload = coding7_conn(8, 0, 0, {}, [](qmc::BitWriter* b) {
+    for (int i = 0; i < 5; ++i) b->write_exp_golomb(0);  // C, H, S, I, L
+  });
+  w->valid("valid_polygon_coding7_no_component", join_chunks(c), nullptr);
+}
+
+void write_context_coded_errors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  const ConnReplacer with_conn(encode_polygons(qmc::tools::make_cube()));
+  // The pillow of 5.4 (two quads on four vertices) with coding 7: Q1 applied with no loop.
+  const std::vector<uint8_t> q1 = coding7_symbols(qmc::kGroupQuads, [](qmc::RangeEncoder* r, qmc::PolygonSymbolModel* m) {
+    qmc::code_face_symbol(r, m, qmc::GateContext{}, 0);
+  });
+  w->valid("valid_polygon_coding7_pillow", with_conn(coding7_conn(8, 2, qmc::kGroupQuads, q1, one_component(0, 1))),
+           nullptr);
+  w->invalid("invalid_polygon_coding7_groups_above_7",
+             with_conn(coding7_conn(8, 2, 8, q1, one_component(0, 1))), ErrorCode::kBadChunkPayload);
+  {
+    std::vector<uint8_t> p = coding7_conn(8, 2, qmc::kGroupQuads, q1, one_component(0, 1));
+    p.resize(6);  // method, 8, 2, flags, coding, groups, then no symbol_bytes
+    w->invalid("invalid_polygon_coding7_length_missing", with_conn(p), ErrorCode::kBadChunkPayload);
+  }
+  w->invalid("invalid_polygon_coding7_length_past_end",
+             with_conn(coding7_conn(8, 2, qmc::kGroupQuads, q1, one_component(0, 1), 100)), ErrorCode::kTruncated);
+  w->invalid("invalid_polygon_coding7_no_groups", with_conn(coding7_conn(8, 2, 0, q1, one_component(0, 1))),
+             ErrorCode::kBadSymbol);
+  // K = 4097 face symbols from 0 bytes: 512 (0 + 8) = 4096 at most.
+  w->invalid("invalid_polygon_coding7_symbols_unjustified",
+             with_conn(coding7_conn(8, 2, qmc::kGroupQuads, {}, one_component(4096, 1))), ErrorCode::kLimitExceeded);
+  w->invalid("invalid_polygon_coding7_bad_start",
+             with_conn(coding7_conn(8, 2, qmc::kGroupQuads, {0xFF, 0xFF, 0xFF, 0xFF}, one_component(0, 1))),
+             ErrorCode::kBadChunkPayload);
+  std::vector<uint8_t> trailing = q1;
+  trailing.insert(trailing.end(), 8, 0);  // read as the invented zeros would be, then 4 never read
+  w->invalid("invalid_polygon_coding7_bytes_after_coded_data",
+             with_conn(coding7_conn(8, 2, qmc::kGroupQuads, trailing, one_component(0, 1))), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_polygon_coding7_no_component_with_byte", with_conn(coding7_conn(8, 0, 0, {0}, [](qmc::BitWriter* b) {
+               for (int i = 0; i < 5; ++i) b->write_exp_golomb(0);
+             })),
+             ErrorCode::kBadChunkPayload);
+  // The quad tree's code 13 (node 29) is no symbol.
+  const std::vector<uint8_t> code13 = coding7_symbols(qmc::kGroupQuads, [](qmc::RangeEncoder* r, qmc::PolygonSymbolModel* m) {
+    qmc::code_face_symbol(r, m, qmc::GateContext{}, 13);
+  });
+  w->invalid("invalid_polygon_coding7_quad_code_13",
+             with_conn(coding7_conn(8, 2, qmc::kGroupQuads, code13, one_component(0, 1))), ErrorCode::kBadSymbol);
+  // A triangle C (symbol 13) first: a detour with no current loop (5.4.5).
+  const std::vector<uint8_t> c13 = coding7_symbols(qmc::kGroupTriangles, [](qmc::RangeEncoder* r, qmc::PolygonSymbolModel* m) {
+    qmc::code_face_symbol(r, m, qmc::GateContext{}, 13);
+  });
+  w->invalid("invalid_polygon_coding7_detour_without_loop",
+             with_conn(coding7_conn(8, 2, qmc::kGroupTriangles, c13, one_component(0, 0))), ErrorCode::kBadSymbol);
+  // Symbol 18's degree: 32 zeros, then a degree the stream cannot justify.
+  const std::vector<uint8_t> zeros = coding7_symbols(qmc::kGroupOther, [](qmc::RangeEncoder* r, qmc::PolygonSymbolModel*) {
+    for (int i = 0; i < 40; ++i) r->code_direct(0);
+  });
+  w->invalid("invalid_polygon_coding7_degree_32_zeros",
+             with_conn(coding7_conn(8, 2, qmc::kGroupOther, zeros, one_component(0, 2))), ErrorCode::kBadChunkPayload);
+  const std::vector<uint8_t> huge = coding7_symbols(qmc::kGroupOther, [](qmc::RangeEncoder* r, qmc::PolygonSymbolModel*) {
+    uint32_t extra = 1u << 20;
+    qmc::code_other_degree(r, &extra);
+  });
+  w->invalid("invalid_polygon_coding7_degree_unjustified",
+             with_conn(coding7_conn(8, 2, qmc::kGroupOther, huge, one_component(0, 2))), ErrorCode::kLimitExceeded);
+  // The sphere's symbols cut in half: the decoder runs out of stream.
+  {
+    const Mesh sphere = qmc::tools::triangulated(qmc::tools::make_refined_sphere(3));
+    Chunks c = split_chunks(encode_polygons(sphere, qmc::kPolygonContextCoded));
+    const size_t k = find_chunk(c, qmc::kChunkConnectivity);
+    std::vector<uint8_t>& p = c[k].payload;
+    qmc::ByteReader r(p.data(), p.size());
+    uint8_t byte = 0;
+    uint64_t skip = 0;
+    r.get_u8(&byte);
+    r.get_varint(&skip);
+    r.get_varint(&skip);
+    for (int i = 0; i < 3; ++i) r.get_u8(&byte);  // flags, coding, groups
+    const size_t length_at = r.position();
+    uint64_t length = 0;
+    r.get_varint(&length);
+    if (r.position() != length_at + 1 || length < 16 || length > 127) {
+      std::fprintf(stderr, "qmc-make-vectors: coding 7 sphere: unexpected symbol length %llu\n",
+                   static_cast<unsigned long long>(length));
+      std::exit(3);
+    }
+    p.erase(p.begin() + std::ptrdiff_t(length_at + 1 + length / 2), p.begin() + std::ptrdiff_t(length_at + 1 + length));
+    p[length_at] = uint8_t(length / 2);
+    w->invalid("invalid_polygon_coding7_symbols_cut", join_chunks(c), ErrorCode::kTruncated);
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: qmc-make-vectors DIR   (writes DIR/MANIFEST and DIR/vectors/*.qmc)\n");
@@ -1659,6 +1831,8 @@ int main(int argc, char** argv) {
   write_hardening_vectors(&w);
   write_predicted_position_valid(&w);
   write_predicted_position_errors(&w);
+  write_context_coded_valid(&w);
+  write_context_coded_errors(&w);
   w.finish();
   return 0;
 }

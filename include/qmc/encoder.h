@@ -84,8 +84,11 @@ struct EncodeOptions {
   // Quad coder only: force a coding (0..4, section 5.3.5); -1 picks the
   // smallest. A forced coding that cannot express the mesh is an error.
   int quad_coding = -1;
-  // Polygon coder only: force a coding (0..5, section 5.4.4); -1 picks the smallest.
+  // Polygon coder only: force a coding (0..5 or 7, section 5.4.4); -1 picks the smallest.
   int polygon_coding = -1;
+  // Whether the smallest may be coding 7 (format 1.6, 5.4.10); false keeps
+  // a file readable by 1.5 decoders.
+  bool polygon_context_coding = true;
   std::vector<std::string> texts;            // written as teXt chunks ("key=value")
   // Write an oRDR chunk (section 4.5) so that the decoder restores the
   // input's order of vertices, faces and corners exactly; nothing is
@@ -121,7 +124,7 @@ struct QuadCoderStats {
 
 struct PolygonCoderStats {
   uint8_t coding = 0;                    // chosen coding, spec 5.4.4
-  std::array<int64_t, 6> coding_bits{};  // face-symbol bits per coding; -1 = not applicable
+  std::array<int64_t, kPolygonCodingCount> coding_bits{};  // face-symbol bits per coding; -1 = not applicable
   uint32_t components = 0, holes = 0, handles = 0, identifications = 0, loose_faces = 0;
   uint32_t non_quad_faces = 0;
   uint64_t record_bits = 0;              // bits of the records of 5.4.7 and 5.4.8

@@ -66,9 +66,13 @@ inline constexpr int kQuadCodingCount = 5;
 const char* quad_coding_name(QuadCoding coding);
 
 // Section 5.4.4: method 2 uses the quad codings 0..4 when every coded face
-// is a quad, or 5, a Huffman code over all face symbols.
+// is a quad, 5, a Huffman code over all face symbols, or 7, the symbols range
+// coded in contexts of Spirale Reversi's state (5.4.10, format 1.6). Coding 6
+// is unassigned (the vector invalid_polygon_unknown_coding uses it).
 inline constexpr int kPolygonMixedHuffman = 5;
-inline constexpr int kPolygonCodingCount = 6;
+inline constexpr int kPolygonUnassignedCoding = 6;
+inline constexpr int kPolygonContextCoded = 7;
+inline constexpr int kPolygonCodingCount = 8;
 
 // Section 6.1: position quantization bits.
 inline constexpr int kMinPositionBits = 1;

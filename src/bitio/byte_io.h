@@ -33,6 +33,13 @@ class ByteReader {
   // non-shortest encodings (a final byte of 0x00 after the first).
   bool get_varint(uint64_t* v);
 
+  // Moves past n bytes; false if fewer remain.
+  bool skip(size_t n) {
+    if (n > remaining()) return false;
+    pos_ += n;
+    return true;
+  }
+
   size_t position() const { return pos_; }
   size_t remaining() const { return size_ - pos_; }
   const uint8_t* cursor() const { return data_ + pos_; }

@@ -50,6 +50,14 @@ class RangeEncoder {
     encode(bit, kRangeProbabilityInit);
     return bit;
   }
+  // A bit of probability `prob` (1 .. 2047) of a 0, which the caller adapts.
+  int code_fixed(int bit, uint32_t prob) {
+    encode(bit, prob);
+    return bit;
+  }
+  // The encoder never runs out of stream (the decoder's check, for templates
+  // shared by both).
+  bool overrun() const { return false; }
   // Ends the stream and returns its bytes; the encoder is spent afterwards.
   std::vector<uint8_t> finish();
 
@@ -74,6 +82,7 @@ class RangeDecoder {
     return bit;
   }
   int code_direct(int /*unused*/) { return decode(kRangeProbabilityInit); }
+  int code_fixed(int /*unused*/, uint32_t prob) { return decode(prob); }
 
   // The first four bytes form 0xFFFFFFFF, a value no encoder writes.
   bool bad_start() const { return bad_start_; }

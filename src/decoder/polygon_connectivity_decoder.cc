@@ -14,6 +14,7 @@
 #include "bitio/polygon_symbols.h"
 #include "bitio/union_find.h"
 #include "bitio/quad_codings.h"
+#include "bitio/range_coder.h"
 #include "decoder/polygon_spirale_reversi.h"
 
 namespace qmc {
@@ -45,7 +46,9 @@ struct Components {
   uint64_t coded = 0;                          // K
 };
 
-Status read_components(BitReader* in, Components* c) {
+// `symbol_bytes`: coding 7's range-coded stream length L, or -1 when the
+// symbols are bits of this stream (codings 0 .. 5).
+Status read_components(BitReader* in, int64_t symbol_bytes, Components* c) {
   uint32_t count = 0;
   if (Status s = read_ue(in, &count); !s.ok()) return s;
   // Each component costs at least two bits below (two ue fields).
@@ -64,7 +67,7 @@ Status read_components(BitReader* in, Components* c) {
     if (d > UINT32_MAX - 3) return payload_error("first face degree above 2^32 - 1");
     d += 3;
   }
-  if (c->coded > in->bits_remaining())
+  if (symbol_bytes < 0 ? c->coded > in->bits_remaining() : !range_stream_justifies(c->coded, uint64_t(symbol_bytes)))
     return limit_error(std::to_string(c->coded) + " face symbols cannot fit in the stream");
   return Status::Ok();
 }
@@ -141,6 +144,65 @@ Status read_symbols(BitReader* in, int coding, uint64_t count, FaceShapes* shape
   }
   return Status::Ok();
 }
+
+// Coding 7 (5.4.10): each symbol range decoded when Spirale Reversi is
+// about to apply it, in the context of the gate.
+class CodedFaces : public FaceSymbolSource {
+ public:
+  CodedFaces(const uint8_t* data, size_t size, uint8_t groups, uint64_t coded)
+      : range_(data, size), bytes_(size) {
+    model_.groups = groups;
+    shapes_.reserve(size_t(coded));  // coded <= 512 (L + 8): read_components
+  }
+  Status start() const {
+    if (range_.bad_start()) return payload_error("face symbol stream starts with 0xFFFFFFFF");
+    return Status::Ok();
+  }
+  Status face(const GateContext& gate, size_t, size_t, const FaceShapes** shapes, size_t* index) override {
+    const int symbol = code_face_symbol(&range_, &model_, gate, 0);
+    if (range_.overrun()) return truncated();
+    if (symbol < 0) return symbol_error("quad code above 12 (5.4.10)");
+    if (symbol == kPolygonOtherSymbol) {
+      if (Status s = other_shape(); !s.ok()) return s;
+    } else {
+      uint8_t status[2], gaps[3];
+      uint32_t gap_count = 0;
+      const uint32_t d = symbol_shape(symbol, status, gaps, &gap_count);
+      shapes_.add(d, status, gaps, gap_count);
+    }
+    *shapes = &shapes_;
+    *index = shapes_.size() - 1;
+    return Status::Ok();
+  }
+  // 13.5.2's end check.
+  Status end() override {
+    if (range_.overrun()) return truncated();
+    if (range_.unread() != 0) return payload_error("bytes after the face symbol stream's coded data");
+    return Status::Ok();
+  }
+
+ private:
+  Status other_shape() {
+    uint32_t extra = 0;
+    if (!code_other_degree(&range_, &extra))
+      return range_.overrun() ? truncated() : payload_error("face degree code with 32 leading zeros");
+    const uint64_t d = uint64_t(extra) + 5;
+    if (!range_stream_justifies(d - 2, bytes_)) return limit_error("a face of degree " + std::to_string(d) + " cannot fit");
+    scratch_.resize(2 * size_t(d - 2) + 1);
+    uint8_t* status = scratch_.data();
+    uint8_t* gaps = status + (d - 2);
+    const uint32_t gap_count = code_other_shape(&range_, &model_, uint32_t(d - 2), status, gaps);
+    if (gap_count == 0) return truncated();
+    shapes_.add(uint32_t(d), status, gaps, gap_count);
+    return Status::Ok();
+  }
+
+  RangeDecoder range_;
+  uint64_t bytes_;
+  PolygonSymbolModel model_;
+  FaceShapes shapes_;
+  std::vector<uint8_t> scratch_;
+};
 
 struct Records {
   std::vector<uint8_t> is_virtual;  // per surface face
@@ -254,21 +316,50 @@ uint32_t final_labels(const PolygonSurface& s, const Records& r, std::vector<uin
 
 }  // namespace
 
-Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t vertex_count, uint32_t face_count,
-                                   Mesh* mesh, PolygonConnectivityInfo* info) {
-  ByteReader bytes(data, size);
-  uint8_t flags = 0, coding = 0;
-  if (!bytes.get_u8(&flags) || !bytes.get_u8(&coding)) return payload_error("polygon header cut short");
-  if (flags != 0) return payload_error("reserved polygon flags set");
-  if (coding >= kPolygonCodingCount)
-    return Status(ErrorCode::kUnsupportedFeature, "CONN: polygon coding " + std::to_string(coding));
-  info->coding = coding;
-  BitReader in(bytes.cursor(), bytes.remaining());
-  Components components;
-  if (Status s = read_components(&in, &components); !s.ok()) return s;
-  FaceShapes shapes;
-  if (Status s = read_symbols(&in, coding, components.coded, &shapes); !s.ok()) return s;
+namespace {
 
+struct PolygonHeader {
+  uint8_t coding = 0, groups = 0;
+  const uint8_t* symbols = nullptr;  // coding 7's range-coded stream
+  int64_t symbol_bytes = -1;
+};
+
+Status read_polygon_header(ByteReader* bytes, PolygonHeader* h) {
+  uint8_t flags = 0;
+  if (!bytes->get_u8(&flags) || !bytes->get_u8(&h->coding)) return payload_error("polygon header cut short");
+  if (flags != 0) return payload_error("reserved polygon flags set");
+  if (h->coding >= kPolygonCodingCount || h->coding == kPolygonUnassignedCoding)
+    return Status(ErrorCode::kUnsupportedFeature, "CONN: polygon coding " + std::to_string(h->coding));
+  if (h->coding != kPolygonContextCoded) return Status::Ok();
+  uint64_t length = 0;
+  if (!bytes->get_u8(&h->groups)) return payload_error("polygon header cut short");
+  if (h->groups > (kGroupTriangles | kGroupQuads | kGroupOther)) return payload_error("unknown symbol groups");
+  if (!bytes->get_varint(&length)) return payload_error("face symbol stream length missing or malformed");
+  h->symbols = bytes->cursor();
+  if (!bytes->skip(size_t(length))) return truncated();
+  h->symbol_bytes = int64_t(length);
+  return Status::Ok();
+}
+
+// The records of 5.4.7 and 5.4.8, which follow the symbols.
+Status read_records(BitReader* in, const std::vector<uint32_t>& degree, uint64_t labels, uint32_t vertex_count,
+                    Records* records, Mesh* loose) {
+  if (labels > UINT32_MAX) return limit_error("more than 2^32 - 1 surface vertices");
+  if (Status s = read_virtual_faces(in, degree, records); !s.ok()) return s;
+  if (Status s = read_seams(in, degree, records); !s.ok()) return s;
+  if (Status s = read_identifications(in, uint32_t(labels), records); !s.ok()) return s;
+  if (Status s = read_loose_faces(in, vertex_count, loose); !s.ok()) return s;
+  if (!in->at_clean_end()) return payload_error("bits left over after the polygon stream");
+  return Status::Ok();
+}
+
+// Codings 0 .. 5: symbols, records, then Spirale Reversi (5.4.1's order).
+Status decode_stored(BitReader* in, const PolygonHeader& h, uint32_t vertex_count, PolygonSurface* surface,
+                     Records* records, Mesh* loose, Components* components_out) {
+  Components& components = *components_out;
+  if (Status s = read_components(in, -1, &components); !s.ok()) return s;
+  FaceShapes shapes;
+  if (Status s = read_symbols(in, h.coding, components.coded, &shapes); !s.ok()) return s;
   // Degrees of the surface faces and N (5.4.7), known before decoding.
   std::vector<uint32_t> degree;
   degree.reserve(components.faces.size() + size_t(components.coded));
@@ -282,18 +373,42 @@ Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t ve
         labels += shapes.status[shapes.status_begin[f] + k] ? 0 : 1;
     }
   }
-  if (labels > UINT32_MAX) return limit_error("more than 2^32 - 1 surface vertices");
-  Records records;
-  if (Status s = read_virtual_faces(&in, degree, &records); !s.ok()) return s;
-  if (Status s = read_seams(&in, degree, &records); !s.ok()) return s;
-  if (Status s = read_identifications(&in, uint32_t(labels), &records); !s.ok()) return s;
-  Mesh loose;
-  if (Status s = read_loose_faces(&in, vertex_count, &loose); !s.ok()) return s;
-  if (!in.at_clean_end()) return payload_error("bits left over after the polygon stream");
+  if (Status s = read_records(in, degree, labels, vertex_count, records, loose); !s.ok()) return s;
+  return polygon_spirale_reversi(components.faces, components.first_degree, shapes, surface);
+}
 
-  PolygonSurface surface;
-  if (Status s = polygon_spirale_reversi(components.faces, components.first_degree, shapes, &surface); !s.ok())
+// Coding 7: components, Spirale Reversi decoding each symbol as it goes,
+// then the records (5.4.10).
+Status decode_context_coded(BitReader* in, const PolygonHeader& h, uint32_t vertex_count, PolygonSurface* surface,
+                            Records* records, Mesh* loose, Components* components_out) {
+  Components& components = *components_out;
+  if (Status s = read_components(in, h.symbol_bytes, &components); !s.ok()) return s;
+  if (h.groups == 0 && components.coded > 0) return symbol_error("face symbols but no symbol group");
+  CodedFaces faces(h.symbols, size_t(h.symbol_bytes), h.groups, components.coded);
+  if (Status s = faces.start(); !s.ok()) return s;
+  if (Status s = polygon_spirale_reversi(components.faces, components.first_degree, &faces, surface); !s.ok())
     return s;
+  return read_records(in, surface->face_degree, surface->labels, vertex_count, records, loose);
+}
+
+}  // namespace
+
+Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t vertex_count, uint32_t face_count,
+                                   Mesh* mesh, PolygonConnectivityInfo* info) {
+  ByteReader bytes(data, size);
+  PolygonHeader header;
+  if (Status s = read_polygon_header(&bytes, &header); !s.ok()) return s;
+  info->coding = header.coding;
+  BitReader in(bytes.cursor(), bytes.remaining());
+  PolygonSurface surface;
+  Records records;
+  Mesh loose;
+  Components components;
+  const Status decoded = header.coding == kPolygonContextCoded
+                             ? decode_context_coded(&in, header, vertex_count, &surface, &records, &loose, &components)
+                             : decode_stored(&in, header, vertex_count, &surface, &records, &loose, &components);
+  if (!decoded.ok()) return decoded;
+  const std::vector<uint32_t>& degree = surface.face_degree;
   std::vector<uint32_t> final;
   const uint32_t classes = final_labels(surface, records, &final);
   if (classes > vertex_count)

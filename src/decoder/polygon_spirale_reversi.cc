@@ -45,6 +45,11 @@ class PolygonSpiraleReversi {
     face_degrees_.reserve(face_capacity);
   }
 
+  // Counts each vertex's faces for gate_context() (coding 7 only: it costs
+  // a find per corner).
+  void count_faces() { counting_ = true; }
+  // Section 5.4.10: the face counts at the gate node and its neighbours.
+  GateContext gate_context();
   // Undoes coded face `f` of `shapes` (global index, for messages).
   Status apply(const FaceShapes& shapes, size_t f);
   // Ends a component whose first face has degree d: labels its vertices
@@ -55,7 +60,9 @@ class PolygonSpiraleReversi {
   uint32_t new_node() { return nodes_.new_node(); }
   void link(uint32_t a, uint32_t b) { nodes_.link(a, b); }
   uint32_t find(uint32_t v) { return nodes_.find(v); }
-  void merge(uint32_t kept, uint32_t gone) { nodes_.merge(kept, gone); }
+  void merge(uint32_t kept, uint32_t gone);
+  uint32_t capped_count(uint32_t node);
+  void count_last_face(uint32_t d);
 
   Status whole_loop(const FaceShapes& shapes, size_t f);
   Status open_detour(size_t f, const Loop& loop, uint32_t free_count, Detour* detour);
@@ -70,7 +77,37 @@ class PolygonSpiraleReversi {
   // Scratch, reused across faces.
   std::vector<uint32_t> free_count_, free_nodes_, anchor_;
   std::vector<Detour> detours_;
+  bool counting_ = false;
+  std::vector<uint32_t> faces_at_;  // per vertex root: faces made with it (5.4.10)
 };
+
+// Merged vertices pool their faces: no face has both (5.4.5: faces have
+// distinct vertices), so the sum is the merged vertex's count.
+void PolygonSpiraleReversi::merge(uint32_t kept, uint32_t gone) {
+  if (!counting_) return nodes_.merge(kept, gone);
+  const uint32_t a = find(vertex_[kept]), b = find(vertex_[gone]);
+  if (a == b) return;
+  if (faces_at_.size() < parent_.size()) faces_at_.resize(parent_.size(), 0);
+  faces_at_[a] += faces_at_[b];
+  parent_[b] = a;
+}
+
+uint32_t PolygonSpiraleReversi::capped_count(uint32_t node) {
+  const uint32_t v = find(vertex_[node]);
+  const uint32_t n = v < faces_at_.size() ? faces_at_[v] : 0;
+  return n < kGateCountCap ? n : kGateCountCap;
+}
+
+GateContext PolygonSpiraleReversi::gate_context() {
+  const uint32_t h = current_.gate;
+  if (h == kNone) return GateContext{};
+  return GateContext{capped_count(h), capped_count(next_[h]), capped_count(prev_[h])};
+}
+
+void PolygonSpiraleReversi::count_last_face(uint32_t d) {
+  if (faces_at_.size() < parent_.size()) faces_at_.resize(parent_.size(), 0);
+  for (size_t i = face_vertices_.size() - d; i < face_vertices_.size(); ++i) ++faces_at_[find(face_vertices_[i])];
+}
 
 Status PolygonSpiraleReversi::whole_loop(const FaceShapes& shapes, size_t f) {
   const uint32_t d = shapes.degree[f];
@@ -87,6 +124,7 @@ Status PolygonSpiraleReversi::whole_loop(const FaceShapes& shapes, size_t f) {
   link(last, first);
   current_ = {first, d};
   face_degrees_.push_back(d);
+  if (counting_) count_last_face(d);
   return Status::Ok();
 }
 
@@ -176,6 +214,7 @@ Status PolygonSpiraleReversi::apply(const FaceShapes& shapes, size_t f) {
   for (uint32_t i = m; i-- > 0;)
     if (!status[i]) inner_.push_back(face_vertices_[w_begin + i]);
   face_degrees_.push_back(d);
+  if (counting_) count_last_face(d);
   return Status::Ok();
 }
 
@@ -222,6 +261,7 @@ Status PolygonSpiraleReversi::finish_component(uint32_t d, size_t first_coded, s
   current_ = Loop{};
   face_vertices_.clear();
   face_degrees_.clear();
+  faces_at_.clear();
   return Status::Ok();
 }
 
@@ -251,6 +291,54 @@ Status check_directed_edges(const PolygonSurface& s) {
 
 }  // namespace
 
+namespace {
+
+// Codings 0 .. 5: every symbol was read before Spirale Reversi starts.
+class StoredFaces : public FaceSymbolSource {
+ public:
+  StoredFaces(const std::vector<uint32_t>& components, const FaceShapes& shapes) : shapes_(shapes) {
+    first_.reserve(components.size());
+    size_t first = 0;
+    for (uint32_t n : components) {
+      first_.push_back(first);
+      first += n - 1;
+    }
+  }
+  Status face(const GateContext&, size_t c, size_t k, const FaceShapes** shapes, size_t* index) override {
+    *shapes = &shapes_;
+    *index = first_[c] + k;
+    return Status::Ok();
+  }
+
+ private:
+  const FaceShapes& shapes_;
+  std::vector<size_t> first_;
+};
+
+Status run_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
+                           FaceSymbolSource* source, bool count_faces, size_t largest, size_t most_faces,
+                           PolygonSurface* surface) {
+  PolygonSpiraleReversi decoder{largest, most_faces};
+  if (count_faces) decoder.count_faces();
+  size_t first = 0;
+  for (size_t c = 0; c < components.size(); ++c) {
+    const size_t coded = components[c] - 1;
+    for (size_t k = coded; k-- > 0;) {
+      const FaceShapes* shapes = nullptr;
+      size_t index = 0;
+      const GateContext gate = count_faces ? decoder.gate_context() : GateContext{};
+      if (Status s = source->face(gate, c, k, &shapes, &index); !s.ok()) return s;
+      if (Status s = decoder.apply(*shapes, index); !s.ok()) return s;
+    }
+    if (Status s = decoder.finish_component(first_degree[c], first, coded, surface); !s.ok()) return s;
+    first += coded;
+  }
+  if (Status s = source->end(); !s.ok()) return s;
+  return check_directed_edges(*surface);
+}
+
+}  // namespace
+
 Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
                                const FaceShapes& shapes, PolygonSurface* surface) {
   *surface = PolygonSurface{};
@@ -261,21 +349,19 @@ Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const st
     largest = std::max(largest, corners);
     most_faces = std::max<uint64_t>(most_faces, components[c]);
     // The coded faces only: their degrees are backed by the stream's bits
-    // (5.4.3), a first face's degree is not until the spiral has built it.
+    // (5.4.3), a first face's degree is not until the spiral has built that face.
     all_corners += corners;
   }
-  PolygonSpiraleReversi decoder{size_t(largest), size_t(most_faces)};
   surface->face_degree.reserve(components.size() + shapes.size());
   surface->corners.reserve(size_t(all_corners));
-  size_t first = 0;
-  for (size_t c = 0; c < components.size(); ++c) {
-    const size_t coded = components[c] - 1;
-    for (size_t k = coded; k-- > 0;)
-      if (Status s = decoder.apply(shapes, first + k); !s.ok()) return s;
-    if (Status s = decoder.finish_component(first_degree[c], first, coded, surface); !s.ok()) return s;
-    first += coded;
-  }
-  return check_directed_edges(*surface);
+  StoredFaces stored(components, shapes);
+  return run_spirale_reversi(components, first_degree, &stored, false, size_t(largest), size_t(most_faces), surface);
+}
+
+Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
+                               FaceSymbolSource* source, PolygonSurface* surface) {
+  *surface = PolygonSurface{};
+  return run_spirale_reversi(components, first_degree, source, true, 0, 0, surface);
 }
 
 }  // namespace qmc

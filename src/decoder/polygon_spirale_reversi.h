@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "bitio/polygon_symbol_coding.h"
 #include "bitio/polygon_symbols.h"
 #include "qmc/status.h"
 
@@ -19,9 +20,25 @@ struct PolygonSurface {
   uint32_t labels = 0;                // N: number of surface labels
 };
 
+// Coding 7 (5.4.10): the faces come one at a time, each symbol decoded (or
+// encoded) in the context of the gate it is about to be applied at.
+class FaceSymbolSource {
+ public:
+  virtual ~FaceSymbolSource() = default;
+  // Component c's coded face k (0-based in stream order), applied next at
+  // `gate`: sets the shapes holding it and its index there.
+  virtual Status face(const GateContext& gate, size_t c, size_t k, const FaceShapes** shapes, size_t* index) = 0;
+  // After the last face, before the directed-edge check.
+  virtual Status end() { return Status::Ok(); }
+};
+
 // components[c] = n_c, first_degree[c] = d_c; `shapes` holds the sum of
 // (n_c - 1) coded faces in stream order.
 Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
                                const FaceShapes& shapes, PolygonSurface* surface);
+// The same, the faces taken from `source` in the order they are applied,
+// with each vertex's faces counted for the gate contexts.
+Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
+                               FaceSymbolSource* source, PolygonSurface* surface);
 
 }  // namespace qmc

@@ -16,14 +16,16 @@ struct FileConnectivity {
   std::vector<uint8_t> payload;
   Mesh mesh;
   std::vector<uint32_t> file_vertex, face_source;
+  int polygon_coding = -1;  // method 2's coding (5.4.4)
 };
 
 // Section 5.1: the quad coder where it applies (kAuto), else the polygon
 // coder, else the indexed coding, as `options.connectivity` asks.
 Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileConnectivity* conn, EncodeStats* st);
 
-// Section 4.1: the lowest minor version that defines the method.
-uint8_t minor_version_for(ConnectivityMethod method, int position_method);
+// Section 4.1: the lowest minor version that defines the connectivity and
+// the POSN method.
+uint8_t minor_version_for(const FileConnectivity& conn, int position_method);
 
 // Appends a chunk and records its size in the stats.
 void add_chunk(std::vector<uint8_t>* out, EncodeStats* stats, uint32_t type, const std::vector<uint8_t>& payload);

@@ -209,7 +209,8 @@ Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& 
   // The lowest minor version that defines everything in the file (4.1).
   out->clear();
   write_signature(out);
-  add_chunk(out, st, kChunkHeader, {kFormatMajor, uint8_t(format_1_5 ? 5 : 3)});
+  const uint8_t minor = std::max<uint8_t>(minor_version_for(conn, 0), format_1_5 ? 5 : 3);
+  add_chunk(out, st, kChunkHeader, {kFormatMajor, minor});
   for (const std::string& text : options.texts)
     add_chunk(out, st, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));
   add_chunk(out, st, kChunkLoop, {uint8_t(levels), 0});

@@ -12,6 +12,9 @@
 #include "bitio/polygon_symbols.h"
 #include "bitio/union_find.h"
 #include "bitio/quad_codings.h"
+#include "bitio/polygon_symbol_coding.h"
+#include "bitio/range_coder.h"
+#include "decoder/polygon_spirale_reversi.h"
 #include "encoder/polygon_surface.h"
 #include "encoder/polygon_traversal_encoder.h"
 #include "qmc/format.h"
@@ -89,6 +92,65 @@ std::vector<uint8_t> quad_types(const FaceShapes& shapes) {
   return types;
 }
 
+uint8_t symbol_groups(const FaceShapes& shapes) {
+  uint8_t groups = 0;
+  for (uint32_t d : shapes.degree) groups |= d == 3 ? kGroupTriangles : d == 4 ? kGroupQuads : kGroupOther;
+  return groups;
+}
+
+// Coding 7 (5.4.10): the encoder runs the decoder's Spirale Reversi over its
+// own symbols, so each one is coded in exactly the gate context the decoder
+// will see when it decodes it.
+class EncodedFaces : public FaceSymbolSource {
+ public:
+  EncodedFaces(const std::vector<uint32_t>& components, const FaceShapes& shapes) : shapes_(shapes) {
+    size_t first = 0;
+    for (uint32_t n : components) {
+      first_.push_back(first);
+      first += n - 1;
+    }
+    model_.groups = symbol_groups(shapes);
+  }
+  Status face(const GateContext& gate, size_t c, size_t k, const FaceShapes** shapes, size_t* index) override {
+    const size_t f = first_[c] + k;
+    const int symbol = face_symbol(shapes_, f);
+    code_face_symbol(&range_, &model_, gate, symbol);
+    if (symbol == kPolygonOtherSymbol) {
+      uint32_t extra = shapes_.degree[f] - 5;
+      code_other_degree(&range_, &extra);
+      const uint32_t m = shapes_.degree[f] - 2, gaps = shapes_.gap_count(f);
+      std::vector<uint8_t> status(&shapes_.status[shapes_.status_begin[f]], &shapes_.status[shapes_.status_begin[f]] + m);
+      std::vector<uint8_t> kinds(&shapes_.gap_is_edge[shapes_.gap_begin[f]],
+                                 &shapes_.gap_is_edge[shapes_.gap_begin[f]] + gaps);
+      code_other_shape(&range_, &model_, m, status.data(), kinds.data());
+    }
+    *shapes = &shapes_;
+    *index = f;
+    return Status::Ok();
+  }
+  uint8_t groups() const { return model_.groups; }
+  std::vector<uint8_t> finish() { return range_.finish(); }
+
+ private:
+  const FaceShapes& shapes_;
+  std::vector<size_t> first_;
+  PolygonSymbolModel model_;
+  RangeEncoder range_;
+};
+
+// The groups byte, the length and the range-coded symbols of coding 7.
+std::vector<uint8_t> context_coded_symbols(const PolygonTraversal& t) {
+  EncodedFaces faces(t.component_faces, t.shapes);
+  PolygonSurface surface;
+  polygon_spirale_reversi(t.component_faces, t.first_degree, &faces, &surface);
+  const std::vector<uint8_t> stream = faces.finish();
+  std::vector<uint8_t> out;
+  put_u8(&out, faces.groups());
+  put_varint(&out, stream.size());
+  out.insert(out.end(), stream.begin(), stream.end());
+  return out;
+}
+
 void write_symbols(const FaceShapes& shapes, int coding, BitWriter* out) {
   if (coding == kPolygonMixedHuffman) write_mixed_symbols(shapes, out);
   else write_quad_stream(QuadCoding(coding), quad_types(shapes), out);
@@ -149,7 +211,7 @@ void derive_records(const PolygonSurfaceModel& s, const PolygonTraversal& t, Rec
 
 }  // namespace
 
-std::string encode_polygon_connectivity(const Mesh& mesh, int forced, PolygonEncoding* out) {
+std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool context_coding, PolygonEncoding* out) {
   *out = PolygonEncoding{};
   PolygonSurfaceModel surface;
   if (std::string why = build_polygon_surface(mesh, &surface); !why.empty()) return why;
@@ -203,8 +265,14 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, PolygonEnc
   const bool quads = all_quads(shapes);
   const std::vector<uint8_t> types = quads ? quad_types(shapes) : std::vector<uint8_t>{};
   int best = -1;
+  const bool try_context = context_coding || forced == kPolygonContextCoded;
+  const std::vector<uint8_t> coded_symbols = try_context ? context_coded_symbols(traversal) : std::vector<uint8_t>{};
   for (int c = 0; c < kPolygonCodingCount; ++c) {
-    if (c == kPolygonMixedHuffman) {
+    if (c == kPolygonUnassignedCoding) {
+      out->coding_bits[c] = -1;
+    } else if (c == kPolygonContextCoded) {
+      out->coding_bits[c] = try_context ? int64_t(8 * coded_symbols.size()) : -1;
+    } else if (c == kPolygonMixedHuffman) {
       BitWriter trial;
       write_mixed_symbols(shapes, &trial);
       out->coding_bits[c] = int64_t(trial.bit_count());
@@ -224,7 +292,7 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, PolygonEnc
   bits.write_exp_golomb(uint32_t(traversal.component_faces.size()));
   for (uint32_t n : traversal.component_faces) bits.write_exp_golomb(n - 2);
   for (uint32_t d : traversal.first_degree) bits.write_exp_golomb(d - 3);
-  write_symbols(shapes, best, &bits);
+  if (best != kPolygonContextCoded) write_symbols(shapes, best, &bits);
   const uint64_t before_records = bits.bit_count();
   bits.write_exp_golomb(uint32_t(records.virtual_index.size()));
   for (size_t i = 0; i < records.virtual_index.size(); ++i)
@@ -254,6 +322,7 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, PolygonEnc
   put_varint(&out->payload, out->file_mesh.face_count());
   put_u8(&out->payload, 0);
   put_u8(&out->payload, out->coding);
+  if (best == kPolygonContextCoded) out->payload.insert(out->payload.end(), coded_symbols.begin(), coded_symbols.end());
   const std::vector<uint8_t> stream = bits.finish();
   out->payload.insert(out->payload.end(), stream.begin(), stream.end());
   out->components = uint32_t(traversal.component_faces.size());

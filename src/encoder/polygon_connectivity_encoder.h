@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "qmc/format.h"
 #include "qmc/mesh.h"
 
 namespace qmc {
@@ -17,14 +18,15 @@ struct PolygonEncoding {
   std::vector<uint32_t> file_vertex;   // file label -> input vertex
   std::vector<uint32_t> face_source;   // file face -> input face
   uint8_t coding = 0;
-  std::array<int64_t, 6> coding_bits{};  // symbol bits per coding, -1 where not applicable
+  std::array<int64_t, kPolygonCodingCount> coding_bits{};  // symbol bits per coding, -1 where not applicable
   uint32_t components = 0, holes = 0, handles = 0, identifications = 0, loose_faces = 0;
   uint32_t non_quad_faces = 0;
   uint64_t record_bits = 0;            // virtual faces, seams, identifications, loose faces
 };
 
 // Returns "" or why the mesh cannot go through method 2. `forced` is a
-// coding 0..5, or -1 for the smallest.
-std::string encode_polygon_connectivity(const Mesh& mesh, int forced, PolygonEncoding* out);
+// coding 0..5 or 7, or -1 for the smallest.
+// `context_coding`: coding 7 may be the smallest (5.4.10, format 1.6).
+std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool context_coding, PolygonEncoding* out);
 
 }  // namespace qmc

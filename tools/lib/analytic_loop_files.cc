@@ -51,7 +51,8 @@ LevelTargets torus_targets(double R, double r) { return per_point(on_torus, {R, 
 LevelTargets height_field_targets() { return per_point(on_height_field, {}); }
 
 Status make_loop_file(const Mesh& base, int levels, const LevelTargets& targets, int bits, std::vector<uint8_t>* out,
-                      EncodeStats* stats, PositionMethod base_positions, int displacement_code) {
+                      EncodeStats* stats, PositionMethod base_positions, int displacement_code,
+                      bool context_coded_faces) {
   EncodeOptions options;
   options.position_bits = bits;
   options.position_grid = PositionGrid::kPerAxis;  // LEVL's arithmetic starts from section 6.1's grid
@@ -59,6 +60,7 @@ Status make_loop_file(const Mesh& base, int levels, const LevelTargets& targets,
   options.candidate_choice = CandidateChoice::kNearest;  // the choice when valid_posn1_loop_base was made
   options.displacement_code = displacement_code;
   options.connectivity = ConnectivityChoice::kPolygon;
+  options.polygon_context_coding = context_coded_faces;
   EncodeStats local;
   EncodeStats& st = stats ? *stats : local;
   FileConnectivity conn;

@@ -33,6 +33,6 @@ LevelTargets height_field_targets();
 // that section 12.2 does not allow.
 Status make_loop_file(const Mesh& base, int levels, const LevelTargets& targets, int bits, std::vector<uint8_t>* out,
                       EncodeStats* stats = nullptr, PositionMethod base_positions = PositionMethod::kDeltas,
-                      int displacement_code = 0);
+                      int displacement_code = 0, bool context_coded_faces = false);
 
 }  // namespace qmc::tools

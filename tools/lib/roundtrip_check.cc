@@ -36,7 +36,7 @@ bool spec_correspondence(const Mesh& original, ConnectivityMethod method, Corres
     // The encoder's correspondence is a witness: check_round_trip still
     // checks every face and coordinate against it.
     PolygonEncoding encoding;
-    *why = encode_polygon_connectivity(original, -1, &encoding);
+    *why = encode_polygon_connectivity(original, -1, true, &encoding);
     if (!why->empty()) return false;
     c->file_vertex = std::move(encoding.file_vertex);
     c->face_source = std::move(encoding.face_source);
