@@ -28,6 +28,7 @@
 #include "quad_disk_generator.h"
 #include "decoder/spirale_reversi_decoder.h"
 #include "encoder/gim_writer.h"
+#include "encoder/polygon_connectivity_encoder.h"
 #include "gim_test_images.h"
 #include "qmc/decoder.h"
 #include "qmc/encoder.h"
@@ -1712,6 +1713,16 @@ void write_context_coded_valid(VectorWriter* w) {
            loop_file(triangulated(make_torus(9, 6)), 2, torus_targets(1, 0.35), 12, qmc::PositionMethod::kPredicted, 2,
                      true),
            nullptr);
+  // A random quad disk whose traversal has a Q8 (symbol 7): three detours
+  // in one face, so the two loops popped (5.4.5) must be taken in order.
+  for (uint64_t seed = 1;; ++seed) {
+    const Mesh disk = qmc::tools::make_random_quad_disk(seed, 60);
+    qmc::PolygonEncoding encoding;
+    if (!qmc::encode_polygon_connectivity(disk, qmc::kPolygonContextCoded, true, &encoding).empty()) continue;
+    if (encoding.symbol_counts[7] == 0) continue;
+    w->valid("valid_polygon_coding7_three_detours", encode_polygons(disk, qmc::kPolygonContextCoded), &disk);
+    break;
+  }
   // No component: K = 0, no decision, an empty `symbols` field.
   const Chunks base = split_chunks(encode_polygons(make_cube()));
   Chunks c = base;
@@ -1772,6 +1783,10 @@ void write_context_coded_errors(VectorWriter* w) {
   const std::vector<uint8_t> zeros = coding7_symbols(qmc::kGroupOther, [](qmc::RangeEncoder* r, qmc::PolygonSymbolModel*) {
     for (int i = 0; i < 40; ++i) r->code_direct(0);
   });
+  // An empty stream reads as zeros: the degree's prefix runs past the 4
+  // invented bytes before its 32nd zero.
+  w->invalid("invalid_polygon_coding7_degree_prefix_truncated",
+             with_conn(coding7_conn(8, 2, qmc::kGroupOther, {}, one_component(0, 2))), ErrorCode::kTruncated);
   w->invalid("invalid_polygon_coding7_degree_32_zeros",
              with_conn(coding7_conn(8, 2, qmc::kGroupOther, zeros, one_component(0, 2))), ErrorCode::kBadChunkPayload);
   const std::vector<uint8_t> huge = coding7_symbols(qmc::kGroupOther, [](qmc::RangeEncoder* r, qmc::PolygonSymbolModel*) {

@@ -262,6 +262,7 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
 
   // Coding: the smallest (5.4.4).
   const FaceShapes& shapes = traversal.shapes;
+  for (size_t f = 0; f < shapes.size(); ++f) ++out->symbol_counts[face_symbol(shapes, f)];
   const bool quads = all_quads(shapes);
   const std::vector<uint8_t> types = quads ? quad_types(shapes) : std::vector<uint8_t>{};
   int best = -1;

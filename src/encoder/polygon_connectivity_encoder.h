@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "bitio/polygon_symbols.h"
 #include "qmc/format.h"
 #include "qmc/mesh.h"
 
@@ -21,6 +22,7 @@ struct PolygonEncoding {
   std::array<int64_t, kPolygonCodingCount> coding_bits{};  // symbol bits per coding, -1 where not applicable
   uint32_t components = 0, holes = 0, handles = 0, identifications = 0, loose_faces = 0;
   uint32_t non_quad_faces = 0;
+  std::array<uint32_t, kPolygonSymbolCount> symbol_counts{};  // coded faces per symbol (5.4.3)
   uint64_t record_bits = 0;            // virtual faces, seams, identifications, loose faces
 };
 
