@@ -64,7 +64,9 @@ class PolygonSpiraleReversi {
   uint32_t capped_count(uint32_t node);
   void count_last_face(uint32_t d);
 
-  Status whole_loop(const FaceShapes& shapes, size_t f);
+  Status whole_loop(uint32_t d);
+  Status apply_triangle(size_t f, bool anchor, bool first_gap_edge, bool second_gap_edge);
+  void add_triangle(uint32_t g0, uint32_t g1, uint32_t w);
   Status open_detour(size_t f, const Loop& loop, uint32_t free_count, Detour* detour);
 
   LoopNodes nodes_;
@@ -109,8 +111,7 @@ void PolygonSpiraleReversi::count_last_face(uint32_t d) {
   for (size_t i = face_vertices_.size() - d; i < face_vertices_.size(); ++i) ++faces_at_[find(face_vertices_[i])];
 }
 
-Status PolygonSpiraleReversi::whole_loop(const FaceShapes& shapes, size_t f) {
-  const uint32_t d = shapes.degree[f];
+Status PolygonSpiraleReversi::whole_loop(uint32_t d) {
   if (current_.gate != kNone) loops_.push_back(current_);
   const uint32_t first = new_node();
   uint32_t last = first;
@@ -144,15 +145,72 @@ Status PolygonSpiraleReversi::open_detour(size_t f, const Loop& loop, uint32_t f
   return Status::Ok();
 }
 
+void PolygonSpiraleReversi::add_triangle(uint32_t g0, uint32_t g1, uint32_t w) {
+  face_vertices_.push_back(vertex_[g0]);
+  face_vertices_.push_back(vertex_[g1]);
+  face_vertices_.push_back(vertex_[w]);
+  face_degrees_.push_back(3);
+  if (counting_) count_last_face(3);
+}
+
+// The five triangle symbols (13..17) of apply() below, worked out for one
+// anchor or one free vertex: the same nodes, links, merges, checks and
+// faces, without the per-face scratch of the general case.
+Status PolygonSpiraleReversi::apply_triangle(size_t f, bool anchor, bool first_gap_edge, bool second_gap_edge) {
+  if (anchor && first_gap_edge && second_gap_edge) return whole_loop(3);  // 14
+  if (current_.gate == kNone) return invalid(f, "has a detour but there is no boundary to attach to");
+  const uint32_t h = current_.gate, n = uint32_t(current_.length);
+  Detour detour;
+  free_nodes_.clear();
+  if (!anchor) {  // 13: the gate node's vertex becomes inner
+    if (Status s = open_detour(f, current_, 1, &detour); !s.ok()) return s;
+    const uint32_t before = prev_[h], after = next_[h];
+    link(before, after);
+    current_ = {before, current_.length - 1};
+    add_triangle(before, after, h);
+    inner_.push_back(vertex_[h]);
+    return Status::Ok();
+  }
+  if (!first_gap_edge && !second_gap_edge) {  // 17: joins the current loop and the top of the stack
+    if (loops_.empty()) return invalid(f, "needs 1 loops from a stack of 0");
+    if (Status s = open_detour(f, current_, 0, &detour); !s.ok()) return s;
+    const Loop popped = loops_.back();
+    loops_.pop_back();
+    if (Status s = open_detour(f, popped, 0, &detour); !s.ok()) return s;
+    const uint32_t h2 = popped.gate, s1 = next_[h], s2 = next_[h2];
+    link(h, next_[s2]);
+    merge(h, s2);
+    link(h2, s1);
+    current_ = {h2, current_.length + popped.length - 1};
+    add_triangle(h2, s1, h);
+    return Status::Ok();
+  }
+  if (Status s = open_detour(f, current_, 0, &detour); !s.ok()) return s;
+  const uint32_t fresh = new_node(), after = next_[h];
+  if (first_gap_edge) {  // 15: a new vertex before the gate edge's end
+    link(fresh, after);
+    link(h, fresh);
+    current_ = {h, uint64_t(n) + 1};
+    add_triangle(h, fresh, after);
+  } else {  // 16: a new vertex after the gate node
+    link(h, fresh);
+    link(fresh, after);
+    current_ = {fresh, uint64_t(n) + 1};
+    add_triangle(fresh, after, h);
+  }
+  return Status::Ok();
+}
+
 Status PolygonSpiraleReversi::apply(const FaceShapes& shapes, size_t f) {
   const uint32_t d = shapes.degree[f], m = d - 2, gaps = shapes.gap_count(f);
   const uint8_t* status = &shapes.status[shapes.status_begin[f]];
   const uint8_t* edge = &shapes.gap_is_edge[shapes.gap_begin[f]];
+  if (d == 3) return apply_triangle(f, status[0] != 0, edge[0] != 0, status[0] ? edge[1] != 0 : false);
   free_count_.assign(gaps, 0);
   for (uint32_t i = 0, g = 0; i < m; ++i) status[i] ? ++g : ++free_count_[g];
   uint32_t detour_count = 0;
   for (uint32_t g = 0; g < gaps; ++g) detour_count += edge[g] ? 0 : 1;
-  if (detour_count == 0) return whole_loop(shapes, f);
+  if (detour_count == 0) return whole_loop(d);
   if (current_.gate == kNone) return invalid(f, "has a detour but there is no boundary to attach to");
   if (loops_.size() < detour_count - 1)
     return invalid(f, "needs " + std::to_string(detour_count - 1) + " loops from a stack of " +
