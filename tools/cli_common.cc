@@ -26,11 +26,12 @@ Status write_file(const std::string& path, const std::vector<uint8_t>& bytes) {
   return tools::write_file_atomically(path, bytes.data(), bytes.size());
 }
 
-Status load_mesh(const std::string& path, Mesh* mesh, bool quiet) {
+Status load_mesh(const std::string& path, Mesh* mesh, bool quiet, std::vector<std::string>* notes) {
   std::vector<std::string> warnings;
   Status s = tools::read_mesh(path, mesh, &warnings);
   if (!quiet)
     for (const std::string& w : warnings) std::fprintf(stderr, "note: %s: %s\n", path.c_str(), w.c_str());
+  if (notes) *notes = std::move(warnings);
   return s;
 }
 

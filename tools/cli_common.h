@@ -20,7 +20,9 @@ Status read_file(const std::string& path, std::vector<uint8_t>* bytes);
 Status write_file(const std::string& path, const std::vector<uint8_t>& bytes);
 
 // Reads a mesh and prints the reader's notes to stderr unless `quiet`.
-Status load_mesh(const std::string& path, Mesh* mesh, bool quiet = false);
+// Reads a mesh file; prints the reader's notes (what it ignored) unless
+// `quiet`, and returns them in *notes when given.
+Status load_mesh(const std::string& path, Mesh* mesh, bool quiet = false, std::vector<std::string>* notes = nullptr);
 
 // Refuses (returns the usage exit code, having said why) when `output` is
 // the same file as `input` however spelled (device and inode); -1 otherwise.

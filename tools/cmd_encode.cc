@@ -77,6 +77,10 @@ const char kHelp[] =
     "  --gim-normals       add three planes of unit normals (attribute kinds 3-5)\n"
     "  --gim-store-blank   also code the samples of blank pixels (smooth planes\n"
     "                      for image tools, at some cost in bytes)\n"
+    "  --drop-unsupported  encode without what the file format cannot carry yet\n"
+    "                      (texture coordinates, normals, colours, groups,\n"
+    "                      materials...), listing it; without it such input is\n"
+    "                      an error that names what would be lost\n"
     "  --allow-empty       accept an input without vertices or faces (an empty\n"
     "                      mesh file); without it such an input is an error\n"
     "  --quiet             print nothing on success, not even the notes about\n"
@@ -85,13 +89,13 @@ const char kHelp[] =
 struct EncodeArgs {
   std::string input, output;
   EncodeOptions options;
-  bool quiet = false, progressive = false, allow_empty = false;
+  bool quiet = false, progressive = false, allow_empty = false, drop_unsupported = false;
   std::string roi_path;
 };
 
 const CommandSpec kSpec{"encode",
                         kHelp,
-                        {"--quiet", "--allow-empty", "--keep-order", "--progressive", "--topology-preserving",
+                        {"--quiet", "--allow-empty", "--drop-unsupported", "--keep-order", "--progressive", "--topology-preserving",
                          "--gim-float", "--gim-quads", "--gim-store-blank", "--gim-normals"},
                         {{"--bits", "-q"}, {"--text"}, {"--connectivity"}, {"--levels"}, {"--gim"}, {"--sampling"},
                          {"--roi"}, {"--grid"}, {"--step"}, {"--max-error"}, {"--positions"}},
@@ -187,6 +191,7 @@ int parse(int argc, char** argv, EncodeArgs* args) {
   args->output = cl.positional[1];
   args->quiet = cl.has("--quiet");
   args->allow_empty = cl.has("--allow-empty");
+  args->drop_unsupported = cl.has("--drop-unsupported");
   args->options.keep_order = cl.has("--keep-order");
   args->progressive = cl.has("--progressive");
   if (args->progressive) args->options.progressive_levels = 3;
@@ -348,6 +353,31 @@ Status encode_remesh(const EncodeArgs& args, const Mesh& mesh, const Mesh& refer
 }
 
 // Section 12: triangles in, progressive file out, error measured by decoding it.
+// What the reader ignored ("ignored ..." notes) is data the file would not
+// carry: an error naming it, unless the user asked to drop it
+// (--drop-unsupported), and then a list of what was dropped; the reader's
+// other notes are printed as notes. Returns -1 to go on, else the exit code.
+int refuse_dropping(const EncodeArgs& args, const std::vector<std::string>& notes) {
+  std::vector<std::string> ignored;
+  for (const std::string& note : notes) {
+    if (note.rfind("ignored", 0) == 0)
+      ignored.push_back(note);
+    else if (!args.quiet)
+      std::fprintf(stderr, "note: %s: %s\n", args.input.c_str(), note.c_str());
+  }
+  if (ignored.empty()) return -1;
+  if (!args.drop_unsupported) {
+    std::fprintf(stderr, "qmc encode: %s holds what format 1.6 cannot carry yet:\n", args.input.c_str());
+    for (const std::string& what : ignored) std::fprintf(stderr, "  %s\n", what.c_str());
+    std::fprintf(stderr, "qmc encode: pass --drop-unsupported to encode the mesh without it\n");
+    return kExitError;
+  }
+  if (!args.quiet)
+    for (const std::string& what : ignored)
+      std::fprintf(stderr, "dropped (--drop-unsupported): %s: %s\n", args.input.c_str(), what.c_str());
+  return -1;
+}
+
 int encode_progressive(EncodeArgs& args, Mesh mesh, uint64_t input_bytes) {
   size_t split = 0;
   mesh = tools::triangulated(mesh, &split);
@@ -442,7 +472,9 @@ int run_encode(int argc, char** argv) {
   Progress progress(!size_error && input_size > (16u << 20));  // big inputs take seconds
   progress.stage("reading " + args.input);
   Mesh mesh;
-  if (Status s = load_mesh(args.input, &mesh, args.quiet); !s.ok()) return fail("encode", s);
+  std::vector<std::string> ignored;
+  if (Status s = load_mesh(args.input, &mesh, true, &ignored); !s.ok()) return fail("encode", s);
+  if (int refused = refuse_dropping(args, ignored); refused >= 0) return refused;
   // An empty mesh is a valid file (the valid_empty_mesh vector), but from a
   // mesh file it is far more often a mistake than an intention.
   if (mesh.vertex_count() == 0 && mesh.face_count() == 0 && !args.allow_empty)

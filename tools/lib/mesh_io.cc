@@ -375,6 +375,8 @@ class ObjParser {
     std::string_view keyword = tokens_[0];
     if (keyword == "v") return parse_vertex(line, mesh);
     if (keyword == "f") return parse_face(line, mesh);
+    // "s off" and "s 0" state the default (no smoothing group): nothing to carry.
+    if (keyword == "s" && tokens_.size() == 2 && (tokens_[1] == "off" || tokens_[1] == "0")) return Status::Ok();
     if (const char* note = ignored_statement_note(keyword)) {
       warnings_->add(note);
     } else if (unknown_kinds_ < kMaxUnknownKinds) {
