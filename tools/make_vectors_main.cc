@@ -1756,6 +1756,9 @@ void write_context_coded_errors(VectorWriter* w) {
   // K = 4097 face symbols from 0 bytes: 512 (0 + 8) = 4096 at most.
   w->invalid("invalid_polygon_coding7_symbols_unjustified",
              with_conn(coding7_conn(8, 2, qmc::kGroupQuads, {}, one_component(4096, 1))), ErrorCode::kLimitExceeded);
+  // C + K = 101 surface faces for face_count 2 and 5 bits after the d_c fields: at most 7 (5.4.10).
+  w->invalid("invalid_polygon_coding7_faces_beyond_count",
+             with_conn(coding7_conn(8, 2, qmc::kGroupQuads, {}, one_component(99, 1))), ErrorCode::kLimitExceeded);
   w->invalid("invalid_polygon_coding7_bad_start",
              with_conn(coding7_conn(8, 2, qmc::kGroupQuads, {0xFF, 0xFF, 0xFF, 0xFF}, one_component(0, 1))),
              ErrorCode::kBadChunkPayload);

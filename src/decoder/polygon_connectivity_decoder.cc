@@ -379,10 +379,17 @@ Status decode_stored(BitReader* in, const PolygonHeader& h, uint32_t vertex_coun
 
 // Coding 7: components, Spirale Reversi decoding each symbol as it goes,
 // then the records (5.4.10).
-Status decode_context_coded(BitReader* in, const PolygonHeader& h, uint32_t vertex_count, PolygonSurface* surface,
-                            Records* records, Mesh* loose, Components* components_out) {
+Status decode_context_coded(BitReader* in, const PolygonHeader& h, uint32_t vertex_count, uint32_t face_count,
+                            PolygonSurface* surface, Records* records, Mesh* loose, Components* components_out) {
   Components& components = *components_out;
   if (Status s = read_components(in, h.symbol_bytes, &components); !s.ok()) return s;
+  // The surface's C + K faces are face_count - L real ones and H virtual
+  // ones, each virtual face costing at least a bit of what follows (5.4.7):
+  // a bound that the caller's max_faces also holds, whatever B allows.
+  const uint64_t surface_faces = components.faces.size() + components.coded;
+  if (surface_faces > uint64_t(face_count) + in->bits_remaining())
+    return limit_error(std::to_string(surface_faces) + " surface faces for face_count " + std::to_string(face_count) +
+                       " and " + std::to_string(in->bits_remaining()) + " bits of records");
   if (h.groups == 0 && components.coded > 0) return symbol_error("face symbols but no symbol group");
   CodedFaces faces(h.symbols, size_t(h.symbol_bytes), h.groups, components.coded);
   if (Status s = faces.start(); !s.ok()) return s;
@@ -405,7 +412,8 @@ Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t ve
   Mesh loose;
   Components components;
   const Status decoded = header.coding == kPolygonContextCoded
-                             ? decode_context_coded(&in, header, vertex_count, &surface, &records, &loose, &components)
+                             ? decode_context_coded(&in, header, vertex_count, face_count, &surface, &records, &loose,
+                                                    &components)
                              : decode_stored(&in, header, vertex_count, &surface, &records, &loose, &components);
   if (!decoded.ok()) return decoded;
   const std::vector<uint32_t>& degree = surface.face_degree;
