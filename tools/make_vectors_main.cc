@@ -1751,6 +1751,10 @@ void write_context_coded_errors(VectorWriter* w) {
   }
   w->invalid("invalid_polygon_coding7_length_past_end",
              with_conn(coding7_conn(8, 2, qmc::kGroupQuads, q1, one_component(0, 1), 100)), ErrorCode::kTruncated);
+  // B = 2^32 + the real length: past the end, also where size_t has 32 bits (WebAssembly).
+  w->invalid("invalid_polygon_coding7_length_above_4_gib",
+             with_conn(coding7_conn(8, 2, qmc::kGroupQuads, q1, one_component(0, 1), uint64_t(1) << 32)),
+             ErrorCode::kTruncated);
   w->invalid("invalid_polygon_coding7_no_groups", with_conn(coding7_conn(8, 2, 0, q1, one_component(0, 1))),
              ErrorCode::kBadSymbol);
   // K = 4097 face symbols from 0 bytes: 512 (0 + 8) = 4096 at most.

@@ -46,7 +46,7 @@ struct Components {
   uint64_t coded = 0;                          // K
 };
 
-// `symbol_bytes`: coding 7's range-coded stream length L, or -1 when the
+// `symbol_bytes`: coding 7's range-coded stream length B, or -1 when the
 // symbols are bits of this stream (codings 0 .. 5).
 Status read_components(BitReader* in, int64_t symbol_bytes, Components* c) {
   uint32_t count = 0;
@@ -152,7 +152,7 @@ class CodedFaces : public FaceSymbolSource {
   CodedFaces(const uint8_t* data, size_t size, uint8_t groups, uint64_t coded)
       : range_(data, size), bytes_(size) {
     model_.groups = groups;
-    shapes_.reserve(size_t(coded));  // coded <= 512 (L + 8): read_components
+    shapes_.reserve(size_t(coded));  // coded <= 512 (B + 8): read_components
   }
   Status start() const {
     if (range_.bad_start()) return payload_error("face symbol stream starts with 0xFFFFFFFF");
@@ -335,8 +335,10 @@ Status read_polygon_header(ByteReader* bytes, PolygonHeader* h) {
   if (!bytes->get_u8(&h->groups)) return payload_error("polygon header cut short");
   if (h->groups > (kGroupTriangles | kGroupQuads | kGroupOther)) return payload_error("unknown symbol groups");
   if (!bytes->get_varint(&length)) return payload_error("face symbol stream length missing or malformed");
+  // Compared before any narrowing: size_t is 32 bits in WebAssembly.
+  if (length > bytes->remaining()) return truncated();
   h->symbols = bytes->cursor();
-  if (!bytes->skip(size_t(length))) return truncated();
+  bytes->skip(size_t(length));
   h->symbol_bytes = int64_t(length);
   return Status::Ok();
 }
