@@ -13,6 +13,7 @@
 
 #include "bitio/byte_io.h"
 #include "chunk_list.h"
+#include "decoder/output_budget.h"
 #include "qmc/decoder.h"
 #include "qmc/encoder.h"
 
@@ -98,6 +99,20 @@ TEST(DecoderLimits, DefaultLimitsRejectAClaimOfTwentyMillionVertices) {
   const Status s = decode(file.data(), file.size(), &decoded);
   EXPECT_EQ(s.code(), ErrorCode::kLimitExceeded) << s.to_string();
   EXPECT_NE(s.message().find("max_vertices"), std::string::npos) << s.to_string();
+}
+
+// In a 32-bit build (WebAssembly) DecoderLimits::unlimited() must not let a
+// count reach sizes a size_t cannot hold; a 64-bit build's bound is the same
+// rule at 2^58.
+TEST(DecoderLimits, CountsAboveWhatThisBuildCanAddressAreRejectedEvenWithoutLimits) {
+  EXPECT_TRUE(check_limit("CONN: vertices", kAddressableCount, UINT64_MAX, "max_vertices").ok());
+  const Status s = check_limit("CONN: vertices", kAddressableCount + 1, UINT64_MAX, "max_vertices");
+  EXPECT_EQ(s.code(), ErrorCode::kLimitExceeded);
+  EXPECT_NE(s.message().find("this build can address"), std::string::npos) << s.to_string();
+  // Over both, the caller's limit is the one named.
+  const Status both = check_limit("CONN: vertices", kAddressableCount + 1, 10, "max_vertices");
+  EXPECT_NE(both.message().find("max_vertices"), std::string::npos) << both.to_string();
+  EXPECT_EQ(kAddressableCount, uint64_t(SIZE_MAX) / 64);
 }
 
 TEST(DecoderLimits, EveryLimitIsReportedByName) {

@@ -4,9 +4,13 @@
 namespace qmc {
 
 Status check_limit(const std::string& what, uint64_t count, uint64_t limit, const char* field) {
-  if (count <= limit) return Status::Ok();
-  return Status(ErrorCode::kLimitExceeded, what + ": " + std::to_string(count) + " exceed this decoder's limit of " +
-                                               std::to_string(limit) + " (DecoderLimits::" + field + ", section 8.1)");
+  if (count > limit)
+    return Status(ErrorCode::kLimitExceeded, what + ": " + std::to_string(count) + " exceed this decoder's limit of " +
+                                                 std::to_string(limit) + " (DecoderLimits::" + field + ", section 8.1)");
+  if (count > kAddressableCount)
+    return Status(ErrorCode::kLimitExceeded, what + ": " + std::to_string(count) + " exceed the " +
+                                                 std::to_string(kAddressableCount) + " this build can address");
+  return Status::Ok();
 }
 
 Status OutputBudget::charge(uint64_t bytes, const std::string& what) {

@@ -12,6 +12,14 @@
 namespace qmc {
 
 // kLimitExceeded naming the count and the DecoderLimits field, or kOk.
+// Counts whose arrays (up to 64 bytes per element) a size_t can address:
+// in 32-bit builds (WebAssembly) a larger count could make an index or a
+// size wrap, even under DecoderLimits::unlimited(); in 64-bit builds no
+// 32-bit count of the format comes near it.
+inline constexpr uint64_t kAddressableCount = uint64_t(SIZE_MAX) / 64;
+
+// limit_exceeded when `count` is above the caller's `limit` (field names it)
+// or above kAddressableCount.
 Status check_limit(const std::string& what, uint64_t count, uint64_t limit, const char* field);
 
 // 10.2: "QMCMESH1", V, F, q and x per vertex, a degree per face, the corners.
