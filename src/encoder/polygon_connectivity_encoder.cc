@@ -165,11 +165,11 @@ struct Records {
 };
 
 // Output corners (surface labels) of surface face index i.
-std::vector<uint32_t> output_face(const PolygonSurfaceModel& s, const PolygonTraversal& t, uint32_t i) {
+// Into `out`, reused from face to face.
+void output_face(const PolygonSurfaceModel& s, const PolygonTraversal& t, uint32_t i, std::vector<uint32_t>* out) {
   const uint32_t f = t.order[i], d = s.degree(f), b = s.face_begin[f];
-  std::vector<uint32_t> out(d);
-  for (uint32_t k = 0; k < d; ++k) out[k] = t.label[s.corners[b + (t.rotation[i] + k) % d]];
-  return out;
+  out->resize(d);
+  for (uint32_t k = 0; k < d; ++k) (*out)[k] = t.label[s.corners[b + (t.rotation[i] + k) % d]];
 }
 
 void derive_records(const PolygonSurfaceModel& s, const PolygonTraversal& t, Records* r,
@@ -181,6 +181,7 @@ void derive_records(const PolygonSurfaceModel& s, const PolygonTraversal& t, Rec
   }
   parent->resize(t.labels);
   for (uint32_t v = 0; v < t.labels; ++v) (*parent)[v] = v;
+  std::vector<uint32_t> fa, fb;
   for (const auto& seam : s.seams) {
     uint32_t ia = index_of[seam.a], ib = index_of[seam.b];
     const uint32_t d = s.degree(seam.a);
@@ -189,7 +190,8 @@ void derive_records(const PolygonSurfaceModel& s, const PolygonTraversal& t, Rec
     const uint32_t rot = uint32_t((uint64_t(seam.shift) + 2 * uint64_t(d) - t.rotation[ia] - t.rotation[ib]) % d);
     if (ia > ib) std::swap(ia, ib);
     r->seams.push_back({ia, ib, rot});
-    const std::vector<uint32_t> fa = output_face(s, t, ia), fb = output_face(s, t, ib);
+    output_face(s, t, ia, &fa);
+    output_face(s, t, ib, &fb);
     for (uint32_t k = 0; k < d; ++k) unite(*parent, fa[k], fb[(rot + d - k) % d]);
   }
   // Copies not joined by seams: one identification each, with the input
@@ -243,10 +245,11 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
     }
 
   // File mesh: real surface faces in surface order, then loose faces.
+  std::vector<uint32_t> corners;
   for (uint32_t i = 0; i < traversal.order.size(); ++i) {
     const uint32_t f = traversal.order[i];
     if (surface.source[f] == kVirtualFace) continue;
-    const std::vector<uint32_t> corners = output_face(surface, traversal, i);
+    output_face(surface, traversal, i, &corners);
     out->file_mesh.face_sizes.push_back(uint32_t(corners.size()));
     for (uint32_t l : corners) out->file_mesh.corners.push_back(final[l]);
     out->face_source.push_back(surface.source[f]);

@@ -35,6 +35,7 @@ void pair_unique_edges(PolygonSurfaceModel* s) {
   auto low = [&](uint32_t h) { return std::min(s->corners[h], s->corners[s->next(h)]); };
   auto high = [&](uint32_t h) { return std::max(s->corners[h], s->corners[s->next(h)]); };
   std::vector<uint32_t> unpaired;
+  unpaired.reserve(size_t(std::count(s->twin.begin(), s->twin.end(), kNone)));
   for (uint32_t h = 0; h < n; ++h)
     if (s->twin[h] == kNone) unpaired.push_back(h);
   const EdgeBuckets by_low = bucket_edges(nv, uint32_t(unpaired.size()), [&](uint32_t i) { return low(unpaired[i]); });
