@@ -38,10 +38,11 @@ struct Detour {
 
 class PolygonSpiraleReversi {
  public:
-  // Capacities: the corners and the coded faces of the largest component.
+  // Capacities: the corners (0: not known yet, coding 7) and the coded
+  // faces of the largest component; a face has at least 3 corners.
   PolygonSpiraleReversi(size_t node_capacity, size_t face_capacity) {
     nodes_.reserve(node_capacity);
-    face_vertices_.reserve(node_capacity);
+    face_vertices_.reserve(std::max(node_capacity, 3 * face_capacity));
     face_degrees_.reserve(face_capacity);
   }
 
@@ -435,15 +436,25 @@ Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const st
   return run_spirale_reversi(components, first_degree, &stored, false, size_t(largest), size_t(most_faces), surface);
 }
 
+namespace {
+
+// Coding 7: the face counts are backed by the stream's bytes (5.4.10,
+// read_components), the degrees are not known before the faces are decoded.
+size_t largest_face_count(const std::vector<uint32_t>& components) {
+  return components.empty() ? 0 : *std::max_element(components.begin(), components.end());
+}
+
+}  // namespace
+
 Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
                                FaceSymbolSource* source, PolygonSurface* surface) {
   *surface = PolygonSurface{};
-  return run_spirale_reversi(components, first_degree, source, true, 0, 0, surface);
+  return run_spirale_reversi(components, first_degree, source, true, 0, largest_face_count(components), surface);
 }
 
 Status polygon_spirale_contexts(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
                                 FaceSymbolSource* source) {
-  return run_spirale_reversi(components, first_degree, source, true, 0, 0, nullptr);
+  return run_spirale_reversi(components, first_degree, source, true, 0, largest_face_count(components), nullptr);
 }
 
 }  // namespace qmc

@@ -244,7 +244,11 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
       out->file_vertex.push_back(v);
     }
 
-  // File mesh: real surface faces in surface order, then loose faces.
+  // File mesh: real surface faces in surface order, then loose faces; in
+  // all, the input's faces.
+  out->file_mesh.face_sizes.reserve(mesh.face_count());
+  out->file_mesh.corners.reserve(mesh.corners.size());
+  out->face_source.reserve(mesh.face_count());
   std::vector<uint32_t> corners;
   for (uint32_t i = 0; i < traversal.order.size(); ++i) {
     const uint32_t f = traversal.order[i];
