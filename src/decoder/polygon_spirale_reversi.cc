@@ -135,10 +135,14 @@ Status PolygonSpiraleReversi::whole_loop(uint32_t d) {
   return Status::Ok();
 }
 
+// Out of line so that open_detour, once per face, stays small enough to inline.
+Status detour_too_long(size_t f, const Loop& loop, uint32_t free_count) {
+  return invalid(f, "has a detour of " + std::to_string(free_count) + " free vertices on a loop of only " +
+                        std::to_string(loop.length) + " edges");
+}
+
 Status PolygonSpiraleReversi::open_detour(size_t f, const Loop& loop, uint32_t free_count, Detour* detour) {
-  if (loop.length < uint64_t(free_count) + 2)
-    return invalid(f, "has a detour of " + std::to_string(free_count) + " free vertices on a loop of only " +
-                          std::to_string(loop.length) + " edges");
+  if (loop.length < uint64_t(free_count) + 2) return detour_too_long(f, loop, free_count);
   detour->free_first = uint32_t(free_nodes_.size());
   uint32_t node = loop.gate;
   for (uint32_t i = 0; i < free_count; ++i) {
