@@ -14,6 +14,9 @@
 #include "bitio/polygon_symbol_coding.h"
 #include "bitio/polygon_symbols.h"
 #include "decoder/connectivity_decoder.h"
+#include "decoder/polygon_spirale_reversi.h"
+#include "encoder/polygon_surface.h"
+#include "encoder/polygon_traversal_encoder.h"
 #include "mesh_generators.h"
 #include "mesh_io.h"
 #include "qmc/decoder.h"
@@ -147,6 +150,56 @@ TEST(PolygonDecoder, PillowRejectsAWrongFaceCount) {
   uint32_t vertices = 0;
   ConnectivityMethod method;
   EXPECT_EQ(decode_connectivity(p.data(), p.size(), &vertices, &method, &mesh).code(), ErrorCode::kBadSymbol);
+}
+
+// Hands out a traversal's coded faces (5.4.2) and records the gate context
+// (5.4.10) each one is applied at.
+class RecordedGates : public FaceSymbolSource {
+ public:
+  explicit RecordedGates(const PolygonTraversal& t) : shapes_(t.shapes) {
+    for (size_t c = 0, first = 0; c < t.component_faces.size(); first += t.component_faces[c++] - 1)
+      first_.push_back(first);
+  }
+  Status face(const GateContext& gate, size_t c, size_t k, const FaceShapes** shapes, size_t* index) override {
+    gates.push_back((gate.gate * 8 + gate.next) * 8 + gate.prev);
+    *shapes = &shapes_;
+    *index = first_[c] + k;
+    return Status::Ok();
+  }
+  std::vector<uint32_t> gates;
+
+ private:
+  const FaceShapes& shapes_;
+  std::vector<size_t> first_;
+};
+
+// The encoder's context run (coding 7) skips the labels but must meet every
+// face at the gate the decoder's full run meets it at.
+TEST(PolygonSpiraleReversi, ContextRunSeesTheDecodersGates) {
+  for (const Mesh& mesh : {tools::triangulated(tools::make_refined_sphere(1)), tools::make_prism(9), tools::make_torus(8, 5)}) {
+    PolygonSurfaceModel model;
+    ASSERT_EQ(build_polygon_surface(mesh, &model), "");
+    PolygonTraversal t;
+    ASSERT_EQ(traverse_polygon_surface(model, &t), "");
+    RecordedGates full(t), contexts(t);
+    PolygonSurface surface;
+    ASSERT_TRUE(polygon_spirale_reversi(t.component_faces, t.first_degree, &full, &surface).ok());
+    ASSERT_TRUE(polygon_spirale_contexts(t.component_faces, t.first_degree, &contexts).ok());
+    EXPECT_EQ(contexts.gates, full.gates);
+    EXPECT_EQ(full.gates.size(), t.shapes.size());
+    EXPECT_TRUE(std::any_of(full.gates.begin(), full.gates.end(), [](uint32_t g) { return g != 0; }));
+  }
+}
+
+TEST(PolygonSpiraleReversi, ContextRunRejectsAComponentThatDoesNotClose) {
+  PolygonSurfaceModel model;
+  ASSERT_EQ(build_polygon_surface(tools::make_refined_sphere(1), &model), "");
+  PolygonTraversal t;
+  ASSERT_EQ(traverse_polygon_surface(model, &t), "");
+  RecordedGates source(t);
+  std::vector<uint32_t> wrong_degree = t.first_degree;
+  ++wrong_degree[0];
+  EXPECT_EQ(polygon_spirale_contexts(t.component_faces, wrong_degree, &source).code(), ErrorCode::kBadSymbol);
 }
 
 TEST(PolygonCoder, GeneratedShapes) {

@@ -55,12 +55,12 @@ void search_across(const VertexCorners& m, uint32_t u, uint32_t w, bool triangle
 }
 
 // 14.3.1, across-edge parallelogram: the triangles over the edge (a, b)
-// opposite v's corner.
+// opposite v's corner. In a triangle along(k, 2) is along(k, -1), one step.
 void add_parallelograms(const VertexCorners& m, uint32_t corner, uint32_t v, const uint32_t* q, VertexPrediction* c) {
-  const uint32_t a = m.along(corner, 1), b = m.along(corner, 2);
+  const uint32_t a = m.along(corner, 1), b = m.along(corner, -1);
   if (a >= v || b >= v || a == b) return;
   search_across(m, a, b, true, corner, c, [&](uint32_t k) {
-    const uint32_t o = m.along(k, 1) == b ? m.along(k, 2) : m.along(k, 1);
+    const uint32_t o = m.along(k, 1) == b ? m.along(k, -1) : m.along(k, 1);
     if (o < v && o != a && o != b) add_candidate(c, kWeightParallelogram, q, a, b, o, kOne);
   });
 }

@@ -77,10 +77,10 @@ class VertexCorners {
   template <class Visit>
   void for_each_link(uint32_t u, uint32_t w, bool triangles, Visit visit) const {
     if (end(u) - begin(u) <= kScannedCorners) {
+      // In a triangle along(k, 2) is along(k, -1); the neighbours, rarely w,
+      // are tested before the degree.
       for (const uint32_t* k = begin(u); k != end(u); ++k)
-        if ((degree(*k) == 3) == triangles && (along(*k, 1) == w || along(*k, triangles ? 2 : -1) == w) &&
-            !visit(*k))
-          return;
+        if ((along(*k, 1) == w || along(*k, -1) == w) && (degree(*k) == 3) == triangles && !visit(*k)) return;
       return;
     }
     const std::vector<uint32_t>& first = triangles ? triangle_link_first_ : polygon_link_first_;

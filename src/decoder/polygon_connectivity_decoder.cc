@@ -145,14 +145,27 @@ Status read_symbols(BitReader* in, int coding, uint64_t count, FaceShapes* shape
   return Status::Ok();
 }
 
+// The fixed shapes of symbols 0 .. 17 (5.4.3), face f = symbol f.
+FaceShapes fixed_symbol_shapes() {
+  FaceShapes table;
+  table.reserve(kPolygonOtherSymbol);
+  for (int symbol = 0; symbol < kPolygonOtherSymbol; ++symbol) {
+    uint8_t status[2], gaps[3];
+    uint32_t gap_count = 0;
+    const uint32_t d = symbol_shape(symbol, status, gaps, &gap_count);
+    table.add(d, status, gaps, gap_count);
+  }
+  return table;
+}
+
 // Coding 7 (5.4.10): each symbol range decoded when Spirale Reversi is
-// about to apply it, in the context of the gate.
+// about to apply it, in the context of the gate. Symbols 0 .. 17 are
+// applied from the fixed table; only symbol 18's shapes are stored.
 class CodedFaces : public FaceSymbolSource {
  public:
-  CodedFaces(const uint8_t* data, size_t size, uint8_t groups, uint64_t coded)
-      : range_(data, size), bytes_(size) {
+  CodedFaces(const uint8_t* data, size_t size, uint8_t groups)
+      : range_(data, size), bytes_(size), fixed_(fixed_symbol_shapes()) {
     model_.groups = groups;
-    shapes_.reserve(size_t(coded));  // coded <= 512 (B + 8): read_components
   }
   Status start() const {
     if (range_.bad_start()) return payload_error("face symbol stream starts with 0xFFFFFFFF");
@@ -162,14 +175,12 @@ class CodedFaces : public FaceSymbolSource {
     const int symbol = code_face_symbol(&range_, &model_, gate, 0);
     if (range_.overrun()) return truncated();
     if (symbol < 0) return symbol_error("quad code above 12 (5.4.10)");
-    if (symbol == kPolygonOtherSymbol) {
-      if (Status s = other_shape(); !s.ok()) return s;
-    } else {
-      uint8_t status[2], gaps[3];
-      uint32_t gap_count = 0;
-      const uint32_t d = symbol_shape(symbol, status, gaps, &gap_count);
-      shapes_.add(d, status, gaps, gap_count);
+    if (symbol != kPolygonOtherSymbol) {
+      *shapes = &fixed_;
+      *index = size_t(symbol);
+      return Status::Ok();
     }
+    if (Status s = other_shape(); !s.ok()) return s;
     *shapes = &shapes_;
     *index = shapes_.size() - 1;
     return Status::Ok();
@@ -200,7 +211,8 @@ class CodedFaces : public FaceSymbolSource {
   RangeDecoder range_;
   uint64_t bytes_;
   PolygonSymbolModel model_;
-  FaceShapes shapes_;
+  const FaceShapes fixed_;
+  FaceShapes shapes_;  // symbol 18's faces so far
   std::vector<uint8_t> scratch_;
 };
 
@@ -393,7 +405,7 @@ Status decode_context_coded(BitReader* in, const PolygonHeader& h, uint32_t vert
     return limit_error(std::to_string(surface_faces) + " surface faces for face_count " + std::to_string(face_count) +
                        " and " + std::to_string(in->bits_remaining()) + " bits of records");
   if (h.groups == 0 && components.coded > 0) return symbol_error("face symbols but no symbol group");
-  CodedFaces faces(h.symbols, size_t(h.symbol_bytes), h.groups, components.coded);
+  CodedFaces faces(h.symbols, size_t(h.symbol_bytes), h.groups);
   if (Status s = faces.start(); !s.ok()) return s;
   if (Status s = polygon_spirale_reversi(components.faces, components.first_degree, &faces, surface); !s.ok())
     return s;

@@ -38,10 +38,11 @@ struct Detour {
 
 class PolygonSpiraleReversi {
  public:
-  // Capacities: the corners and the coded faces of the largest component.
+  // Capacities: the corners (0: not known yet, coding 7) and the coded
+  // faces of the largest component; a face has at least 3 corners.
   PolygonSpiraleReversi(size_t node_capacity, size_t face_capacity) {
     nodes_.reserve(node_capacity);
-    face_vertices_.reserve(node_capacity);
+    face_vertices_.reserve(std::max(node_capacity, 3 * face_capacity));
     face_degrees_.reserve(face_capacity);
   }
 
@@ -50,14 +51,20 @@ class PolygonSpiraleReversi {
   void count_faces() { counting_ = true; }
   // Section 5.4.10: the face counts at the gate node and its neighbours.
   GateContext gate_context();
-  // Undoes coded face `f` of `shapes` (global index, for messages).
-  Status apply(const FaceShapes& shapes, size_t f);
+  // Undoes face `index` of `shapes`, coded face `f` of the stream (for
+  // messages).
+  Status apply(const FaceShapes& shapes, size_t index, size_t f);
   // Ends a component whose first face has degree d: labels its vertices
-  // from `first_label` and appends its faces to the surface.
+  // from `first_label` and appends its faces to the surface; with no
+  // surface (the encoder's context run) only checks that it closes.
   Status finish_component(uint32_t d, size_t first_coded, size_t coded, PolygonSurface* surface);
 
  private:
-  uint32_t new_node() { return nodes_.new_node(); }
+  // Every node starts a vertex of no faces yet (5.4.10).
+  uint32_t new_node() {
+    if (counting_) faces_at_.push_back(0);
+    return nodes_.new_node();
+  }
   void link(uint32_t a, uint32_t b) { nodes_.link(a, b); }
   uint32_t find(uint32_t v) { return nodes_.find(v); }
   void merge(uint32_t kept, uint32_t gone);
@@ -68,6 +75,8 @@ class PolygonSpiraleReversi {
   Status apply_triangle(size_t f, bool anchor, bool first_gap_edge, bool second_gap_edge);
   void add_triangle(uint32_t g0, uint32_t g1, uint32_t w);
   Status open_detour(size_t f, const Loop& loop, uint32_t free_count, Detour* detour);
+  Status label_component(uint32_t d, size_t coded, PolygonSurface* surface);
+  void clear_component();
 
   LoopNodes nodes_;
   std::vector<uint32_t>&prev_ = nodes_.prev, &next_ = nodes_.next, &vertex_ = nodes_.vertex, &parent_ = nodes_.parent;
@@ -80,7 +89,7 @@ class PolygonSpiraleReversi {
   std::vector<uint32_t> free_count_, free_nodes_, anchor_;
   std::vector<Detour> detours_;
   bool counting_ = false;
-  std::vector<uint32_t> faces_at_;  // per vertex root: faces made with it (5.4.10)
+  std::vector<uint32_t> faces_at_;  // per vertex root: faces made with it (5.4.10); one per node
 };
 
 // Merged vertices pool their faces: no face has both (5.4.5: faces have
@@ -89,14 +98,12 @@ void PolygonSpiraleReversi::merge(uint32_t kept, uint32_t gone) {
   if (!counting_) return nodes_.merge(kept, gone);
   const uint32_t a = find(vertex_[kept]), b = find(vertex_[gone]);
   if (a == b) return;
-  if (faces_at_.size() < parent_.size()) faces_at_.resize(parent_.size(), 0);
   faces_at_[a] += faces_at_[b];
   parent_[b] = a;
 }
 
 uint32_t PolygonSpiraleReversi::capped_count(uint32_t node) {
-  const uint32_t v = find(vertex_[node]);
-  const uint32_t n = v < faces_at_.size() ? faces_at_[v] : 0;
+  const uint32_t n = faces_at_[find(vertex_[node])];
   return n < kGateCountCap ? n : kGateCountCap;
 }
 
@@ -107,7 +114,6 @@ GateContext PolygonSpiraleReversi::gate_context() {
 }
 
 void PolygonSpiraleReversi::count_last_face(uint32_t d) {
-  if (faces_at_.size() < parent_.size()) faces_at_.resize(parent_.size(), 0);
   for (size_t i = face_vertices_.size() - d; i < face_vertices_.size(); ++i) ++faces_at_[find(face_vertices_[i])];
 }
 
@@ -129,10 +135,14 @@ Status PolygonSpiraleReversi::whole_loop(uint32_t d) {
   return Status::Ok();
 }
 
+// Out of line so that open_detour, once per face, stays small enough to inline.
+Status detour_too_long(size_t f, const Loop& loop, uint32_t free_count) {
+  return invalid(f, "has a detour of " + std::to_string(free_count) + " free vertices on a loop of only " +
+                        std::to_string(loop.length) + " edges");
+}
+
 Status PolygonSpiraleReversi::open_detour(size_t f, const Loop& loop, uint32_t free_count, Detour* detour) {
-  if (loop.length < uint64_t(free_count) + 2)
-    return invalid(f, "has a detour of " + std::to_string(free_count) + " free vertices on a loop of only " +
-                          std::to_string(loop.length) + " edges");
+  if (loop.length < uint64_t(free_count) + 2) return detour_too_long(f, loop, free_count);
   detour->free_first = uint32_t(free_nodes_.size());
   uint32_t node = loop.gate;
   for (uint32_t i = 0; i < free_count; ++i) {
@@ -201,10 +211,10 @@ Status PolygonSpiraleReversi::apply_triangle(size_t f, bool anchor, bool first_g
   return Status::Ok();
 }
 
-Status PolygonSpiraleReversi::apply(const FaceShapes& shapes, size_t f) {
-  const uint32_t d = shapes.degree[f], m = d - 2, gaps = shapes.gap_count(f);
-  const uint8_t* status = &shapes.status[shapes.status_begin[f]];
-  const uint8_t* edge = &shapes.gap_is_edge[shapes.gap_begin[f]];
+Status PolygonSpiraleReversi::apply(const FaceShapes& shapes, size_t index, size_t f) {
+  const uint32_t d = shapes.degree[index], m = d - 2, gaps = shapes.gap_count(index);
+  const uint8_t* status = &shapes.status[shapes.status_begin[index]];
+  const uint8_t* edge = &shapes.gap_is_edge[shapes.gap_begin[index]];
   if (d == 3) return apply_triangle(f, status[0] != 0, edge[0] != 0, status[0] ? edge[1] != 0 : false);
   free_count_.assign(gaps, 0);
   for (uint32_t i = 0, g = 0; i < m; ++i) status[i] ? ++g : ++free_count_[g];
@@ -281,6 +291,13 @@ Status PolygonSpiraleReversi::finish_component(uint32_t d, size_t first_coded, s
   if (!loops_.empty() || current_.gate == kNone || current_.length != d)
     return Status(ErrorCode::kBadSymbol, "CONN: component ending at face symbol " + std::to_string(first_coded) +
                                              " does not close on its first face of degree " + std::to_string(d));
+  if (surface != nullptr)
+    if (Status s = label_component(d, coded, surface); !s.ok()) return s;
+  clear_component();
+  return Status::Ok();
+}
+
+Status PolygonSpiraleReversi::label_component(uint32_t d, size_t coded, PolygonSurface* surface) {
   std::vector<uint32_t> label(parent_.size(), kNone);
   const uint32_t base = surface->labels;
   uint32_t next_label = base;
@@ -314,13 +331,17 @@ Status PolygonSpiraleReversi::finish_component(uint32_t d, size_t first_coded, s
     end = begin;
   }
   surface->labels = next_label;
-  // The next component starts from nothing.
+  return Status::Ok();
+}
+
+// The next component starts from nothing.
+void PolygonSpiraleReversi::clear_component() {
   nodes_.clear();
   current_ = Loop{};
   face_vertices_.clear();
   face_degrees_.clear();
   faces_at_.clear();
-  return Status::Ok();
+  inner_.clear();
 }
 
 // Section 5.4.5: no directed edge twice among the surface's faces.
@@ -378,21 +399,24 @@ Status run_spirale_reversi(const std::vector<uint32_t>& components, const std::v
                            PolygonSurface* surface) {
   PolygonSpiraleReversi decoder{largest, most_faces};
   if (count_faces) decoder.count_faces();
-  size_t first = 0;
+  size_t first = 0, applied = 0;
   for (size_t c = 0; c < components.size(); ++c) {
     const size_t coded = components[c] - 1;
-    for (size_t k = coded; k-- > 0;) {
+    for (size_t k = coded; k-- > 0; ++applied) {
       const FaceShapes* shapes = nullptr;
       size_t index = 0;
       const GateContext gate = count_faces ? decoder.gate_context() : GateContext{};
       if (Status s = source->face(gate, c, k, &shapes, &index); !s.ok()) return s;
-      if (Status s = decoder.apply(*shapes, index); !s.ok()) return s;
+      // Coding 7 streams the faces in the order they are applied (5.4.10);
+      // the stored codings in the traversal's order, index = first + k.
+      const size_t number = count_faces ? applied : index;
+      if (Status s = decoder.apply(*shapes, index, number); !s.ok()) return s;
     }
     if (Status s = decoder.finish_component(first_degree[c], first, coded, surface); !s.ok()) return s;
     first += coded;
   }
   if (Status s = source->end(); !s.ok()) return s;
-  return check_directed_edges(*surface);
+  return surface == nullptr ? Status::Ok() : check_directed_edges(*surface);
 }
 
 }  // namespace
@@ -416,10 +440,27 @@ Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const st
   return run_spirale_reversi(components, first_degree, &stored, false, size_t(largest), size_t(most_faces), surface);
 }
 
+namespace {
+
+// The encoder's own symbols: its largest component's face count.
+size_t largest_face_count(const std::vector<uint32_t>& components) {
+  return components.empty() ? 0 : *std::max_element(components.begin(), components.end());
+}
+
+}  // namespace
+
 Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
                                FaceSymbolSource* source, PolygonSurface* surface) {
   *surface = PolygonSurface{};
+  // Nothing reserved: a face count that 512 (B + 8) allows may still be far
+  // more faces than the decisions actually in the stream build before it
+  // ends, so memory grows with the faces decoded (5.4.10).
   return run_spirale_reversi(components, first_degree, source, true, 0, 0, surface);
+}
+
+Status polygon_spirale_contexts(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
+                                FaceSymbolSource* source) {
+  return run_spirale_reversi(components, first_degree, source, true, 0, largest_face_count(components), nullptr);
 }
 
 }  // namespace qmc

@@ -40,5 +40,10 @@ Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const st
 // with each vertex's faces counted for the gate contexts.
 Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
                                FaceSymbolSource* source, PolygonSurface* surface);
+// Coding 7's encoder (5.4.10): the same run for the gate contexts only,
+// each component checked to close but no surface built or labelled (the
+// encoder's self-check decodes the whole payload afterwards).
+Status polygon_spirale_contexts(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
+                                FaceSymbolSource* source);
 
 }  // namespace qmc

@@ -52,13 +52,13 @@ void write_other_shape(const FaceShapes& shapes, size_t f, BitWriter* out) {
   }
 }
 
-void write_mixed_symbols(const FaceShapes& shapes, BitWriter* out) {
-  std::vector<int> symbols(shapes.size());
+// `symbols[f]`: face_symbol(shapes, f), computed once per face for every
+// coding tried (5.4.4).
+void write_mixed_symbols(const FaceShapes& shapes, const std::vector<int>& symbols, BitWriter* out) {
   std::vector<uint64_t> counts[2] = {std::vector<uint64_t>(kPolygonSymbolCount, 0),
                                      std::vector<uint64_t>(kPolygonSymbolCount, 0)};
   int context = 1;
   for (size_t f = 0; f < shapes.size(); ++f) {
-    symbols[f] = face_symbol(shapes, f);
     ++counts[context][symbols[f]];
     context = face_class(shapes, f);
   }
@@ -86,9 +86,9 @@ bool all_quads(const FaceShapes& shapes) {
   return !shapes.degree.empty();
 }
 
-std::vector<uint8_t> quad_types(const FaceShapes& shapes) {
-  std::vector<uint8_t> types(shapes.size());
-  for (size_t f = 0; f < shapes.size(); ++f) types[f] = uint8_t(face_symbol(shapes, f) + 1);
+std::vector<uint8_t> quad_types(const std::vector<int>& symbols) {
+  std::vector<uint8_t> types(symbols.size());
+  for (size_t f = 0; f < symbols.size(); ++f) types[f] = uint8_t(symbols[f] + 1);
   return types;
 }
 
@@ -103,7 +103,8 @@ uint8_t symbol_groups(const FaceShapes& shapes) {
 // will see when it decodes it.
 class EncodedFaces : public FaceSymbolSource {
  public:
-  EncodedFaces(const std::vector<uint32_t>& components, const FaceShapes& shapes) : shapes_(shapes) {
+  EncodedFaces(const std::vector<uint32_t>& components, const FaceShapes& shapes, const std::vector<int>& symbols)
+      : shapes_(shapes), symbols_(symbols) {
     size_t first = 0;
     for (uint32_t n : components) {
       first_.push_back(first);
@@ -113,7 +114,7 @@ class EncodedFaces : public FaceSymbolSource {
   }
   Status face(const GateContext& gate, size_t c, size_t k, const FaceShapes** shapes, size_t* index) override {
     const size_t f = first_[c] + k;
-    const int symbol = face_symbol(shapes_, f);
+    const int symbol = symbols_[f];
     code_face_symbol(&range_, &model_, gate, symbol);
     if (symbol == kPolygonOtherSymbol) {
       uint32_t extra = shapes_.degree[f] - 5;
@@ -133,16 +134,16 @@ class EncodedFaces : public FaceSymbolSource {
 
  private:
   const FaceShapes& shapes_;
+  const std::vector<int>& symbols_;
   std::vector<size_t> first_;
   PolygonSymbolModel model_;
   RangeEncoder range_;
 };
 
 // The groups byte, the length and the range-coded symbols of coding 7.
-std::vector<uint8_t> context_coded_symbols(const PolygonTraversal& t) {
-  EncodedFaces faces(t.component_faces, t.shapes);
-  PolygonSurface surface;
-  polygon_spirale_reversi(t.component_faces, t.first_degree, &faces, &surface);
+std::vector<uint8_t> context_coded_symbols(const PolygonTraversal& t, const std::vector<int>& symbols) {
+  EncodedFaces faces(t.component_faces, t.shapes, symbols);
+  polygon_spirale_contexts(t.component_faces, t.first_degree, &faces);
   const std::vector<uint8_t> stream = faces.finish();
   std::vector<uint8_t> out;
   put_u8(&out, faces.groups());
@@ -151,9 +152,9 @@ std::vector<uint8_t> context_coded_symbols(const PolygonTraversal& t) {
   return out;
 }
 
-void write_symbols(const FaceShapes& shapes, int coding, BitWriter* out) {
-  if (coding == kPolygonMixedHuffman) write_mixed_symbols(shapes, out);
-  else write_quad_stream(QuadCoding(coding), quad_types(shapes), out);
+void write_symbols(const FaceShapes& shapes, const std::vector<int>& symbols, int coding, BitWriter* out) {
+  if (coding == kPolygonMixedHuffman) write_mixed_symbols(shapes, symbols, out);
+  else write_quad_stream(QuadCoding(coding), quad_types(symbols), out);
 }
 
 // Everything the decoder needs after the symbols, and the file mesh.
@@ -164,11 +165,11 @@ struct Records {
 };
 
 // Output corners (surface labels) of surface face index i.
-std::vector<uint32_t> output_face(const PolygonSurfaceModel& s, const PolygonTraversal& t, uint32_t i) {
+// Into `out`, reused from face to face.
+void output_face(const PolygonSurfaceModel& s, const PolygonTraversal& t, uint32_t i, std::vector<uint32_t>* out) {
   const uint32_t f = t.order[i], d = s.degree(f), b = s.face_begin[f];
-  std::vector<uint32_t> out(d);
-  for (uint32_t k = 0; k < d; ++k) out[k] = t.label[s.corners[b + (t.rotation[i] + k) % d]];
-  return out;
+  out->resize(d);
+  for (uint32_t k = 0; k < d; ++k) (*out)[k] = t.label[s.corners[b + (t.rotation[i] + k) % d]];
 }
 
 void derive_records(const PolygonSurfaceModel& s, const PolygonTraversal& t, Records* r,
@@ -180,6 +181,7 @@ void derive_records(const PolygonSurfaceModel& s, const PolygonTraversal& t, Rec
   }
   parent->resize(t.labels);
   for (uint32_t v = 0; v < t.labels; ++v) (*parent)[v] = v;
+  std::vector<uint32_t> fa, fb;
   for (const auto& seam : s.seams) {
     uint32_t ia = index_of[seam.a], ib = index_of[seam.b];
     const uint32_t d = s.degree(seam.a);
@@ -188,7 +190,8 @@ void derive_records(const PolygonSurfaceModel& s, const PolygonTraversal& t, Rec
     const uint32_t rot = uint32_t((uint64_t(seam.shift) + 2 * uint64_t(d) - t.rotation[ia] - t.rotation[ib]) % d);
     if (ia > ib) std::swap(ia, ib);
     r->seams.push_back({ia, ib, rot});
-    const std::vector<uint32_t> fa = output_face(s, t, ia), fb = output_face(s, t, ib);
+    output_face(s, t, ia, &fa);
+    output_face(s, t, ib, &fb);
     for (uint32_t k = 0; k < d; ++k) unite(*parent, fa[k], fb[(rot + d - k) % d]);
   }
   // Copies not joined by seams: one identification each, with the input
@@ -241,11 +244,16 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
       out->file_vertex.push_back(v);
     }
 
-  // File mesh: real surface faces in surface order, then loose faces.
+  // File mesh: real surface faces in surface order, then loose faces; in
+  // all, the input's faces.
+  out->file_mesh.face_sizes.reserve(mesh.face_count());
+  out->file_mesh.corners.reserve(mesh.corners.size());
+  out->face_source.reserve(mesh.face_count());
+  std::vector<uint32_t> corners;
   for (uint32_t i = 0; i < traversal.order.size(); ++i) {
     const uint32_t f = traversal.order[i];
     if (surface.source[f] == kVirtualFace) continue;
-    const std::vector<uint32_t> corners = output_face(surface, traversal, i);
+    output_face(surface, traversal, i, &corners);
     out->file_mesh.face_sizes.push_back(uint32_t(corners.size()));
     for (uint32_t l : corners) out->file_mesh.corners.push_back(final[l]);
     out->face_source.push_back(surface.source[f]);
@@ -262,12 +270,13 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
 
   // Coding: the smallest (5.4.4).
   const FaceShapes& shapes = traversal.shapes;
-  for (size_t f = 0; f < shapes.size(); ++f) ++out->symbol_counts[face_symbol(shapes, f)];
+  std::vector<int> symbols(shapes.size());
+  for (size_t f = 0; f < shapes.size(); ++f) ++out->symbol_counts[symbols[f] = face_symbol(shapes, f)];
   const bool quads = all_quads(shapes);
-  const std::vector<uint8_t> types = quads ? quad_types(shapes) : std::vector<uint8_t>{};
+  const std::vector<uint8_t> types = quads ? quad_types(symbols) : std::vector<uint8_t>{};
   int best = -1;
   const bool try_context = context_coding || forced == kPolygonContextCoded;
-  const std::vector<uint8_t> coded_symbols = try_context ? context_coded_symbols(traversal) : std::vector<uint8_t>{};
+  const std::vector<uint8_t> coded_symbols = try_context ? context_coded_symbols(traversal, symbols) : std::vector<uint8_t>{};
   for (int c = 0; c < kPolygonCodingCount; ++c) {
     if (c == kPolygonUnassignedCoding) {
       out->coding_bits[c] = -1;
@@ -275,7 +284,7 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
       out->coding_bits[c] = try_context ? int64_t(8 * coded_symbols.size()) : -1;
     } else if (c == kPolygonMixedHuffman) {
       BitWriter trial;
-      write_mixed_symbols(shapes, &trial);
+      write_mixed_symbols(shapes, symbols, &trial);
       out->coding_bits[c] = int64_t(trial.bit_count());
     } else {
       out->coding_bits[c] = quads ? quad_stream_bits(QuadCoding(c), types) : -1;
@@ -293,7 +302,7 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
   bits.write_exp_golomb(uint32_t(traversal.component_faces.size()));
   for (uint32_t n : traversal.component_faces) bits.write_exp_golomb(n - 2);
   for (uint32_t d : traversal.first_degree) bits.write_exp_golomb(d - 3);
-  if (best != kPolygonContextCoded) write_symbols(shapes, best, &bits);
+  if (best != kPolygonContextCoded) write_symbols(shapes, symbols, best, &bits);
   const uint64_t before_records = bits.bit_count();
   bits.write_exp_golomb(uint32_t(records.virtual_index.size()));
   for (size_t i = 0; i < records.virtual_index.size(); ++i)

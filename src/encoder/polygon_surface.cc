@@ -35,6 +35,7 @@ void pair_unique_edges(PolygonSurfaceModel* s) {
   auto low = [&](uint32_t h) { return std::min(s->corners[h], s->corners[s->next(h)]); };
   auto high = [&](uint32_t h) { return std::max(s->corners[h], s->corners[s->next(h)]); };
   std::vector<uint32_t> unpaired;
+  unpaired.reserve(size_t(std::count(s->twin.begin(), s->twin.end(), kNone)));
   for (uint32_t h = 0; h < n; ++h)
     if (s->twin[h] == kNone) unpaired.push_back(h);
   const EdgeBuckets by_low = bucket_edges(nv, uint32_t(unpaired.size()), [&](uint32_t i) { return low(unpaired[i]); });
@@ -96,10 +97,11 @@ void split_fans(PolygonSurfaceModel* s) {
   }
 }
 
-uint32_t add_face(PolygonSurfaceModel* s, const std::vector<uint32_t>& cycle, uint32_t source) {
+// The face of `degree` corners `cycle[0 .. degree - 1]`.
+uint32_t add_face(PolygonSurfaceModel* s, const uint32_t* cycle, uint32_t degree, uint32_t source) {
   const uint32_t f = s->face_count();
-  for (uint32_t v : cycle) {
-    s->corners.push_back(v);
+  for (uint32_t i = 0; i < degree; ++i) {
+    s->corners.push_back(cycle[i]);
     s->twin.push_back(kNone);
     s->face_of.push_back(f);
   }
@@ -133,7 +135,7 @@ std::string close_holes(PolygonSurfaceModel* s) {
       e = arriving[s->corners[e]];
       if (e == kNone) return "internal: a hole is open";
     } while (e != h);
-    const uint32_t f = add_face(s, cycle, kVirtualFace);
+    const uint32_t f = add_face(s, cycle.data(), uint32_t(cycle.size()), kVirtualFace);
     // Cap half-edge i runs cycle[i] -> cycle[i + 1], the reverse of sides[i].
     for (uint32_t i = 0; i < sides.size(); ++i) {
       s->twin[s->face_begin[f] + i] = sides[i];
@@ -315,7 +317,8 @@ void cut_handle(PolygonSurfaceModel* s, const std::vector<uint32_t>& cycle) {
     left[j] = s->corners[cycle[(1 + k - j) % k]];  // a_j = v_(1 - j)
     other[j] = copy[j];                              // b_j = v_j'
   }
-  const uint32_t a = add_face(s, left, kVirtualFace), b = add_face(s, other, kVirtualFace);
+  const uint32_t a = add_face(s, left.data(), uint32_t(left.size()), kVirtualFace);
+  const uint32_t b = add_face(s, other.data(), uint32_t(other.size()), kVirtualFace);
   for (uint32_t j = 0; j < k; ++j) {
     // a_j -> a_(j+1) = v_(1-j) -> v_(-j), the reverse of cycle[-j].
     const uint32_t ha = s->face_begin[a] + j, ci = (k - j) % k;
@@ -340,13 +343,15 @@ std::string build_polygon_surface(const Mesh& mesh, PolygonSurfaceModel* s) {
   s->corners.reserve(mesh.corners.size());
   s->twin.reserve(mesh.corners.size());
   s->face_of.reserve(mesh.corners.size());
+  s->face_begin.reserve(mesh.face_count() + 1);
+  s->source.reserve(mesh.face_count());
   for (uint32_t f = 0, begin = 0; f < mesh.face_count(); begin += mesh.face_sizes[f], ++f) {
     const uint32_t* c = &mesh.corners[begin];
     if (repeats_a_vertex(c, mesh.face_sizes[f], f, &listed_by)) {
       s->loose.push_back(f);
       continue;
     }
-    add_face(s, std::vector<uint32_t>(c, c + mesh.face_sizes[f]), f);
+    add_face(s, c, mesh.face_sizes[f], f);
   }
   pair_unique_edges(s);
   split_fans(s);

@@ -14,6 +14,9 @@ class PolygonTraversalEncoder {
       : s_(s), out_(out), processed_(s.face_count(), 0), touched_(s.vertex_count(), 0) {
     out_->label.assign(s.vertex_count(), kNone);
     out_->rotation.assign(s.face_count(), 0);
+    // Every face but each component's first is coded once: at most this.
+    out_->order.reserve(s.face_count());
+    out_->shapes.reserve(s.face_count());
   }
 
   std::string run();
@@ -50,7 +53,7 @@ uint32_t PolygonTraversalEncoder::start_component(uint32_t f) {
 
 void PolygonTraversalEncoder::encode_face(uint32_t gate, std::vector<uint32_t>* stack, uint32_t* next_gate) {
   const uint32_t f = s_.face_of[gate], d = s_.degree(f), m = d - 2;
-  status_.assign(m, 0);
+  status_.resize(m);  // every entry set below
   gaps_.clear();
   gap_start_.clear();
   // Walk w1 .. wm from g1; a gap starts at g1 and after each anchor.
@@ -60,8 +63,8 @@ void PolygonTraversalEncoder::encode_face(uint32_t gate, std::vector<uint32_t>* 
   for (uint32_t i = 0; i < m; ++i) {
     const uint32_t leaving = s_.next(h);  // w_i -> w_(i+1)
     const uint32_t w = s_.corners[leaving];
+    status_[i] = touched_[w];
     if (touched_[w]) {
-      status_[i] = 1;
       gaps_.push_back(free_in_gap == 0 && processed_[s_.face_of[s_.twin[h]]] ? 1 : 0);
       gap_start_.push_back(leaving);
       free_in_gap = 0;

@@ -219,12 +219,19 @@ class MeteredRangeEncoder {
 
 // The subset of the candidates (14.3.3) chosen as 14.5 says: the mask and
 // residuals cheapest under the current probabilities, or the prediction
-// nearest to the vertex (L1); ties go to the lower mask.
+// nearest to the vertex (L1); ties go to the lower mask. Leaves *p
+// selected with that mask (select_candidates).
 unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidualModel* model, CandidateChoice choice,
                          VertexPrediction* p) {
-  if (p->candidates < 2) return p->candidates == 1 ? 1u : 0u;
+  if (p->candidates < 2) {
+    const unsigned only = p->candidates == 1 ? 1u : 0u;
+    select_candidates(p, only, top);
+    return only;
+  }
   unsigned best = 1;
   double best_cost = INFINITY;
+  int64_t best_value[3] = {0, 0, 0};
+  PredictionKind best_kind = PredictionKind::kPrevious;
   for (unsigned mask = 1; mask < (1u << p->candidates); ++mask) {
     select_candidates(p, mask, top);
     CostMeter meter;
@@ -239,8 +246,15 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
         code_position_residual(&meter, model, *p, magnitude, a, SignedResidual{magnitude[a], r < 0});
     }
     const double cost = choice == CandidateChoice::kFewestBits ? meter.bits : distance;
-    if (cost < best_cost) best_cost = cost, best = mask;
+    if (cost < best_cost) {
+      best_cost = cost;
+      best = mask;
+      std::copy(p->value, p->value + 3, best_value);
+      best_kind = p->kind;
+    }
   }
+  std::copy(best_value, best_value + 3, p->value);
+  p->kind = best_kind;
   return best;
 }
 
@@ -271,7 +285,6 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
     const double before = rc.meter.bits;
     const unsigned mask = best_candidates(&positions.q[3 * size_t(v)], positions.top.data(), &model[0], choice, &p);
     code_candidate_mask(&rc, &model[0], p.candidates, mask);
-    select_candidates(&p, mask, positions.top.data());
     uint32_t magnitude[3] = {0, 0, 0};
     for (int a = 0; a < 3; ++a) {
       const int64_t r = int64_t(positions.q[3 * size_t(v) + a]) - p.value[a];
