@@ -61,6 +61,17 @@ check encode-per-axis-deltas 0 "$qmc" encode "$work/torus.obj" "$work/deltas.qmc
 contains encode-per-axis-deltas-reported "$work/out" "deltas (spec 6), per-axis grid"
 check info-deltas 0 "$qmc" info "$work/deltas.qmc"
 contains info-deltas-method "$work/out" "deltas (spec 6), 12 bits/axis"
+# --format 1.N: files older decoders read (spec 11: 1.5 without polygon coding 7, 1.4 without predicted positions).
+check format-1.5 0 "$qmc" encode "$work/torus.obj" "$work/f15.qmc" --format 1.5 --quiet
+check format-1.5-info 0 "$qmc" info "$work/f15.qmc"
+contains format-1.5-written "$work/out" "format 1.5"
+check format-1.4 0 "$qmc" encode "$work/torus.obj" "$work/f14.qmc" --format 1.4 --quiet
+check format-1.4-info 0 "$qmc" info "$work/f14.qmc"
+contains format-1.4-deltas "$work/out" "format 1.2"
+check format-1.4-verify 0 "$qmc" verify "$work/torus.obj" "$work/f14.qmc"
+check format-1.4-no-predicted 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --format 1.4 --positions predicted
+contains format-1.4-no-predicted-why "$work/err" "needs --format 1.5 or later"
+check format-1.3-refused 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --format 1.3
 check deltas-need-per-axis 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --positions deltas
 check step-and-bits 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --step 0.01 --bits 10
 check bad-step 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --step -1

@@ -77,6 +77,9 @@ const char kHelp[] =
     "  --gim-normals       add three planes of unit normals (attribute kinds 3-5)\n"
     "  --gim-store-blank   also code the samples of blank pixels (smooth planes\n"
     "                      for image tools, at some cost in bytes)\n"
+    "  --format 1.N        write nothing that decoders older than 1.N cannot read:\n"
+    "                      1.5 leaves out polygon coding 7, 1.4 also predicted\n"
+    "                      positions (deltas on the per-axis grid); default 1.6\n"
     "  --drop-unsupported  encode without what the file format cannot carry yet\n"
     "                      (texture coordinates, normals, colours, groups,\n"
     "                      materials...), listing it; without it such input is\n"
@@ -86,11 +89,17 @@ const char kHelp[] =
     "  --quiet             print nothing on success, not even the notes about\n"
     "                      what the reader ignored (texture coordinates, groups)\n";
 
+// The newest format minor version this encoder writes, and the oldest that
+// --format accepts: 1.4 decoders read method-0 positions, 1.5 decoders
+// predicted positions and LEVL code 2 but not polygon coding 7 (spec 11).
+constexpr int kNewestMinor = 6, kOldestTargetMinor = 4;
+
 struct EncodeArgs {
   std::string input, output;
   EncodeOptions options;
   bool quiet = false, progressive = false, allow_empty = false, drop_unsupported = false;
   std::string roi_path;
+  int newest_minor = kNewestMinor;  // --format 1.N: no feature newer than 1.N (spec 11)
 };
 
 const CommandSpec kSpec{"encode",
@@ -98,7 +107,7 @@ const CommandSpec kSpec{"encode",
                         {"--quiet", "--allow-empty", "--drop-unsupported", "--keep-order", "--progressive", "--topology-preserving",
                          "--gim-float", "--gim-quads", "--gim-store-blank", "--gim-normals"},
                         {{"--bits", "-q"}, {"--text"}, {"--connectivity"}, {"--levels"}, {"--gim"}, {"--sampling"},
-                         {"--roi"}, {"--grid"}, {"--step"}, {"--max-error"}, {"--positions"}},
+                         {"--roi"}, {"--grid"}, {"--step"}, {"--max-error"}, {"--positions"}, {"--format"}},
                         2,
                         2};
 
@@ -184,6 +193,26 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
   return -1;
 }
 
+// --format 1.N: the options that keep every feature within 1.N, or a usage
+// error naming the option that needs a newer version.
+int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
+  EncodeOptions& o = args->options;
+  if (args->newest_minor >= 6) return -1;
+  if (o.polygon_coding == kPolygonContextCoded) return usage_error("encode", "polygon coding 7 needs --format 1.6");
+  o.polygon_context_coding = false;
+  if (args->newest_minor >= 5) return -1;
+  if (o.position_method == PositionMethod::kPredicted)
+    return usage_error("encode", "--positions predicted (spec 14) needs --format 1.5 or later");
+  bool uniform_asked = false;
+  for (const auto& [name, value] : cl.options) uniform_asked = uniform_asked || (name == "--grid" && value == "uniform");
+  if (o.position_step > 0 || o.max_position_error > 0 || uniform_asked)
+    return usage_error("encode", "--grid uniform, --step and --max-error (spec 14's grids) need --format 1.5 or later");
+  o.position_method = PositionMethod::kDeltas;
+  o.position_grid = PositionGrid::kPerAxis;
+  o.displacement_code = 0;
+  return -1;
+}
+
 int parse(int argc, char** argv, EncodeArgs* args) {
   CommandLine cl;
   if (int rc = parse_command_line(kSpec, argc, argv, &cl); rc >= 0) return rc;
@@ -200,6 +229,13 @@ int parse(int argc, char** argv, EncodeArgs* args) {
   for (const auto& [name, value] : cl.options) {
     if (name == "--gim" || name == "--sampling" || name == "--roi") continue;  // parse_gim
     if (name == "--grid" || name == "--step" || name == "--max-error" || name == "--positions") continue;
+    if (name == "--format") {
+      if (value.size() != 3 || value.compare(0, 2, "1.") != 0 || value[2] < '0' + kOldestTargetMinor ||
+          value[2] > '0' + kNewestMinor)
+        return usage_error("encode", "--format takes 1.4, 1.5 or 1.6, got '" + value + "'");
+      args->newest_minor = value[2] - '0';
+      continue;
+    }
     if (name == "--levels") {
       long levels = 0;
       if (!args->progressive) return usage_error("encode", "--levels needs --progressive");
@@ -225,7 +261,7 @@ int parse(int argc, char** argv, EncodeArgs* args) {
       return usage_error("encode", "--bits takes a whole number from 1 to 30, got '" + value + "'");
     args->options.position_bits = int(bits);
   }
-  return -1;
+  return limit_to_format(cl, args);
 }
 
 void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& stats,
@@ -353,6 +389,15 @@ Status encode_remesh(const EncodeArgs& args, const Mesh& mesh, const Mesh& refer
 }
 
 // Section 12: triangles in, progressive file out, error measured by decoding it.
+// The file's QHDR minor (spec 4.1: QHDR is the first chunk, after the
+// 8-byte signature and its 8 bytes of type and length) against --format.
+int refuse_newer_format(const EncodeArgs& args, const std::vector<uint8_t>& bytes) {
+  const size_t minor_at = 8 + 8 + 1;
+  if (bytes.size() > minor_at && bytes[minor_at] <= args.newest_minor) return -1;
+  return fail("encode", Status(ErrorCode::kInvalidArgument, "internal error: the file needs a format newer than --format 1." +
+                                                                std::to_string(args.newest_minor)));
+}
+
 // What the reader ignored ("ignored ..." notes) is data the file would not
 // carry: an error naming it, unless the user asked to drop it
 // (--drop-unsupported), and then a list of what was dropped; the reader's
@@ -388,6 +433,7 @@ int encode_progressive(EncodeArgs& args, Mesh mesh, uint64_t input_bytes) {
   const std::vector<uint8_t>& bytes = result.bytes;
   const EncodeStats& stats = result.stats;
   const tools::MeshDistance& distance = result.distance;
+  if (int refused = refuse_newer_format(args, bytes); refused >= 0) return refused;
   if (Status s = write_file(args.output, bytes); !s.ok()) return fail("encode", s);
   if (!args.quiet) print_progressive_report(args, mesh, stats, distance, input_bytes);
   return kExitOk;
@@ -452,6 +498,7 @@ int encode_gim(EncodeArgs& args, const Mesh& mesh, uint64_t input_bytes) {
   const tools::MeshDistance& distance = result.distance;
   const std::string exactness =
       args.options.gim.topology_preserving ? topology_preserving_check(triangles, result.decoded.mesh) : "";
+  if (int refused = refuse_newer_format(args, bytes); refused >= 0) return refused;
   if (Status s = write_file(args.output, bytes); !s.ok()) return fail("encode", s);
   if (!args.quiet) print_gim_report(args, mesh, stats, distance, input_bytes, exactness);
   return kExitOk;
@@ -503,6 +550,7 @@ int run_encode(int argc, char** argv) {
   if (!check.ok())
     return fail("encode", Status(ErrorCode::kInvalidArgument, "internal error, round trip mismatch: " +
                                                                   check.face_mismatch + check.position_mismatch));
+  if (int refused = refuse_newer_format(args, bytes); refused >= 0) return refused;
   if (Status s = write_file(args.output, bytes); !s.ok()) return fail("encode", s);
   if (!args.quiet) print_report(args, mesh, stats, check, input_size);
   return kExitOk;
