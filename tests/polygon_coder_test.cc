@@ -156,21 +156,17 @@ TEST(PolygonDecoder, PillowRejectsAWrongFaceCount) {
 // (5.4.10) each one is applied at.
 class RecordedGates : public FaceSymbolSource {
  public:
-  explicit RecordedGates(const PolygonTraversal& t) : shapes_(t.shapes) {
-    for (size_t c = 0, first = 0; c < t.component_faces.size(); first += t.component_faces[c++] - 1)
-      first_.push_back(first);
-  }
-  Status face(const GateContext& gate, size_t c, size_t k, const FaceShapes** shapes, size_t* index) override {
+  explicit RecordedGates(const PolygonTraversal& t) : shapes_(t.shapes) {}
+  Status face(const GateContext& gate, size_t f, const FaceShapes** shapes, size_t* index) override {
     gates.push_back((gate.gate * 8 + gate.next) * 8 + gate.prev);
     *shapes = &shapes_;
-    *index = first_[c] + k;
+    *index = f;
     return Status::Ok();
   }
   std::vector<uint32_t> gates;
 
  private:
   const FaceShapes& shapes_;
-  std::vector<size_t> first_;
 };
 
 // The encoder's context run (coding 7) skips the labels but must meet every

@@ -171,7 +171,7 @@ class CodedFaces : public FaceSymbolSource {
     if (range_.bad_start()) return payload_error("face symbol stream starts with 0xFFFFFFFF");
     return Status::Ok();
   }
-  Status face(const GateContext& gate, size_t, size_t, const FaceShapes** shapes, size_t* index) override {
+  Status face(const GateContext& gate, size_t, const FaceShapes** shapes, size_t* index) override {
     const int symbol = code_face_symbol(&range_, &model_, gate, 0);
     if (range_.overrun()) return truncated();
     if (symbol < 0) return symbol_error("quad code above 12 (5.4.10)");

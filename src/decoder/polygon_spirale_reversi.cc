@@ -307,7 +307,6 @@ Status PolygonSpiraleReversi::label_component(uint32_t d, size_t coded, PolygonS
     l = next_label++;
     return true;
   };
-  std::vector<uint32_t> loop_labels;
   uint32_t node = current_.gate;
   for (uint32_t i = 0; i < d; ++i, node = next_[node]) {
     if (!give(vertex_[node])) return Status(ErrorCode::kBadSymbol, "CONN: a vertex is twice on a component's first face");
@@ -368,30 +367,18 @@ Status check_directed_edges(const PolygonSurface& s) {
   return Status::Ok();
 }
 
-}  // namespace
-
-namespace {
-
 // Codings 0 .. 5: every symbol was read before Spirale Reversi starts.
 class StoredFaces : public FaceSymbolSource {
  public:
-  StoredFaces(const std::vector<uint32_t>& components, const FaceShapes& shapes) : shapes_(shapes) {
-    first_.reserve(components.size());
-    size_t first = 0;
-    for (uint32_t n : components) {
-      first_.push_back(first);
-      first += n - 1;
-    }
-  }
-  Status face(const GateContext&, size_t c, size_t k, const FaceShapes** shapes, size_t* index) override {
+  explicit StoredFaces(const FaceShapes& shapes) : shapes_(shapes) {}
+  Status face(const GateContext&, size_t f, const FaceShapes** shapes, size_t* index) override {
     *shapes = &shapes_;
-    *index = first_[c] + k;
+    *index = f;
     return Status::Ok();
   }
 
  private:
   const FaceShapes& shapes_;
-  std::vector<size_t> first_;
 };
 
 Status run_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
@@ -406,7 +393,7 @@ Status run_spirale_reversi(const std::vector<uint32_t>& components, const std::v
       const FaceShapes* shapes = nullptr;
       size_t index = 0;
       const GateContext gate = count_faces ? decoder.gate_context() : GateContext{};
-      if (Status s = source->face(gate, c, k, &shapes, &index); !s.ok()) return s;
+      if (Status s = source->face(gate, first + k, &shapes, &index); !s.ok()) return s;
       // Coding 7 streams the faces in the order they are applied (5.4.10);
       // the stored codings in the traversal's order, index = first + k.
       const size_t number = count_faces ? applied : index;
@@ -417,6 +404,11 @@ Status run_spirale_reversi(const std::vector<uint32_t>& components, const std::v
   }
   if (Status s = source->end(); !s.ok()) return s;
   return surface == nullptr ? Status::Ok() : check_directed_edges(*surface);
+}
+
+// The encoder's own symbols: its largest component's face count.
+size_t largest_face_count(const std::vector<uint32_t>& components) {
+  return components.empty() ? 0 : *std::max_element(components.begin(), components.end());
 }
 
 }  // namespace
@@ -436,18 +428,9 @@ Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const st
   }
   surface->face_degree.reserve(components.size() + shapes.size());
   surface->corners.reserve(size_t(all_corners));
-  StoredFaces stored(components, shapes);
+  StoredFaces stored(shapes);
   return run_spirale_reversi(components, first_degree, &stored, false, size_t(largest), size_t(most_faces), surface);
 }
-
-namespace {
-
-// The encoder's own symbols: its largest component's face count.
-size_t largest_face_count(const std::vector<uint32_t>& components) {
-  return components.empty() ? 0 : *std::max_element(components.begin(), components.end());
-}
-
-}  // namespace
 
 Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
                                FaceSymbolSource* source, PolygonSurface* surface) {

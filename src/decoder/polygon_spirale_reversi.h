@@ -25,9 +25,9 @@ struct PolygonSurface {
 class FaceSymbolSource {
  public:
   virtual ~FaceSymbolSource() = default;
-  // Component c's coded face k (0-based in stream order), applied next at
-  // `gate`: sets the shapes holding it and its index there.
-  virtual Status face(const GateContext& gate, size_t c, size_t k, const FaceShapes** shapes, size_t* index) = 0;
+  // Coded face f (its index in stream order, all components), applied next
+  // at `gate`: sets the shapes holding it and its index there.
+  virtual Status face(const GateContext& gate, size_t f, const FaceShapes** shapes, size_t* index) = 0;
   // After the last face, before the directed-edge check.
   virtual Status end() { return Status::Ok(); }
 };

@@ -103,17 +103,10 @@ uint8_t symbol_groups(const FaceShapes& shapes) {
 // will see when it decodes it.
 class EncodedFaces : public FaceSymbolSource {
  public:
-  EncodedFaces(const std::vector<uint32_t>& components, const FaceShapes& shapes, const std::vector<int>& symbols)
-      : shapes_(shapes), symbols_(symbols) {
-    size_t first = 0;
-    for (uint32_t n : components) {
-      first_.push_back(first);
-      first += n - 1;
-    }
+  EncodedFaces(const FaceShapes& shapes, const std::vector<int>& symbols) : shapes_(shapes), symbols_(symbols) {
     model_.groups = symbol_groups(shapes);
   }
-  Status face(const GateContext& gate, size_t c, size_t k, const FaceShapes** shapes, size_t* index) override {
-    const size_t f = first_[c] + k;
+  Status face(const GateContext& gate, size_t f, const FaceShapes** shapes, size_t* index) override {
     const int symbol = symbols_[f];
     code_face_symbol(&range_, &model_, gate, symbol);
     if (symbol == kPolygonOtherSymbol) {
@@ -135,15 +128,16 @@ class EncodedFaces : public FaceSymbolSource {
  private:
   const FaceShapes& shapes_;
   const std::vector<int>& symbols_;
-  std::vector<size_t> first_;
   PolygonSymbolModel model_;
   RangeEncoder range_;
 };
 
-// The groups byte, the length and the range-coded symbols of coding 7.
+// The groups byte, the length and the range-coded symbols of coding 7;
+// empty if the traversal's own symbols did not replay (then coding 7 is not
+// offered, and self_check still guards whichever coding is written).
 std::vector<uint8_t> context_coded_symbols(const PolygonTraversal& t, const std::vector<int>& symbols) {
-  EncodedFaces faces(t.component_faces, t.shapes, symbols);
-  polygon_spirale_contexts(t.component_faces, t.first_degree, &faces);
+  EncodedFaces faces(t.shapes, symbols);
+  if (!polygon_spirale_contexts(t.component_faces, t.first_degree, &faces).ok()) return {};
   const std::vector<uint8_t> stream = faces.finish();
   std::vector<uint8_t> out;
   put_u8(&out, faces.groups());
@@ -281,7 +275,7 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
     if (c == kPolygonUnassignedCoding) {
       out->coding_bits[c] = -1;
     } else if (c == kPolygonContextCoded) {
-      out->coding_bits[c] = try_context ? int64_t(8 * coded_symbols.size()) : -1;
+      out->coding_bits[c] = coded_symbols.empty() ? -1 : int64_t(8 * coded_symbols.size());
     } else if (c == kPolygonMixedHuffman) {
       BitWriter trial;
       write_mixed_symbols(shapes, symbols, &trial);
