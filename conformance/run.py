@@ -2,7 +2,7 @@
 """Runs any qmc decoder over the conformance vectors (spec/qmc-format.md 10.3).
 
     conformance/run.py --decoder "mydec {in} {out}" [--manifest conformance/MANIFEST]
-                       [--only PATTERN] [--skip-ordr] [--strict-errors] [--jobs N] [--timeout S]
+                       [--only PATTERN] [--skip-ordr] [--skip-attr] [--strict-errors] [--jobs N] [--timeout S]
 
 The decoder command is a shell command line in which {in} is replaced by the
 vector's path and {out} by the path of a file to write, both quoted for the
@@ -38,6 +38,7 @@ EXIT_OK, EXIT_FAILED, EXIT_USAGE = 0, 1, 2
 # Spec 10.1: vectors of the ancillary chunk oRDR (4.5), which a decoder
 # without 4.5 is not checked on.
 ORDR_PREFIXES = ("valid_ordr_", "invalid_ordr_")
+ATTR_PREFIXES = ("valid_attr_", "invalid_attr_")
 
 
 class UsageError(Exception):
@@ -126,13 +127,17 @@ def check(vector, template, work_dir, timeout, strict_errors):
     return None
 
 
-def select(vectors, only, skip_ordr):
+def select(vectors, only, skip_ordr, skip_attr=False):
     """(vector, skip reason or None) for the vectors --only keeps."""
     chosen = []
     for v in vectors:
         if only and not fnmatch.fnmatchcase(v.name, only):
             continue
-        reason = "oRDR vector (--skip-ordr, spec 10.1)" if skip_ordr and v.name.startswith(ORDR_PREFIXES) else None
+        reason = None
+        if skip_ordr and v.name.startswith(ORDR_PREFIXES):
+            reason = "oRDR vector (--skip-ordr, spec 10.1)"
+        if skip_attr and v.name.startswith(ATTR_PREFIXES):
+            reason = "aTTR vector (--skip-attr, spec 10.1)"
         chosen.append((v, reason))
     return chosen
 
@@ -145,6 +150,8 @@ def parse_args(argv):
     p.add_argument("--manifest", default=os.path.join(here, "MANIFEST"), help="default: MANIFEST beside this script")
     p.add_argument("--only", metavar="PATTERN", help="only vectors whose name (no .qmc) matches this glob")
     p.add_argument("--skip-ordr", action="store_true", help="skip the valid_ordr_*/invalid_ordr_* vectors (spec 10.1)")
+    p.add_argument("--skip-attr", action="store_true",
+                   help="skip the valid_attr_*/invalid_attr_* vectors, for a decoder without section 15 (spec 10.1)")
     p.add_argument("--strict-errors", action="store_true",
                    help="a rejection must also print the manifest's error identifier (spec 9)")
     p.add_argument("--jobs", type=int, default=1, metavar="N", help="vectors decoded at once (default 1)")
@@ -160,7 +167,7 @@ def parse_args(argv):
 def main(argv):
     args = parse_args(argv)
     try:
-        chosen = select(read_manifest(args.manifest), args.only, args.skip_ordr)
+        chosen = select(read_manifest(args.manifest), args.only, args.skip_ordr, args.skip_attr)
     except UsageError as e:
         print(f"run.py: {e}", file=sys.stderr)
         return EXIT_USAGE

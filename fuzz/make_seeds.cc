@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
   const fs::path out = argv[2];
   for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "polygon_connectivity", "polygon_coding7", "positions",
                         "predicted_positions",
-                        "huffman", "roundtrip", "order", "loop_levels", "gim_file", "gim_plane"})
+                        "huffman", "roundtrip", "order", "loop_levels", "gim_file", "gim_plane", "attributes"})
     fs::create_directories(out / t);
   int n = 0;
   for (const auto& entry : fs::directory_iterator(argv[1])) {
@@ -160,6 +160,12 @@ int main(int argc, char** argv) {
       if (type == qmc::kChunkGimPlane)
         write_gim_plane_seed(out / "gim_plane" / (name + "_plane" + std::to_string(gim_planes++)), gim_header, gim_mask,
                              payload, length);
+      if (type == qmc::kChunkAttribute && !conn.empty()) {  // attributes input: as order's
+        std::vector<uint8_t> seed{uint8_t(conn.size()), uint8_t(conn.size() >> 8)};
+        seed.insert(seed.end(), conn.begin(), conn.end());
+        seed.insert(seed.end(), payload, payload + length);
+        write(out / "attributes" / (name + "_" + std::to_string(pos)), seed.data(), seed.size());
+      }
       if (type == qmc::kChunkOrder && !conn.empty()) {
         std::vector<uint8_t> seed{uint8_t(conn.size()), uint8_t(conn.size() >> 8)};
         seed.insert(seed.end(), conn.begin(), conn.end());

@@ -18,7 +18,11 @@
 #   compression.md   issue 13: qmc's positions and whole files against Draco
 #                    cl10 / cl7 and meshoptimizer + zstd -19 at 12, 14 and 16
 #                    bits, decode and encode times, with the issue's targets.
-# ONLY=compression, ONLY=topology, ONLY=seed003 or ONLY=gim regenerates that one file.
+#   attributes.md    issue 16: texture coordinates and normals (spec 15)
+#                    against Draco cl10 at the same bits, on every corpus
+#                    mesh with attributes.
+# ONLY=compression, ONLY=topology, ONLY=seed003, ONLY=attributes or ONLY=gim
+# regenerates that one file.
 # RUNS (default 7) runs per measurement, LARGE_RUNS (default 3) for the
 # ~1M-quad sphere; medians are reported. Run on an otherwise idle machine.
 set -euo pipefail
@@ -82,8 +86,20 @@ topology_result() {
     build/bench/qmc_topology_bench --runs "$runs" --large-runs "$large_runs" --bits 12 "$corpus"/quad/* "$corpus"/tri/*
 }
 
+# attributes_result: docs/results/attributes.md (issue 16), sizes only.
+attributes_result() {
+  write_result docs/results/attributes.md "Attributes: qmc's aTTR chunks against Draco cl10" \
+    python3 bench/attribute_sizes.py build/tools/qmc "$work" "$corpus"/attr/*.obj "$corpus"/tri/cathead.obj \
+    "$corpus"/quad/cylinder_ngon_caps.obj "$corpus"/quad/fish_control_mesh.obj "$corpus"/quad/spot_control_mesh.obj \
+    "$corpus"/quad/suzanne.obj
+}
+
 if [ "${ONLY:-}" = compression ]; then
   compression_result
+  exit 0
+fi
+if [ "${ONLY:-}" = attributes ]; then
+  attributes_result
   exit 0
 fi
 if [ "${ONLY:-}" = topology ]; then
@@ -116,6 +132,7 @@ write_result docs/results/quad_vs_draco.md "Quad meshes: qmc's quad coder agains
 topology_result
 compression_result
 seed003_result
+attributes_result
 fi
 mkdir -p docs/results/gim
 write_result docs/results/gim.md "Geometry images: seeds 000 and 002 rerun with qmc, and lossless planes against zstd and PNG" \

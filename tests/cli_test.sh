@@ -253,5 +253,43 @@ check decode-limit-generous 0 "$qmc" decode "$work/torus.qmc" "$work/t.obj" --ma
 check info-limit 3 "$qmc" info "$bomb"
 contains info-limit-named "$work/out" "--max-output-mb raises it"
 
+# Spec 15: texture coordinates and normals travel in aTTR chunks, with a seam.
+cat >"$work/uv.obj" <<'OBJ'
+v 0 0 0
+v 1 0 0
+v 0 1 0
+v 1 1 0
+vt 0 0
+vt 1 0
+vt 0 1
+vt 1 1
+vt 0.5 0.5
+vn 0 0 1
+f 1/1/1 2/2/1 3/3/1
+f 3/5/1 2/2/1 4/4/1
+OBJ
+check encode-attributes 0 "$qmc" encode "$work/uv.obj" "$work/uv.qmc"
+contains encode-attributes-report "$work/out" "attribute   texcoord (spec 15): 5 values, per corner"
+check verify-attributes 0 "$qmc" verify "$work/uv.obj" "$work/uv.qmc"
+contains verify-attributes-checked "$work/out" "attribute texcoord: at every corner, within half its step"
+check info-attributes 0 "$qmc" info "$work/uv.qmc"
+contains info-attributes-normal "$work/out" '"normal" (spec 15): normal, 3 component(s), 1 values, per corner'
+check decode-attributes-obj 0 "$qmc" decode "$work/uv.qmc" "$work/uv_back.obj"
+contains decode-attributes-vt "$work/uv_back.obj" "^f [0-9]/[0-9]/1 [0-9]/[0-9]/1 [0-9]/[0-9]/1$"
+check decode-attributes-keep-order 0 "$qmc" encode "$work/uv.obj" "$work/uv_kept.qmc" --keep-order
+check decode-attributes-keep-order-obj 0 "$qmc" decode "$work/uv_kept.qmc" "$work/uv_kept.obj"
+contains decode-attributes-kept-face "$work/uv_kept.obj" "^f 3/[0-9]/1 2/[0-9]/1 4/[0-9]/1$"
+check decode-attributes-off-refused 3 "$qmc" decode "$work/uv.qmc" "$work/uv_back.off"
+contains decode-attributes-off-names "$work/err" 'attribute "texcoord"'
+check encode-attributes-exact 0 "$qmc" encode "$work/uv.obj" "$work/uv_exact.qmc" --exact-attributes --keep-order
+check verify-attributes-exact 0 "$qmc" verify "$work/uv.obj" "$work/uv_exact.qmc"
+contains verify-attributes-bit-for-bit "$work/out" "attribute normal: at every corner, bit for bit"
+check encode-attributes-progressive-refused 3 "$qmc" encode "$work/uv.obj" "$work/uv_p.qmc" --progressive
+contains encode-attributes-progressive-names "$work/err" "pass --drop NAME for each, or --drop-unsupported"
+check encode-attributes-drop 0 "$qmc" encode "$work/uv.obj" "$work/uv_drop.qmc" --drop normal
+contains encode-attributes-drop-said "$work/err" "dropped (--drop normal)"
+check encode-attributes-drop-unknown 2 "$qmc" encode "$work/uv.obj" "$work/uv_drop.qmc" --drop colour
+check encode-attributes-bits 2 "$qmc" encode "$work/uv.obj" "$work/uv_b.qmc" --uv-bits 31
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

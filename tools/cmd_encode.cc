@@ -80,10 +80,19 @@ const char kHelp[] =
     "  --format 1.N        write nothing that decoders older than 1.N cannot read:\n"
     "                      1.5 leaves out polygon coding 7, 1.4 also predicted\n"
     "                      positions (deltas on the per-axis grid); default 1.6\n"
+    "  --uv-bits N         texture coordinates (spec 15) on a grid of 2^N - 1 steps\n"
+    "                      over their range (default 12: 1/4 texel of a 1024\n"
+    "                      texture)\n"
+    "  --normal-bits N     normals likewise (default 10: within 0.1 degree)\n"
+    "  --color-bits N      colours likewise (default 10)\n"
+    "  --exact-attributes  keep every attribute value bit for bit (binary32)\n"
+    "  --drop NAME         leave attribute NAME out (texcoord, normal), saying so;\n"
+    "                      progressive files and geometry images carry none\n"
     "  --drop-unsupported  encode without what the file format cannot carry yet\n"
-    "                      (texture coordinates, normals, colours, groups,\n"
-    "                      materials...), listing it; without it such input is\n"
-    "                      an error that names what would be lost\n"
+    "                      (colours, groups, materials, attributes of a\n"
+    "                      progressive file or geometry image...), listing it;\n"
+    "                      without it such input is an error that names what\n"
+    "                      would be lost\n"
     "  --allow-empty       accept an input without vertices or faces (an empty\n"
     "                      mesh file); without it such an input is an error\n"
     "  --quiet             print nothing on success, not even the notes about\n"
@@ -98,6 +107,7 @@ struct EncodeArgs {
   std::string input, output;
   EncodeOptions options;
   bool quiet = false, progressive = false, allow_empty = false, drop_unsupported = false;
+  std::vector<std::string> drop;  // --drop NAME: attributes left out (spec 15)
   std::string roi_path;
   int newest_minor = kNewestMinor;  // --format 1.N: no feature newer than 1.N (spec 11)
 };
@@ -105,9 +115,10 @@ struct EncodeArgs {
 const CommandSpec kSpec{"encode",
                         kHelp,
                         {"--quiet", "--allow-empty", "--drop-unsupported", "--keep-order", "--progressive", "--topology-preserving",
-                         "--gim-float", "--gim-quads", "--gim-store-blank", "--gim-normals"},
+                         "--gim-float", "--gim-quads", "--gim-store-blank", "--gim-normals", "--exact-attributes"},
                         {{"--bits", "-q"}, {"--text"}, {"--connectivity"}, {"--levels"}, {"--gim"}, {"--sampling"},
-                         {"--roi"}, {"--grid"}, {"--step"}, {"--max-error"}, {"--positions"}, {"--format"}},
+                         {"--roi"}, {"--grid"}, {"--step"}, {"--max-error"}, {"--positions"}, {"--format"},
+                         {"--uv-bits"}, {"--normal-bits"}, {"--color-bits"}, {"--drop"}},
                         2,
                         2};
 
@@ -222,6 +233,7 @@ int parse(int argc, char** argv, EncodeArgs* args) {
   args->allow_empty = cl.has("--allow-empty");
   args->drop_unsupported = cl.has("--drop-unsupported");
   args->options.keep_order = cl.has("--keep-order");
+  args->options.exact_attributes = cl.has("--exact-attributes");
   args->progressive = cl.has("--progressive");
   if (args->progressive) args->options.progressive_levels = 3;
   if (int rc = parse_gim(cl, args); rc >= 0) return rc;
@@ -248,6 +260,20 @@ int parse(int argc, char** argv, EncodeArgs* args) {
       args->options.texts.push_back(value);
       continue;
     }
+    if (name == "--drop") {
+      args->drop.push_back(value);
+      continue;
+    }
+    if (name == "--uv-bits" || name == "--normal-bits" || name == "--color-bits") {
+      long attribute_bits = 0;
+      if (!parse_int(value, 1, 30, &attribute_bits))
+        return usage_error("encode", name + " takes a whole number from 1 to 30, got '" + value + "'");
+      int* field = name == "--uv-bits"       ? &args->options.texcoord_bits
+                   : name == "--normal-bits" ? &args->options.normal_bits
+                                             : &args->options.colour_bits;
+      *field = int(attribute_bits);
+      continue;
+    }
     if (name == "--connectivity") {
       if (value == "auto") args->options.connectivity = ConnectivityChoice::kAuto;
       else if (value == "indexed") args->options.connectivity = ConnectivityChoice::kIndexed;
@@ -262,6 +288,12 @@ int parse(int argc, char** argv, EncodeArgs* args) {
     args->options.position_bits = int(bits);
   }
   return limit_to_format(cl, args);
+}
+
+std::string shortest_number(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.6g", v);
+  return text;
 }
 
 void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& stats,
@@ -330,6 +362,13 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
                     ps.bits_by_kind[k] / ps.vertices_by_kind[k]);
     std::printf("\n");
   }
+  for (const AttributeStats& a : stats.attributes)
+    std::printf("attribute   %s (spec 15): %u values, %s, %s; %llu bytes (mapping %llu, values %llu), %.2f bits/value\n",
+                a.name.c_str(), a.value_count, a.per_corner ? "per corner" : "one per vertex",
+                a.exact ? "exact binary32" : ("grid step " + shortest_number(a.step)).c_str(),
+                static_cast<unsigned long long>(a.chunk_bytes), static_cast<unsigned long long>(a.mapping_bytes),
+                static_cast<unsigned long long>(a.value_bytes),
+                a.value_count ? 8.0 * double(a.value_bytes) / a.value_count : 0.0);
 }
 
 void print_progressive_report(const EncodeArgs& args, const Mesh& input, const EncodeStats& stats,
@@ -420,6 +459,35 @@ int refuse_dropping(const EncodeArgs& args, const std::vector<std::string>& note
   if (!args.quiet)
     for (const std::string& what : ignored)
       std::fprintf(stderr, "dropped (--drop-unsupported): %s: %s\n", args.input.c_str(), what.c_str());
+  return -1;
+}
+
+// --drop NAME leaves an attribute out, and so does --drop-unsupported for a
+// progressive file or a geometry image (spec 15.1: they carry none); what
+// is left out is printed. An attribute those files would lose without
+// either is an error naming the flags. Returns -1 to go on, else the exit code.
+int drop_attributes(const EncodeArgs& args, Mesh* mesh) {
+  for (const std::string& name : args.drop) {
+    const auto it = std::find_if(mesh->attributes.begin(), mesh->attributes.end(),
+                                 [&](const MeshAttribute& a) { return a.name == name; });
+    if (it == mesh->attributes.end())
+      return usage_error("encode", "--drop " + name + ": " + args.input + " has no attribute of that name");
+    mesh->attributes.erase(it);
+    if (!args.quiet) std::fprintf(stderr, "dropped (--drop %s): %s: attribute %s\n", name.c_str(), args.input.c_str(), name.c_str());
+  }
+  const bool carries_none = args.progressive || args.options.gim.size > 0;
+  if (!carries_none || mesh->attributes.empty()) return -1;
+  std::string names;
+  for (const MeshAttribute& a : mesh->attributes) names += (names.empty() ? "" : ", ") + a.name;
+  const char* what = args.progressive ? "a progressive file" : "a geometry image";
+  if (!args.drop_unsupported)
+    return fail("encode", Status(ErrorCode::kInvalidArgument,
+                                 std::string(what) + " carries no attributes (spec 15.1); " + args.input + " has " +
+                                     names + ": pass --drop NAME for each, or --drop-unsupported"));
+  if (!args.quiet)
+    std::fprintf(stderr, "dropped (--drop-unsupported): %s: attributes %s (%s carries none)\n", args.input.c_str(),
+                 names.c_str(), what);
+  mesh->attributes.clear();
   return -1;
 }
 
@@ -522,6 +590,7 @@ int run_encode(int argc, char** argv) {
   std::vector<std::string> ignored;
   if (Status s = load_mesh(args.input, &mesh, true, &ignored); !s.ok()) return fail("encode", s);
   if (int refused = refuse_dropping(args, ignored); refused >= 0) return refused;
+  if (int refused = drop_attributes(args, &mesh); refused >= 0) return refused;
   // An empty mesh is a valid file (the valid_empty_mesh vector), but from a
   // mesh file it is far more often a mistake than an intention.
   if (mesh.vertex_count() == 0 && mesh.face_count() == 0 && !args.allow_empty)

@@ -103,6 +103,16 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
   if (!f.gim.present)
     std::printf("order        %s\n", f.order_restored ? order_description(f.order_flags).c_str()
                                                      : "coder order (no oRDR chunk)");
+  for (size_t i = 0; i < f.mesh.attributes.size() && i < f.attribute_codings.size(); ++i) {
+    const MeshAttribute& a = f.mesh.attributes[i];
+    const AttributeCoding& c = f.attribute_codings[i];
+    static const char* const kKinds[4] = {"generic", "texture coordinate", "normal", "colour"};
+    std::printf("attribute    \"%s\" (spec 15): %s, %u component(s), %zu values, %s, %s; %llu bytes, %.2f bits/value\n",
+                a.name.c_str(), uint8_t(a.kind) < 4 ? kKinds[uint8_t(a.kind)] : "kind unknown to this revision",
+                a.components, a.value_count(), c.mapping == 0 ? "one per vertex" : "per corner",
+                c.coding == 0 ? "predicted on a grid" : "exact binary32", static_cast<unsigned long long>(c.chunk_bytes),
+                a.value_count() ? 8.0 * double(c.chunk_bytes) / double(a.value_count()) : 0.0);
+  }
   if (f.loop_level_count) {
     std::printf("progressive  %u Loop levels (spec 12), %zu decoded\n", f.loop_level_count,
                 f.levels.empty() ? 0 : f.levels.size() - 1);
@@ -154,6 +164,16 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
                 unsigned(f.gim.plane_count), f.gim.seam_pairs.size() / 2);
   else
     std::printf("\"geometry_image\":null,");
+  std::printf("\"attributes\":[");
+  for (size_t i = 0; i < f.mesh.attributes.size() && i < f.attribute_codings.size(); ++i) {
+    const MeshAttribute& a = f.mesh.attributes[i];
+    const AttributeCoding& c = f.attribute_codings[i];
+    std::printf("%s{\"name\":\"%s\",\"kind\":%u,\"components\":%u,\"values\":%zu,\"mapping\":%u,\"coding\":%u,"
+                "\"bytes\":%llu}",
+                i ? "," : "", json_escape(a.name).c_str(), unsigned(a.kind), a.components, a.value_count(),
+                unsigned(c.mapping), unsigned(c.coding), static_cast<unsigned long long>(c.chunk_bytes));
+  }
+  std::printf("],");
   std::printf("\"bits_per_vertex\":%.4f,\"chunks\":[",
               f.mesh.vertex_count() ? 8.0 * double(size) / double(f.mesh.vertex_count()) : 0.0);
   for (size_t i = 0; i < f.chunks.size(); ++i) {

@@ -13,8 +13,9 @@ static const char kVerifyHelp[] =
     "usage: qmc verify IN OUT.qmc [--max-output-mb N]\n"
     "\n"
     "Decodes OUT.qmc and checks it against IN: the same faces after the vertex\n"
-    "relabelling of spec section 5.2.1, and every coordinate within half a\n"
-    "quantization step. A file with an oRDR chunk (qmc encode --keep-order,\n"
+    "relabelling of spec section 5.2.1, every coordinate within half a\n"
+    "quantization step, and every attribute (spec 15: texture coordinates,\n"
+    "normals) at every corner within half its step, or bit for bit if exact. A file with an oRDR chunk (qmc encode --keep-order,\n"
     "spec 4.5) must match IN exactly in IN's order: vertex order, face order and\n"
     "each face's first corner. Exit 0 if both hold, 1 if not, 3 on unreadable input.\n"
     "\n"
@@ -45,6 +46,9 @@ int run_verify(int argc, char** argv) {
   const tools::RoundTripReport r = tools::check_round_trip(original, decoded);
   const char* same = decoded.order_restored ? "identical in the input's order (oRDR)" : "identical after relabelling";
   std::printf("faces     %s\n", r.faces_equal ? same : r.face_mismatch.c_str());
+  for (size_t i = 0; r.faces_equal && i < decoded.mesh.attributes.size(); ++i)
+    std::printf("attribute %s: at every corner, %s\n", decoded.mesh.attributes[i].name.c_str(),
+                decoded.attribute_codings[i].coding == 0 ? "within half its step" : "bit for bit");
   std::printf("positions %s; max error %.6g, rms %.6g\n",
               r.positions_within_bound ? "within half a quantization step" : r.position_mismatch.c_str(),
               r.max_error, r.rms_error);

@@ -8,6 +8,7 @@
 // not be committed over existing vectors (give new vectors new names).
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <limits>
@@ -23,6 +24,9 @@
 #include "bitio/range_coder.h"
 #include "bitio/quad_codings.h"
 #include "analytic_loop_files.h"
+#include "attribute_generators.h"
+#include "bitio/attribute_mapping.h"
+#include "encoder/position_encoder.h"
 #include "chunk_list.h"
 #include "mesh_generators.h"
 #include "quad_disk_generator.h"
@@ -1829,6 +1833,374 @@ void write_context_coded_errors(VectorWriter* w) {
   }
 }
 
+
+// ---------------------------------------------------------------------------
+// Section 15: aTTR, attributes of the corners.
+
+std::vector<uint8_t> encode_with(const Mesh& mesh, const qmc::EncodeOptions& options, const char* what) {
+  std::vector<uint8_t> out;
+  if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: %s: %s\n", what, s.to_string().c_str());
+    std::exit(3);
+  }
+  return out;
+}
+
+// The file with an extra chunk inserted before chunk `at` (by type, nth 0).
+std::vector<uint8_t> with_chunk_before(const std::vector<uint8_t>& file, uint32_t at, uint32_t type,
+                                       std::vector<uint8_t> payload) {
+  Chunks c = split_chunks(file);
+  c.insert(c.begin() + std::ptrdiff_t(find_chunk(c, at)), Chunk{type, std::move(payload)});
+  return join_chunks(c);
+}
+
+// The fields of an aTTR payload (15.1), each settable to break one rule.
+struct AttrFields {
+  uint64_t vertices = 8, corners = 24;
+  std::string name = "uv";
+  uint8_t kind = 1, components = 2, mapping = 1;
+  uint64_t values = 24;
+  uint8_t coding = 1;
+  std::vector<uint8_t> mapping_stream;
+  int64_t mapping_length = -1;  // -1: the stream's own
+  std::vector<uint8_t> rest;    // the values part
+  size_t cut = SIZE_MAX;        // payload cut to this many bytes
+};
+
+std::vector<uint8_t> attr_payload(const AttrFields& f) {
+  std::vector<uint8_t> p;
+  qmc::put_varint(&p, f.vertices);
+  qmc::put_varint(&p, f.corners);
+  qmc::put_u8(&p, uint8_t(f.name.size()));
+  p.insert(p.end(), f.name.begin(), f.name.end());
+  for (uint8_t b : {f.kind, f.components, f.mapping}) qmc::put_u8(&p, b);
+  qmc::put_varint(&p, f.values);
+  qmc::put_u8(&p, f.coding);
+  if (f.mapping == 1) {
+    qmc::put_varint(&p, f.mapping_length >= 0 ? uint64_t(f.mapping_length) : f.mapping_stream.size());
+    p.insert(p.end(), f.mapping_stream.begin(), f.mapping_stream.end());
+  }
+  p.insert(p.end(), f.rest.begin(), f.rest.end());
+  if (f.cut < p.size()) p.resize(f.cut);
+  return p;
+}
+
+// A mapping stream (15.3) of the given choices, one per corner of `corners`.
+std::vector<uint8_t> mapping_stream(const std::vector<uint32_t>& corners, uint32_t vertex_count, uint64_t value_count,
+                                    const std::vector<qmc::MappingChoice>& choices) {
+  qmc::RangeEncoder rc;
+  qmc::AttributeMappingModel model;
+  qmc::VertexValueLists lists;
+  lists.reset(vertex_count, corners);
+  uint32_t met = 0;
+  qmc::MappingFault fault = qmc::MappingFault::kNone;
+  for (size_t k = 0; k < choices.size(); ++k)
+    qmc::code_corner_value(&rc, &model, &lists, corners[k], value_count, &met, choices[k], &fault);
+  return rc.finish();
+}
+
+std::vector<uint8_t> exact_values(size_t floats) {
+  std::vector<uint8_t> v;
+  for (size_t i = 0; i < floats; ++i) qmc::put_f32le(&v, float(i) / 8);
+  return v;
+}
+
+void write_attribute_valid(VectorWriter* w) {
+  using namespace qmc::tools;
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  Mesh sphere = perturbed(triangulated(make_refined_sphere(3)), 7, 0.01f);
+  add_chart_texcoords(&sphere);
+  w->valid("valid_attr_texcoord_seams", encode_with(sphere, options, "seams"), &sphere);
+  Mesh normals = perturbed(triangulated(make_refined_sphere(2)), 8, 0.01f);
+  add_vertex_normals(&normals);
+  w->valid("valid_attr_normal_per_vertex", encode_with(normals, options, "normals"), &normals);
+  // Quads and polygons: the attribute mesh takes section 14's polygon rules.
+  Mesh quads = make_torus(12, 8);
+  add_chart_texcoords(&quads);
+  add_vertex_normals(&quads);
+  w->valid("valid_attr_quads_texcoord_normal", encode_with(quads, options, "quads"), &quads);
+  // oRDR after the attributes (15.6): scrambled input, kept order, both mappings.
+  Mesh scrambled = make_scrambled(triangulated(make_torus(10, 6)), 5);
+  add_chart_texcoords(&scrambled);
+  add_vertex_normals(&scrambled);
+  qmc::EncodeOptions keep = options;
+  keep.keep_order = true;
+  w->valid("valid_attr_keep_order", encode_with(scrambled, keep, "keep order"), &scrambled);
+  // Random tables: own values of a vertex, values of other vertices, unreferenced values, 1 and 3 components.
+  Mesh random = triangulated(make_grid(7, 6));
+  add_random_corner_attribute(&random, 3, "weights", qmc::AttributeKind::kGeneric, 1);
+  add_random_corner_attribute(&random, 4, "colour", qmc::AttributeKind::kColour, 3);
+  w->valid("valid_attr_random_corner_tables", encode_with(random, options, "random"), &random);
+  // Exact binary32: -0.0, a NaN with a payload, infinities, denormals.
+  Mesh exact = make_cube();
+  add_random_corner_attribute(&exact, 6, "exact", qmc::AttributeKind::kGeneric, 2);
+  const uint32_t patterns[] = {0x80000000u, 0x7FC01234u, 0x7F800000u, 0xFF800000u, 0x00000001u};
+  for (size_t i = 0; i < 5; ++i) std::memcpy(&exact.attributes[0].values[i], &patterns[i], 4);
+  qmc::EncodeOptions exact_options = options;
+  exact_options.exact_attributes = true;
+  w->valid("valid_attr_exact_binary32", encode_with(exact, exact_options, "exact"), &exact);
+  // One value on every corner (every top 0: the encoder gives top 1).
+  Mesh constant = make_cube();
+  constant.attributes.push_back({"flat", qmc::AttributeKind::kGeneric, 2, {0.25f, -1.5f}, std::vector<uint32_t>(24, 0)});
+  w->valid("valid_attr_one_value", encode_with(constant, options, "one value"), &constant);
+
+  const std::vector<uint8_t> cube = encode_with(make_cube(), options, "cube");
+  const Mesh cube_file = [&] {
+    qmc::DecodedFile f;
+    (void)qmc::decode(cube.data(), cube.size(), &f);
+    return f.mesh;
+  }();
+  std::vector<qmc::MappingChoice> all_new(24);
+  AttrFields f;
+  f.mapping_stream = mapping_stream(cube_file.corners, 8, 24, all_new);
+  f.rest = exact_values(48);
+  // A kind this revision does not name is kept; a mapping or coding it does not define is skipped.
+  AttrFields kind9 = f;
+  kind9.kind = 9;
+  w->valid("valid_attr_unknown_kind_kept", with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(kind9)),
+           nullptr);
+  AttrFields mapping2 = f;
+  mapping2.mapping = 2;
+  w->valid("valid_attr_unknown_mapping_skipped",
+           with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(mapping2)), nullptr);
+  AttrFields coding2 = f;
+  coding2.coding = 2;
+  w->valid("valid_attr_unknown_coding_skipped",
+           with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(coding2)), nullptr);
+  // Every corner refers to the value of the vertex's first corner, found as own
+  // (n = 1), and the values beyond U (unreferenced): N = 30 with U = 8.
+  std::vector<qmc::MappingChoice> own(24);
+  {
+    std::vector<int> seen(8, 0);
+    for (size_t k = 0; k < 24; ++k)
+      own[k] = seen[cube_file.corners[k]]++ ? qmc::MappingChoice{qmc::MappingChoice::kOwn, 0} : qmc::MappingChoice{};
+  }
+  AttrFields unreferenced = f;
+  unreferenced.values = 30;
+  unreferenced.mapping_stream = mapping_stream(cube_file.corners, 8, 30, own);
+  unreferenced.rest = exact_values(60);
+  w->valid("valid_attr_unreferenced_values",
+           with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(unreferenced)), nullptr);
+}
+
+void write_attribute_errors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  using namespace qmc::tools;
+  qmc::EncodeOptions options;
+  const std::vector<uint8_t> cube = encode_with(make_cube(), options, "cube");
+  qmc::DecodedFile decoded;
+  (void)qmc::decode(cube.data(), cube.size(), &decoded);
+  const std::vector<uint32_t>& corners = decoded.mesh.corners;
+  AttrFields f;
+  f.mapping_stream = mapping_stream(corners, 8, 24, std::vector<qmc::MappingChoice>(24));
+  f.rest = exact_values(48);
+  const auto attr = [&](const AttrFields& x) {
+    return with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(x));
+  };
+  const auto invalid = [&](const char* name, AttrFields x, ErrorCode e) { w->invalid(name, attr(x), e); };
+  // Placement (15.1).
+  w->invalid("invalid_attr_before_posn", with_chunk_before(cube, qmc::kChunkPositions, qmc::kChunkAttribute, attr_payload(f)),
+             ErrorCode::kChunkOrder);
+  {
+    Mesh scrambled = make_scrambled(make_cube(), 3);
+    qmc::EncodeOptions keep = options;
+    keep.keep_order = true;
+    const std::vector<uint8_t> ordered = encode_with(scrambled, keep, "ordered cube");
+    qmc::DecodedFile d;
+    (void)qmc::decode(ordered.data(), ordered.size(), &d);
+    AttrFields g = f;
+    g.mapping_stream = mapping_stream(corners, 8, 24, std::vector<qmc::MappingChoice>(24));
+    w->invalid("invalid_attr_after_ordr", with_chunk_before(ordered, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(g)),
+               ErrorCode::kChunkOrder);
+  }
+  {
+    const std::vector<uint8_t> loop =
+        loop_file(triangulated(make_torus(9, 6)), 1, torus_targets(1, 0.35), 12, qmc::PositionMethod::kPredicted, 2, true);
+    w->invalid("invalid_attr_in_progressive_file",
+               with_chunk_before(loop, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(f)), ErrorCode::kChunkOrder);
+  }
+  // Checks 1-3.
+  AttrFields x = f;
+  x.vertices = 9;
+  invalid("invalid_attr_vertex_count_not_conn", x, ErrorCode::kBadChunkPayload);
+  x = f;
+  x.corners = 23;
+  invalid("invalid_attr_corner_count_not_conn", x, ErrorCode::kBadChunkPayload);
+  x = f;
+  x.name = "";
+  invalid("invalid_attr_empty_name", x, ErrorCode::kBadChunkPayload);
+  x = f;
+  x.cut = 4;  // 8, 24, length 2, "u"
+  invalid("invalid_attr_name_cut_short", x, ErrorCode::kBadChunkPayload);
+  x = f;
+  x.cut = 7;  // ..., kind, components, then no mapping
+  invalid("invalid_attr_mapping_missing", x, ErrorCode::kBadChunkPayload);
+  {
+    const std::vector<uint8_t> once = attr(f);
+    w->invalid("invalid_attr_name_repeated",
+               with_chunk_before(once, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(f)), ErrorCode::kBadChunkPayload);
+  }
+  x = f;
+  x.components = 0;
+  invalid("invalid_attr_components_0", x, ErrorCode::kBadChunkPayload);
+  x = f;
+  x.components = 4;
+  invalid("invalid_attr_components_4", x, ErrorCode::kBadChunkPayload);
+  // Checks 5-8.
+  x = f;
+  x.mapping = 0;
+  x.values = 9;
+  invalid("invalid_attr_per_vertex_count_not_v", x, ErrorCode::kBadChunkPayload);
+  x = f;
+  x.values = uint64_t(1) << 32;
+  invalid("invalid_attr_value_count_above_2_32", x, ErrorCode::kBadChunkPayload);
+  x = f;
+  x.cut = 9;  // ..., mapping, value_count, then no coding
+  invalid("invalid_attr_coding_missing", x, ErrorCode::kBadChunkPayload);
+  x = f;
+  x.mapping_length = int64_t(f.mapping_stream.size() + f.rest.size() + 1);
+  invalid("invalid_attr_mapping_bytes_past_end", x, ErrorCode::kBadChunkPayload);
+  x = f;
+  x.rest.pop_back();
+  invalid("invalid_attr_exact_values_short", x, ErrorCode::kBadChunkPayload);
+  x = f;
+  x.coding = 0;
+  x.values = 24;
+  x.rest.clear();  // N = 24 > 512 (0 + 8)? no: add values so that N exceeds the bound
+  x.values = 4097;
+  x.mapping_stream = mapping_stream(corners, 8, 4097, std::vector<qmc::MappingChoice>(24));
+  invalid("invalid_attr_values_unjustified", x, ErrorCode::kLimitExceeded);
+  // Check 9: the mapping stream (15.3).
+  x = f;
+  x.mapping_stream = {0xFF, 0xFF, 0xFF, 0xFF};
+  invalid("invalid_attr_mapping_bad_start", x, ErrorCode::kBadChunkPayload);
+  {
+    // A random table's mapping stream cut in half: the rest reads as zeros,
+    // valid decisions (not new, j = 0) until more than 4 bytes are invented.
+    Mesh grid = triangulated(make_grid(12, 12));
+    add_random_corner_attribute(&grid, 9, "t", qmc::AttributeKind::kGeneric, 1);
+    Chunks c = split_chunks(encode_with(grid, options, "grid"));
+    std::vector<uint8_t>& p = c[find_chunk(c, qmc::kChunkAttribute)].payload;
+    qmc::ByteReader r(p.data(), p.size());
+    uint64_t skip = 0;
+    uint8_t byte = 0;
+    r.get_varint(&skip);
+    r.get_varint(&skip);
+    r.get_u8(&byte);
+    r.skip(byte);
+    for (int i = 0; i < 3; ++i) r.get_u8(&byte);  // kind, components, mapping
+    r.get_varint(&skip);
+    r.get_u8(&byte);  // coding
+    const size_t length_at = r.position();
+    uint64_t length = 0;
+    r.get_varint(&length);
+    std::vector<uint8_t> cut(p.begin(), p.begin() + std::ptrdiff_t(length_at));
+    qmc::put_varint(&cut, length / 2);
+    cut.insert(cut.end(), p.begin() + std::ptrdiff_t(r.position()), p.begin() + std::ptrdiff_t(r.position() + length / 2));
+    cut.insert(cut.end(), p.begin() + std::ptrdiff_t(r.position() + length), p.end());
+    p = cut;
+    w->invalid("invalid_attr_mapping_truncated", join_chunks(c), ErrorCode::kTruncated);
+  }
+  x = f;
+  x.mapping_stream.insert(x.mapping_stream.end(), 8, 0);
+  invalid("invalid_attr_mapping_bytes_after_data", x, ErrorCode::kBadChunkPayload);
+  {
+    // Corner 0 "not new" with nothing met (n = 0, U = 0).
+    std::vector<qmc::MappingChoice> c(1, qmc::MappingChoice{qmc::MappingChoice::kMet, 0});
+    x = f;
+    x.mapping_stream = mapping_stream(corners, 8, 24, c);
+    invalid("invalid_attr_mapping_nothing_met", x, ErrorCode::kBadSymbol);
+    // Corners 0-2 new (U = 3), then corner 3 "met" value 3 (2 bits: 3 >= U).
+    c.assign(3, qmc::MappingChoice{});
+    c.push_back({qmc::MappingChoice::kMet, 3});
+    x.mapping_stream = mapping_stream(corners, 8, 24, c);
+    invalid("invalid_attr_mapping_met_index_past", x, ErrorCode::kBadSymbol);
+  }
+  {
+    // A vertex with 3 values (n = 3) whose next corner asks for own value 3
+    // (2 bits): the triangulated cube, whose vertices have 4 to 6 corners.
+    const std::vector<uint8_t> tri = encode_with(triangulated(make_cube()), options, "triangulated cube");
+    qmc::DecodedFile d;
+    (void)qmc::decode(tri.data(), tri.size(), &d);
+    const std::vector<uint32_t>& tc = d.mesh.corners;
+    std::vector<qmc::MappingChoice> c;
+    std::vector<int> seen(8, 0);
+    for (size_t k = 0; k < tc.size() && seen[tc[k]] < 3; ++k) {
+      ++seen[tc[k]];
+      c.push_back({});
+    }
+    c.push_back({qmc::MappingChoice::kOwn, 3});
+    AttrFields t = f;
+    t.corners = tc.size();
+    t.values = tc.size();
+    t.mapping_stream = mapping_stream(tc, 8, tc.size(), c);
+    t.rest = exact_values(2 * tc.size());
+    w->invalid("invalid_attr_mapping_own_index_past",
+               with_chunk_before(tri, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(t)), ErrorCode::kBadSymbol);
+  }
+  // 15.4: the grid and the values' stream.
+  AttrFields g = f;
+  g.coding = 0;
+  const auto grid = [](uint8_t kind, float o0, double step, uint64_t top0) {
+    std::vector<uint8_t> v;
+    qmc::put_u8(&v, kind);
+    qmc::put_f32le(&v, o0);
+    qmc::put_f32le(&v, 0.f);
+    qmc::put_f64le(&v, step);
+    if (kind == 1) qmc::put_f64le(&v, step);
+    qmc::put_varint(&v, top0);
+    qmc::put_varint(&v, 3);
+    return v;
+  };
+  // Values 0.. on the grid (q = i mod 4, 0), coded by section 14's coder over the attribute mesh.
+  qmc::Mesh attribute_mesh;
+  attribute_mesh.face_sizes = decoded.mesh.face_sizes;
+  std::vector<uint32_t> m(24);
+  for (uint32_t k = 0; k < 24; ++k) m[k] = k;
+  attribute_mesh.corners = m;
+  std::vector<uint32_t> q(3 * 24, 0);
+  for (uint32_t i = 0; i < 24; ++i) q[3 * i] = i % 4;
+  const uint32_t top[3] = {3, 3, 0};
+  const std::vector<uint8_t> stream = qmc::encode_predicted_grid(q, top, attribute_mesh, nullptr, qmc::CandidateChoice::kFewestBits);
+  g.rest = grid(0, 0.f, 0.5, 3);
+  g.rest.insert(g.rest.end(), stream.begin(), stream.end());
+  w->valid("valid_attr_grid_hand_made", attr(g), nullptr);
+  x = g;
+  x.rest = grid(2, 0.f, 0.5, 3);
+  invalid("invalid_attr_grid_above_1", x, ErrorCode::kBadChunkPayload);
+  x = g;
+  x.rest = grid(0, 0.f, 0.5, uint64_t(1) << 30);
+  invalid("invalid_attr_grid_top_above_2_30", x, ErrorCode::kBadChunkPayload);
+  x = g;
+  x.rest = grid(0, std::numeric_limits<float>::infinity(), 0.5, 3);
+  invalid("invalid_attr_grid_origin_not_finite", x, ErrorCode::kBadChunkPayload);
+  x = g;
+  x.rest = grid(1, 0.f, -0.5, 3);
+  invalid("invalid_attr_grid_step_negative", x, ErrorCode::kBadChunkPayload);
+  x = g;
+  x.rest = grid(0, 3e38f, 1e38, 3);
+  invalid("invalid_attr_grid_last_point_overflows", x, ErrorCode::kBadChunkPayload);
+  // The longest cut of the values' stream that runs out of bytes (shorter
+  // cuts may read zeros as a value outside the grid first).
+  for (size_t n = stream.size(); n-- > 0;) {
+    x = g;
+    x.rest = grid(0, 0.f, 0.5, 3);
+    x.rest.insert(x.rest.end(), stream.begin(), stream.begin() + std::ptrdiff_t(n));
+    qmc::DecodedFile d;
+    const std::vector<uint8_t> file = attr(x);
+    if (qmc::decode(file.data(), file.size(), &d).code() != ErrorCode::kTruncated) continue;
+    w->invalid("invalid_attr_values_truncated", file, ErrorCode::kTruncated);
+    break;
+  }
+  x = g;
+  x.rest = grid(0, 0.f, 0.5, 2);  // q = 3 is above top 2
+  x.rest.insert(x.rest.end(), stream.begin(), stream.end());
+  invalid("invalid_attr_value_above_top", x, ErrorCode::kBadSymbol);
+  x = g;
+  x.rest.insert(x.rest.end(), 8, 0);
+  invalid("invalid_attr_values_bytes_after_data", x, ErrorCode::kBadChunkPayload);
+}
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: qmc-make-vectors DIR   (writes DIR/MANIFEST and DIR/vectors/*.qmc)\n");
@@ -1855,6 +2227,8 @@ int main(int argc, char** argv) {
   write_predicted_position_errors(&w);
   write_context_coded_valid(&w);
   write_context_coded_errors(&w);
+  write_attribute_valid(&w);
+  write_attribute_errors(&w);
   w.finish();
   return 0;
 }

@@ -83,6 +83,17 @@ struct GeometryImageData {
   double value(int plane, uint32_t pixel) const;
 };
 
+// Section 15: how one decoded attribute was coded (mesh.attributes[i] is
+// described by attribute_codings[i]).
+struct AttributeCoding {
+  uint8_t mapping = 0;  // 0 per vertex, 1 per corner (15.1)
+  uint8_t coding = 0;   // 0 predicted on a grid (15.4), 1 exact binary32 (15.5)
+  std::array<float, 3> origin{};   // coding 0: value = origin + q x step, per component
+  std::array<double, 3> step{};
+  std::array<uint32_t, 3> top{};
+  uint64_t chunk_bytes = 0;  // the aTTR chunk, header and CRC included
+};
+
 struct DecodedFile {
   // Positions dequantized per section 6.4; for a progressive file the mesh
   // of the finest level decoded so far (section 12.8).
@@ -105,6 +116,7 @@ struct DecodedFile {
   // vertices, bit 2 rotations; a clear bit is the identity).
   bool order_restored = false;
   uint8_t order_flags = 0;
+  std::vector<AttributeCoding> attribute_codings;  // section 15, one per mesh.attributes
   // Section 12: LOOP's level count K (0: not a progressive file), and the
   // levels decoded so far, levels[0] the base mesh.
   uint8_t loop_level_count = 0;

@@ -104,6 +104,15 @@ struct EncodeOptions {
   // code, section 12.7) and 2 (range coded in contexts, 12.7.1); or 0 or 2.
   int displacement_code = -1;
   GeometryImageOptions gim;
+  // Section 15: the attributes of mesh.attributes, each quantized on the
+  // uniform grid of its bounding box with these bits (1..30) by kind, or
+  // kept as exact binary32. A progressive file or a geometry image cannot
+  // carry attributes: encode() refuses a mesh that has any.
+  int texcoord_bits = 12;  // step 1/4095 of the range: 1/4 texel of a 1024-texel texture
+  int normal_bits = 10;    // below 0.1 degree for unit normals
+  int colour_bits = 10;
+  int generic_bits = 12;
+  bool exact_attributes = false;
   // Called during long operations (the progressive pipeline) with a stage
   // name and the fraction done, 0..1; may be empty.
   std::function<void(const char* stage, double fraction)> progress;
@@ -173,6 +182,17 @@ struct PositionStats {
   std::array<double, 4> bits_by_kind{};
 };
 
+// Section 15: how one attribute was coded.
+struct AttributeStats {
+  std::string name;
+  bool per_corner = false;       // mapping 1 (else one value per vertex)
+  bool exact = false;            // coding 1 (else predicted on a grid)
+  uint32_t value_count = 0;
+  double step = 0;               // the grid's step (coding 0)
+  uint64_t mapping_bytes = 0, value_bytes = 0;  // the mapping stream; the values (grid fields included)
+  uint64_t chunk_bytes = 0;      // the whole aTTR chunk
+};
+
 struct EncodeStats {
   ConnectivityMethod method = ConnectivityMethod::kIndexed;
   PositionStats positions;
@@ -182,6 +202,7 @@ struct EncodeStats {
   PolygonCoderStats polygon;    // filled when method == kPolygon
   LoopEncodeStats loop;         // filled for a progressive file (progressive_levels > 0)
   GimEncodeStats gim;           // filled for a geometry image (gim.size > 0)
+  std::vector<AttributeStats> attributes;  // section 15, in file order
   std::vector<ChunkStats> chunks;
   uint64_t total_bytes = 0;
   // Vertex order of the file: file_vertex[i] is the input index of the

@@ -147,6 +147,26 @@ typedef struct qmc_attribute {
 QMC_API int qmc_decoder_attribute_count(const qmc_decoder* decoder);
 QMC_API int qmc_decoder_attribute(const qmc_decoder* decoder, int index, qmc_attribute* out);
 
+/* Section 15: an attribute of the mesh's corners (aTTR): texture
+ * coordinates (kind 1), normals (2), colours (3) or generic values (0; a
+ * kind this revision does not name is passed on). Corner k of the
+ * QMC_FINEST mesh (in qmc_mesh's corners order) has the value
+ * values[components * corner_values[k] .. + components - 1]. The arrays are
+ * freed with qmc_corner_attribute_free, or kept one by one with qmc_free. */
+typedef struct qmc_corner_attribute {
+  char name[256];           /* NUL-terminated; names are 1..255 bytes */
+  uint32_t kind;
+  uint32_t components;      /* 1..3 */
+  uint32_t value_count;
+  uint32_t corner_count;    /* the mesh's corner_count */
+  float* values;            /* components * value_count */
+  uint32_t* corner_values;  /* corner_count indices below value_count */
+} qmc_corner_attribute;
+
+QMC_API int qmc_decoder_corner_attribute_count(const qmc_decoder* decoder);
+QMC_API int qmc_decoder_corner_attribute(const qmc_decoder* decoder, int index, qmc_corner_attribute* out);
+QMC_API void qmc_corner_attribute_free(qmc_corner_attribute* attribute); /* frees its arrays, zeroes it */
+
 /* Spec 10.2, 12.9, 13.10: the canonical output of the file decoded so far,
  * whose SHA-256 the conformance manifest lists. *bytes is freed with qmc_free. */
 QMC_API int qmc_decoder_canonical_output(const qmc_decoder* decoder, uint8_t** bytes, size_t* size);

@@ -263,6 +263,42 @@ int qmc_decoder_attribute(const qmc_decoder* decoder, int index, qmc_attribute* 
   return QMC_OK;
 }
 
+int qmc_decoder_corner_attribute_count(const qmc_decoder* decoder) {
+  if (!decoder || !decoder->status.ok()) return 0;
+  return int(decoder->stream.file().mesh.attributes.size());
+}
+
+void qmc_corner_attribute_free(qmc_corner_attribute* attribute) {
+  if (!attribute) return;
+  std::free(attribute->values);
+  std::free(attribute->corner_values);
+  std::memset(attribute, 0, sizeof(*attribute));
+}
+
+int qmc_decoder_corner_attribute(const qmc_decoder* decoder, int index, qmc_corner_attribute* out) {
+  if (!decoder || !out) return QMC_INVALID_ARGUMENT;
+  std::memset(out, 0, sizeof(*out));
+  if (!decoder->status.ok()) return int(decoder->status.code());
+  if (index < 0 || index >= qmc_decoder_corner_attribute_count(decoder)) return QMC_INVALID_ARGUMENT;
+  const qmc::MeshAttribute& a = decoder->stream.file().mesh.attributes[size_t(index)];
+  out->values = static_cast<float*>(std::malloc(a.values.empty() ? 1 : a.values.size() * sizeof(float)));
+  out->corner_values =
+      static_cast<uint32_t*>(std::malloc(a.corner_values.empty() ? 1 : a.corner_values.size() * sizeof(uint32_t)));
+  if (!out->values || !out->corner_values) {
+    qmc_corner_attribute_free(out);
+    return QMC_LIMIT_EXCEEDED;
+  }
+  if (!a.values.empty()) std::memcpy(out->values, a.values.data(), a.values.size() * sizeof(float));
+  if (!a.corner_values.empty())
+    std::memcpy(out->corner_values, a.corner_values.data(), a.corner_values.size() * sizeof(uint32_t));
+  std::memcpy(out->name, a.name.data(), a.name.size() < 255 ? a.name.size() : 255);
+  out->kind = uint32_t(a.kind);
+  out->components = a.components;
+  out->value_count = uint32_t(a.value_count());
+  out->corner_count = uint32_t(a.corner_values.size());
+  return QMC_OK;
+}
+
 int qmc_decoder_canonical_output(const qmc_decoder* decoder, uint8_t** bytes, size_t* size) {
   if (!decoder || !bytes || !size) return QMC_INVALID_ARGUMENT;
   *bytes = nullptr;

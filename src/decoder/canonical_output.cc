@@ -24,6 +24,18 @@ void append_mesh(std::vector<uint8_t>* out, const Mesh& mesh, const std::vector<
   for (uint32_t v : mesh.corners) put_u32le(out, v);
 }
 
+// Section 10.2's record of an attribute (section 15.6).
+void append_attribute(std::vector<uint8_t>* out, const MeshAttribute& attribute) {
+  append_tag(out, "QMCATTR1");
+  put_u32le(out, uint32_t(attribute.name.size()));
+  out->insert(out->end(), attribute.name.begin(), attribute.name.end());
+  put_u8(out, uint8_t(attribute.kind));
+  put_u8(out, uint8_t(attribute.components));
+  put_u32le(out, uint32_t(attribute.value_count()));
+  for (float x : attribute.values) put_f32le(out, x);
+  for (uint32_t m : attribute.corner_values) put_u32le(out, m);
+}
+
 // Section 13.10.
 void append_geometry_image(std::vector<uint8_t>* out, const DecodedFile& file) {
   const GeometryImageData& g = file.gim;
@@ -59,6 +71,7 @@ void append_canonical_output(std::vector<uint8_t>* out_bytes, const DecodedFile&
   }
   if (file.loop_level_count == 0 || file.levels.empty()) {
     append_mesh(&out, file.mesh, file.quantized);
+    for (const MeshAttribute& attribute : file.mesh.attributes) append_attribute(&out, attribute);
     return;
   }
   // Section 12.9: the base mesh as in 10.2, then every level in binary64.

@@ -144,7 +144,22 @@ Status decode_order(const uint8_t* payload, size_t size, uint32_t vertex_count, 
   return Status::Ok();
 }
 
-void apply_order(const OrderMaps& maps, Mesh* mesh, std::vector<uint32_t>* quantized) {
+namespace {
+
+// Section 15.6: a per-vertex attribute's values move with their vertices.
+void permute_vertex_values(const std::vector<uint32_t>& vertex_input, MeshAttribute* attribute) {
+  const size_t c = attribute->components;
+  std::vector<float> values(attribute->values.size());
+  for (size_t l = 0; l < vertex_input.size(); ++l)
+    for (size_t a = 0; a < c; ++a) values[c * vertex_input[l] + a] = attribute->values[c * l + a];
+  attribute->values = std::move(values);
+  for (uint32_t& m : attribute->corner_values) m = vertex_input[m];
+}
+
+}  // namespace
+
+void apply_order(const OrderMaps& maps, Mesh* mesh, std::vector<uint32_t>* quantized,
+                 const std::vector<uint8_t>& attribute_per_vertex) {
   const size_t vertices = mesh->vertex_count(), faces = mesh->face_sizes.size();
   auto vertex = [&maps](uint32_t label) { return maps.vertex_input.empty() ? label : maps.vertex_input[label]; };
   auto face = [&maps](size_t j) { return maps.face_input.empty() ? j : size_t(maps.face_input[j]); };
@@ -159,19 +174,31 @@ void apply_order(const OrderMaps& maps, Mesh* mesh, std::vector<uint32_t>* quant
         for (int a = 0; a < 3; ++a) q[3 * size_t(vertex(uint32_t(l))) + a] = (*quantized)[3 * l + a];
       *quantized = std::move(q);
     }
+    for (size_t i = 0; i < mesh->attributes.size(); ++i)
+      if (i < attribute_per_vertex.size() && attribute_per_vertex[i])
+        permute_vertex_values(maps.vertex_input, &mesh->attributes[i]);
   }
   std::vector<uint32_t> sizes(faces);
   for (size_t j = 0; j < faces; ++j) sizes[face(j)] = mesh->face_sizes[j];
   std::vector<uint64_t> out_offset(faces + 1, 0);
   for (size_t i = 0; i < faces; ++i) out_offset[i + 1] = out_offset[i] + sizes[i];
-  std::vector<uint32_t> corners(mesh->corners.size());
+  // Section 4.5 (and 15.6 for the attributes): output corner k of face
+  // face_input[j] is file corner (k + rotation[j]) mod d_j.
+  std::vector<uint64_t> source(mesh->corners.size());
   uint64_t k0 = 0;
   for (size_t j = 0; j < faces; ++j) {
     const uint32_t degree = mesh->face_sizes[j];
     const uint32_t r = maps.rotation.empty() ? 0 : maps.rotation[j];
     const uint64_t out = out_offset[face(j)];
-    for (uint32_t k = 0; k < degree; ++k) corners[out + k] = vertex(mesh->corners[k0 + (uint64_t(k) + r) % degree]);
+    for (uint32_t k = 0; k < degree; ++k) source[out + k] = k0 + (uint64_t(k) + r) % degree;
     k0 += degree;
+  }
+  std::vector<uint32_t> corners(mesh->corners.size());
+  for (size_t k = 0; k < corners.size(); ++k) corners[k] = vertex(mesh->corners[source[k]]);
+  for (MeshAttribute& attribute : mesh->attributes) {
+    std::vector<uint32_t> values(attribute.corner_values.size());
+    for (size_t k = 0; k < values.size(); ++k) values[k] = attribute.corner_values[source[k]];
+    attribute.corner_values = std::move(values);
   }
   mesh->face_sizes = std::move(sizes);
   mesh->corners = std::move(corners);

@@ -29,8 +29,11 @@ struct OrderMaps {
 Status decode_order(const uint8_t* payload, size_t size, uint32_t vertex_count, const Mesh& mesh, OrderMaps* maps);
 
 // Puts the vertices (positions and, if it holds 3 per vertex, `quantized`),
-// the faces and each face's corners into input order. `maps` must come from
-// decode_order on the same mesh.
-void apply_order(const OrderMaps& maps, Mesh* mesh, std::vector<uint32_t>* quantized);
+// the faces and each face's corners into input order, with the mesh's
+// attributes (15.6; attribute_per_vertex[i] != 0 for one of mapping 0, whose
+// values move with the vertices). `maps` must come from decode_order on the
+// same mesh.
+void apply_order(const OrderMaps& maps, Mesh* mesh, std::vector<uint32_t>* quantized,
+                 const std::vector<uint8_t>& attribute_per_vertex = {});
 
 }  // namespace qmc

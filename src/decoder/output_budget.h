@@ -38,6 +38,12 @@ inline uint64_t gim_image_output_bytes(uint64_t pixels, uint64_t planes) {
 inline uint64_t gim_mesh_output_bytes(uint64_t vertices, uint64_t faces, uint64_t corners) {
   return 8 + 16 * vertices + 4 * faces + 4 * corners;
 }
+// 10.2's record of one attribute (section 15): tag, name, kind, C, N, the
+// values and a value index per corner.
+inline uint64_t attribute_output_bytes(uint64_t name_length, uint64_t components, uint64_t values,
+                                       uint64_t corners) {
+  return 8 + 4 + name_length + 2 + 4 + 4 * values * components + 4 * corners;
+}
 
 class OutputBudget {
  public:

@@ -121,27 +121,27 @@ Status decode_deltas(BitReader* bits, size_t size, uint32_t vertex_count, const 
   return Status::Ok();
 }
 
-Status truncated_at(uint32_t v) {
-  return Status(ErrorCode::kTruncated,
-                "POSN: the range-coded stream ends inside vertex " + std::to_string(v) + " (section 14.4)");
-}
-
-// Section 14.4 for one vertex whose candidates and fallback are in p: the
-// mask, then the three residuals; the stream's end is checked after each
-// decision group, before the value it gave is.
-Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, uint32_t v, const uint32_t* top,
-                     VertexPrediction* p, uint32_t* q, int32_t* residual) {
+// Section 14.4 for one vertex (or attribute value, 15.4) whose candidates
+// and fallback are in p: the mask, then the three residuals; the stream's
+// end is checked after each decision group, before the value it gave is.
+Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const PredictedGridNames& names, uint32_t v,
+                     const uint32_t* top, VertexPrediction* p, uint32_t* q, int32_t* residual) {
+  const auto truncated = [&] {
+    return Status(ErrorCode::kTruncated, names.chunk + ": the range-coded stream ends inside " + names.item + " " +
+                                             std::to_string(v) + " (section 14.4)");
+  };
   select_candidates(p, code_candidate_mask(rc, model, p->candidates, 0), top);
-  if (rc->overrun()) return truncated_at(v);
+  if (rc->overrun()) return truncated();
   uint32_t magnitude[3] = {0, 0, 0};
   for (int a = 0; a < 3; ++a) {
     const SignedResidual r = code_position_residual(rc, model, *p, magnitude, a, SignedResidual{});
-    if (rc->overrun()) return truncated_at(v);
+    if (rc->overrun()) return truncated();
     const int64_t value = p->value[a] + (r.negative ? -int64_t(r.magnitude) : int64_t(r.magnitude));
     if (value < 0 || value > int64_t(top[a]))
-      return Status(ErrorCode::kBadSymbol, "POSN: vertex " + std::to_string(v) + " axis " + std::to_string(a) +
-                                               " decodes to " + std::to_string(value) + ", outside 0.." +
-                                               std::to_string(top[a]) + " (section 14.4)");
+      return Status(ErrorCode::kBadSymbol, names.chunk + ": " + names.item + " " + std::to_string(v) + " " +
+                                               names.axis + " " + std::to_string(a) + " decodes to " +
+                                               std::to_string(value) + ", outside 0.." + std::to_string(top[a]) +
+                                               " (section 14.4)");
     q[a] = uint32_t(value);
     magnitude[a] = r.magnitude;
     residual[a] = int32_t(value - p->value[a]);
@@ -149,34 +149,38 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, uint32_t v,
   return Status::Ok();
 }
 
+}  // namespace
+
 // Section 14: each vertex in label order, predicted from the decoded ones
 // (14.3), its decisions range coded (14.4).
-Status decode_predicted(const uint8_t* stream, size_t size, const Mesh& mesh, uint32_t vertex_count,
-                        const QuantizationInfo& info, std::vector<uint32_t>* quantized) {
-  if (!range_stream_justifies(vertex_count, size))  // section 14.1
-    return Status(ErrorCode::kLimitExceeded, "POSN: " + std::to_string(vertex_count) + " vertices for " +
-                                                 std::to_string(size) + " stream bytes, above 512 (L + 8) (section 14.1)");
-  quantized->resize(size_t(vertex_count) * 3);
+Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& faces, uint32_t count,
+                             const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized) {
+  if (!range_stream_justifies(count, size))  // section 14.1
+    return Status(ErrorCode::kLimitExceeded, names.chunk + ": " + std::to_string(count) + " " + names.items +
+                                                 " for " + std::to_string(size) +
+                                                 " stream bytes, above 512 (L + 8) (section 14.1)");
+  quantized->resize(size_t(count) * 3);
   VertexCorners corners;
-  corners.build(vertex_count, mesh.face_sizes, mesh.corners);
-  std::vector<int32_t> residual(3 * size_t(vertex_count));
-  std::vector<PositionResidualModel> model(1, PositionResidualModel(info.top.data()));
+  corners.build(count, faces.face_sizes, faces.corners);
+  std::vector<int32_t> residual(3 * size_t(count));
+  std::vector<PositionResidualModel> model(1, PositionResidualModel(top));
   RangeDecoder rc(stream, size);
-  if (rc.bad_start()) return bad_payload("the range coder's first four bytes are 0xFFFFFFFF (section 13.5.2)");
+  if (rc.bad_start())
+    return Status(ErrorCode::kBadChunkPayload,
+                  names.chunk + ": the range coder's first four bytes are 0xFFFFFFFF (section 13.5.2)");
   VertexPrediction p;
-  for (uint32_t v = 0; v < vertex_count; ++v) {
-    predict_vertex(corners, v, quantized->data(), residual.data(), info.top.data(), &p);
-    if (Status s = decode_vertex(&rc, &model[0], v, info.top.data(), &p, &(*quantized)[3 * size_t(v)],
+  for (uint32_t v = 0; v < count; ++v) {
+    predict_vertex(corners, v, quantized->data(), residual.data(), top, &p);
+    if (Status s = decode_vertex(&rc, &model[0], names, v, top, &p, &(*quantized)[3 * size_t(v)],
                                  &residual[3 * size_t(v)]);
         !s.ok())
       return s;
   }
   if (rc.unread() != 0)
-    return bad_payload(std::to_string(rc.unread()) + " bytes after the range-coded data (section 13.5.2)");
+    return Status(ErrorCode::kBadChunkPayload, names.chunk + ": " + std::to_string(rc.unread()) +
+                                                   " bytes after the range-coded data (section 13.5.2)");
   return Status::Ok();
 }
-
-}  // namespace
 
 void dequantization_steps(const QuantizationInfo& info, double lo[3], double step[3]) {
   for (int a = 0; a < 3; ++a) {
@@ -192,7 +196,10 @@ Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, 
   quantized->clear();
   positions->clear();
   if (info->method == 1) {
-    if (Status s = decode_predicted(in.cursor(), in.remaining(), faces, vertex_count, *info, quantized); !s.ok())
+    const PredictedGridNames names{"POSN", "vertex", "vertices", "axis"};
+    if (Status s = decode_predicted_grid(in.cursor(), in.remaining(), faces, vertex_count, info->top.data(), names,
+                                         quantized);
+        !s.ok())
       return s;
   } else {
     BitReader bits(in.cursor(), in.remaining());

@@ -3,6 +3,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "qmc/decoder.h"
@@ -16,6 +17,20 @@ namespace qmc {
 // stored quantization parameters.
 Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, uint32_t vertex_count,
                         QuantizationInfo* info, std::vector<uint32_t>* quantized, std::vector<float>* positions);
+
+// How the messages of decode_predicted_grid name the chunk and its items.
+struct PredictedGridNames {
+  std::string chunk;  // "POSN", or "aTTR \"normal\""
+  const char* item;   // "vertex" / "value"
+  const char* items;  // "vertices" / "values"
+  const char* axis;   // "axis" / "component"
+};
+
+// Sections 14.2 - 14.4 over any faces whose corners are below `count`: the
+// integers of POSN method 1 or of an aTTR's values (15.4), 3 per item, from
+// the range-coded stream that ends the payload.
+Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& faces, uint32_t count,
+                             const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized);
 
 // Sections 6.4 and 14.1: per axis, the binary64 min and step of x = min + q * step.
 void dequantization_steps(const QuantizationInfo& info, double lo[3], double step[3]);

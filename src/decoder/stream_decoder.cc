@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bitio/byte_io.h"
+#include "decoder/attribute_decoder.h"
 #include "decoder/chunk_frame.h"
 #include "decoder/connectivity_decoder.h"
 #include "decoder/gim_decoder.h"
@@ -45,6 +46,7 @@ struct StreamDecoder::State {
   Status check_level_limits(const std::string& what, uint64_t level, uint64_t vertices, uint64_t faces, bool charge);
   Status handle_positions(const uint8_t* payload, uint32_t length);
   Status handle_order(const uint8_t* payload, uint32_t length);
+  Status handle_attribute(const uint8_t* payload, uint32_t length, bool* skipped);
   Status handle_loop(const uint8_t* payload, uint32_t length);
   Status handle_level(const uint8_t* payload, uint32_t length);
   Status handle_end(uint32_t length);
@@ -129,7 +131,7 @@ Status StreamDecoder::State::handle_chunk(uint32_t type, const uint8_t* payload,
   if (!header_seen && type != kChunkHeader)
     return order_error("the first chunk must be QHDR, found " + chunk_type_name(type));
   if (gim.active() && (type == kChunkConnectivity || type == kChunkPositions || type == kChunkLoop ||
-                       type == kChunkLevel || type == kChunkOrder))
+                       type == kChunkLevel || type == kChunkOrder || type == kChunkAttribute))
     return order_error(chunk_type_name(type) + " in a geometry-image file (section 13.1)");
   Status s;
   switch (type) {
@@ -139,6 +141,12 @@ Status StreamDecoder::State::handle_chunk(uint32_t type, const uint8_t* payload,
     case kChunkEnd: s = handle_end(length); break;
     case kChunkText: file.texts.emplace_back(reinterpret_cast<const char*>(payload), length); break;
     case kChunkOrder: s = handle_order(payload, length); break;
+    case kChunkAttribute: {
+      bool skipped = false;
+      s = handle_attribute(payload, length, &skipped);
+      info.known = !skipped;  // 15.1: a mapping or coding of a later revision
+      break;
+    }
     case kChunkLoop: s = handle_loop(payload, length); break;
     case kChunkLevel: s = handle_level(payload, length); break;
     case kChunkGeometryImage:
@@ -230,10 +238,28 @@ Status StreamDecoder::State::handle_order(const uint8_t* payload, uint32_t lengt
   if (order_seen) return order_error("a second oRDR");
   OrderMaps maps;
   if (Status s = decode_order(payload, length, vertex_count, file.mesh, &maps); !s.ok()) return s;
-  apply_order(maps, &file.mesh, &file.quantized);
+  std::vector<uint8_t> per_vertex;  // 15.6: mapping 0's values move with their vertices
+  for (const AttributeCoding& c : file.attribute_codings) per_vertex.push_back(c.mapping == 0 ? 1 : 0);
+  apply_order(maps, &file.mesh, &file.quantized, per_vertex);
   file.order_restored = true;
   file.order_flags = maps.flags;
   order_seen = true;
+  return Status::Ok();
+}
+
+// Section 15.1: after POSN, before oRDR, not in a progressive file.
+Status StreamDecoder::State::handle_attribute(const uint8_t* payload, uint32_t length, bool* skipped) {
+  if (!positions_seen) return order_error("aTTR before POSN");
+  if (file.loop_level_count > 0) return order_error("aTTR in a progressive file (section 15.1)");
+  if (order_seen) return order_error("aTTR after oRDR (section 15.1)");
+  MeshAttribute attribute;
+  AttributeCoding coding;
+  if (Status s = decode_attribute(payload, length, file.mesh, vertex_count, file.mesh.attributes, &budget,
+                                  &attribute, &coding, skipped);
+      !s.ok() || *skipped)
+    return s;
+  file.mesh.attributes.push_back(std::move(attribute));
+  file.attribute_codings.push_back(coding);
   return Status::Ok();
 }
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "bitio/byte_io.h"
+#include "encoder/attribute_encoder.h"
 #include "encoder/chunk_writer.h"
 #include "encoder/gim_encoder.h"
 #include "encoder/encoder_internal.h"
@@ -23,6 +24,19 @@ namespace qmc {
 namespace {
 
 Status invalid(const std::string& message) { return Status(ErrorCode::kInvalidArgument, message); }
+
+// Section 15: what aTTR can carry, and only in a plain file.
+Status validate_attributes(const Mesh& mesh, const EncodeOptions& options) {
+  for (int bits : {options.texcoord_bits, options.normal_bits, options.colour_bits, options.generic_bits})
+    if (bits < 1 || bits > 30) return invalid("attribute bits must be in 1..30, got " + std::to_string(bits));
+  if (mesh.attributes.empty()) return Status::Ok();
+  if (options.progressive_levels > 0 || options.gim.size > 0)
+    return invalid(std::string("a ") + (options.progressive_levels > 0 ? "progressive file" : "geometry image") +
+                   " cannot carry attributes (section 15.1): drop them first");
+  for (size_t i = 0; i < mesh.attributes.size(); ++i)
+    if (std::string why = attribute_problem(mesh, i, options.exact_attributes); !why.empty()) return invalid(why);
+  return Status::Ok();
+}
 
 Status validate(const Mesh& mesh, const EncodeOptions& options) {
   if (options.position_bits < kMinPositionBits || options.position_bits > kMaxPositionBits)
@@ -73,7 +87,7 @@ Status validate(const Mesh& mesh, const EncodeOptions& options) {
     return invalid("a progressive file's base takes section 6.1's grid of position_bits: no step or max error");
   if (options.quad_coding < -1 || options.quad_coding >= kQuadCodingCount)
     return invalid("quad coding must be -1 (smallest) or 0.." + std::to_string(kQuadCodingCount - 1));
-  return Status::Ok();
+  return validate_attributes(mesh, options);
 }
 
 std::vector<float> permuted_positions(const Mesh& mesh, const std::vector<uint32_t>& file_vertex) {
@@ -207,6 +221,40 @@ uint8_t minor_version_for(const FileConnectivity& conn, int position_method) {
   return method == ConnectivityMethod::kPolygon ? 2 : method == ConnectivityMethod::kQuad ? 1 : 0;
 }
 
+// Section 15.7: the input corner of every file corner.
+Status corner_sources(const Mesh& mesh, const FileConnectivity& conn, std::vector<uint64_t>* source) {
+  std::vector<uint32_t> rotation;
+  if (Status s = face_rotations(mesh, conn.mesh, conn.file_vertex, conn.face_source, &rotation); !s.ok()) return s;
+  std::vector<uint64_t> input_offset(mesh.face_count() + 1, 0);
+  for (size_t f = 0; f < mesh.face_count(); ++f) input_offset[f + 1] = input_offset[f] + mesh.face_sizes[f];
+  source->resize(conn.mesh.corners.size());
+  uint64_t k0 = 0;
+  for (size_t j = 0; j < conn.mesh.face_sizes.size(); ++j) {
+    const uint32_t d = conn.mesh.face_sizes[j];
+    for (uint32_t i = 0; i < d; ++i) (*source)[k0 + i] = input_offset[conn.face_source[j]] + (i + d - rotation[j]) % d;
+    k0 += d;
+  }
+  return Status::Ok();
+}
+
+// Section 15: an aTTR chunk per attribute, right after POSN.
+Status add_attributes(const Mesh& mesh, const EncodeOptions& options, const FileConnectivity& conn,
+                      std::vector<uint8_t>* out, EncodeStats* st) {
+  if (mesh.attributes.empty()) return Status::Ok();
+  std::vector<uint64_t> source;
+  if (Status s = corner_sources(mesh, conn, &source); !s.ok()) return s;
+  for (const MeshAttribute& attribute : mesh.attributes) {
+    std::vector<uint8_t> payload;
+    AttributeStats stats;
+    if (Status s = encode_attribute(attribute, conn.mesh, mesh.vertex_count(), source, options, &payload, &stats);
+        !s.ok())
+      return s;
+    add_chunk(out, st, kChunkAttribute, payload);
+    st->attributes.push_back(stats);
+  }
+  return Status::Ok();
+}
+
 Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* out, EncodeStats* stats) {
   if (Status s = validate(mesh, options); !s.ok()) return s;
   EncodeStats local;
@@ -230,6 +278,7 @@ Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_
     add_chunk(out, &st, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));
   add_chunk(out, &st, kChunkConnectivity, conn.payload);
   add_chunk(out, &st, kChunkPositions, positions);
+  if (Status s = add_attributes(mesh, options, conn, out, &st); !s.ok()) return s;
   if (options.keep_order) {  // section 4.5: right after POSN, only if the coder order differs
     std::vector<uint8_t> order;
     if (Status s = encode_order(mesh, conn.mesh, conn.file_vertex, conn.face_source, &order); !s.ok()) return s;

@@ -86,9 +86,8 @@ uint32_t rotation_after_min(const uint32_t* in, const uint32_t* file, const std:
 
 }  // namespace
 
-Status encode_order(const Mesh& input, const Mesh& file_mesh, const std::vector<uint32_t>& file_vertex,
-                    const std::vector<uint32_t>& face_source, std::vector<uint8_t>* payload) {
-  payload->clear();
+Status face_rotations(const Mesh& input, const Mesh& file_mesh, const std::vector<uint32_t>& file_vertex,
+                      const std::vector<uint32_t>& face_source, std::vector<uint32_t>* rotation) {
   const size_t vertices = input.vertex_count(), faces = input.face_count();
   if (file_vertex.size() != vertices || !is_permutation(file_vertex))
     return internal("the file's vertex order is not a permutation of the input's vertices");
@@ -96,10 +95,7 @@ Status encode_order(const Mesh& input, const Mesh& file_mesh, const std::vector<
     return internal("the file's face order is not a permutation of the input's faces");
   std::vector<uint64_t> input_offset(faces + 1, 0);
   for (size_t f = 0; f < faces; ++f) input_offset[f + 1] = input_offset[f] + input.face_sizes[f];
-
-  // Rotations: the smallest s such that the input face starts at file corner (m + s) mod d.
-  std::vector<uint32_t> offset_from_min(faces, 0);
-  bool rotated = false;
+  rotation->assign(faces, 0);
   uint64_t k0 = 0;
   std::vector<uint32_t> border;
   for (size_t j = 0; j < faces; ++j) {
@@ -117,8 +113,30 @@ Status encode_order(const Mesh& input, const Mesh& file_mesh, const std::vector<
     const uint32_t s = rotation_after_min(in, file, file_vertex, degree, m, &border);
     if (s == kNoRotation)
       return internal("file face " + std::to_string(j) + " is no rotation of input face " + std::to_string(src));
-    offset_from_min[j] = s;
-    rotated = rotated || (uint64_t(m) + s) % degree != 0;
+    (*rotation)[j] = uint32_t((uint64_t(m) + s) % degree);
+  }
+  return Status::Ok();
+}
+
+Status encode_order(const Mesh& input, const Mesh& file_mesh, const std::vector<uint32_t>& file_vertex,
+                    const std::vector<uint32_t>& face_source, std::vector<uint8_t>* payload) {
+  payload->clear();
+  const size_t vertices = input.vertex_count(), faces = input.face_count();
+  std::vector<uint32_t> rotation;
+  if (Status s = face_rotations(input, file_mesh, file_vertex, face_source, &rotation); !s.ok()) return s;
+  // Rotations: the smallest s such that the input face starts at file corner (m + s) mod d.
+  std::vector<uint32_t> offset_from_min(faces, 0);
+  bool rotated = false;
+  uint64_t k0 = 0;
+  for (size_t j = 0; j < faces; ++j) {
+    const uint32_t degree = file_mesh.face_sizes[j];
+    const uint32_t* file = &file_mesh.corners[k0];
+    k0 += degree;
+    uint32_t m = 0;
+    for (uint32_t i = 1; i < degree; ++i)
+      if (file_vertex[file[i]] < file_vertex[file[m]]) m = i;
+    offset_from_min[j] = (rotation[j] + degree - m) % degree;
+    rotated = rotated || rotation[j] != 0;
   }
 
   const bool reorder_faces = !is_identity(face_source), relabel = !is_identity(file_vertex);

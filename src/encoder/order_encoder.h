@@ -17,6 +17,13 @@ namespace qmc {
 // corners against its input face; no match is an internal error (the file
 // face is not its input face rotated). *payload is left empty when all
 // three maps are identities: the file then needs no oRDR chunk.
+// Section 4.5's rotation of every file face: input corner k of face
+// face_source[j] is file corner (k + rotation[j]) mod d_j (for a face that
+// repeats a vertex, the one oRDR writes). An internal error if a file face
+// is not its input face rotated.
+Status face_rotations(const Mesh& input, const Mesh& file_mesh, const std::vector<uint32_t>& file_vertex,
+                      const std::vector<uint32_t>& face_source, std::vector<uint32_t>* rotation);
+
 Status encode_order(const Mesh& input, const Mesh& file_mesh, const std::vector<uint32_t>& file_vertex,
                     const std::vector<uint32_t>& face_source, std::vector<uint8_t>* payload);
 

@@ -260,6 +260,35 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
 
 }  // namespace
 
+std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const uint32_t top[3], const Mesh& faces,
+                                           PositionStats* stats, CandidateChoice choice) {
+  const uint32_t n = uint32_t(q.size() / 3);
+  VertexCorners corners;
+  corners.build(n, faces.face_sizes, faces.corners);
+  std::vector<int32_t> residual(3 * size_t(n));
+  std::vector<PositionResidualModel> model(1, PositionResidualModel(top));
+  MeteredRangeEncoder rc;
+  PositionStats local;
+  PositionStats& st = stats ? *stats : local;
+  VertexPrediction p;
+  for (uint32_t v = 0; v < n; ++v) {
+    predict_vertex(corners, v, q.data(), residual.data(), top, &p);
+    const double before = rc.meter.bits;
+    const unsigned mask = best_candidates(&q[3 * size_t(v)], top, &model[0], choice, &p);
+    code_candidate_mask(&rc, &model[0], p.candidates, mask);
+    uint32_t magnitude[3] = {0, 0, 0};
+    for (int a = 0; a < 3; ++a) {
+      const int64_t r = int64_t(q[3 * size_t(v) + a]) - p.value[a];
+      magnitude[a] = uint32_t(r < 0 ? -r : r);
+      residual[3 * size_t(v) + a] = int32_t(r);
+      code_position_residual(&rc, &model[0], p, magnitude, a, SignedResidual{magnitude[a], r < 0});
+    }
+    ++st.vertices_by_kind[int(p.kind)];
+    st.bits_by_kind[int(p.kind)] += rc.meter.bits - before;
+  }
+  return rc.rc.finish();
+}
+
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
                                                 PositionStats* stats, CandidateChoice choice) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
@@ -271,31 +300,7 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
   for (int a = 0; a < 3; ++a) put_f32le(&payload, positions.min[a]);
   for (int a = 0; a < (one_step ? 1 : 3); ++a) put_f64le(&payload, positions.step[a]);
   for (int a = 0; a < 3; ++a) put_varint(&payload, positions.top[a]);
-
-  VertexCorners corners;
-  corners.build(n, faces.face_sizes, faces.corners);
-  std::vector<int32_t> residual(3 * size_t(n));
-  std::vector<PositionResidualModel> model(1, PositionResidualModel(positions.top.data()));
-  MeteredRangeEncoder rc;
-  PositionStats local;
-  PositionStats& st = stats ? *stats : local;
-  VertexPrediction p;
-  for (uint32_t v = 0; v < n; ++v) {
-    predict_vertex(corners, v, positions.q.data(), residual.data(), positions.top.data(), &p);
-    const double before = rc.meter.bits;
-    const unsigned mask = best_candidates(&positions.q[3 * size_t(v)], positions.top.data(), &model[0], choice, &p);
-    code_candidate_mask(&rc, &model[0], p.candidates, mask);
-    uint32_t magnitude[3] = {0, 0, 0};
-    for (int a = 0; a < 3; ++a) {
-      const int64_t r = int64_t(positions.q[3 * size_t(v) + a]) - p.value[a];
-      magnitude[a] = uint32_t(r < 0 ? -r : r);
-      residual[3 * size_t(v) + a] = int32_t(r);
-      code_position_residual(&rc, &model[0], p, magnitude, a, SignedResidual{magnitude[a], r < 0});
-    }
-    ++st.vertices_by_kind[int(p.kind)];
-    st.bits_by_kind[int(p.kind)] += rc.meter.bits - before;
-  }
-  const std::vector<uint8_t> stream = rc.rc.finish();
+  const std::vector<uint8_t> stream = encode_predicted_grid(positions.q, positions.top.data(), faces, stats, choice);
   if (!range_stream_justifies(n, stream.size())) return {};
   payload.insert(payload.end(), stream.begin(), stream.end());
   return payload;

@@ -35,6 +35,12 @@ Status quantize_positions(const std::vector<float>& positions, const EncodeOptio
 // Method 0 (section 6.3); positions must be on a per-axis grid.
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions);
 
+// Sections 14.2 - 14.4 over any faces whose corners are below q.size() / 3:
+// the range-coded stream of POSN method 1 or of an aTTR's values (15.4).
+// The caller checks 14.1's bound on the stream's length.
+std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const uint32_t top[3], const Mesh& faces,
+                                           PositionStats* stats, CandidateChoice choice);
+
 // Method 1 (section 14) over the file's faces; stats may be null. Empty
 // when the vertices cost too little for 14.1's bound (all on one point).
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,

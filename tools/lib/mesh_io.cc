@@ -280,6 +280,26 @@ void reserve_bounded(std::vector<T>* items, uint64_t claimed, uint64_t bytes_lef
 // ---------------------------------------------------------------------------
 // OBJ
 
+// The vt or vn lines of an OBJ file (3 numbers each, missing ones 0) and the
+// index each face corner gives, 0-based, resolved against the lines so far.
+struct ObjValues {
+  std::vector<float> values;
+  uint32_t components = 0;  // the most numbers a line needs (vt: trailing zeros dropped)
+  std::vector<int64_t> indices;
+  std::vector<uint64_t> lines;  // of each index, for messages
+
+  Status refer(int64_t value, uint64_t line, std::string_view file) {
+    const int64_t stored = int64_t(values.size() / 3);
+    if (value == 0) return invalid(at_line(file, line) + "index 0 is invalid (OBJ indices start at 1)");
+    const int64_t index = value < 0 ? stored + value : value - 1;
+    if (index < 0)
+      return invalid(at_line(file, line) + "relative index " + std::to_string(value) + " reaches before the first");
+    indices.push_back(index);
+    lines.push_back(line);
+    return Status::Ok();
+  }
+};
+
 class ObjParser {
  public:
   ObjParser(std::string_view name, WarningTally* warnings) : name_(name), warnings_(warnings) {}
@@ -307,13 +327,15 @@ class ObjParser {
     if (first_statement_line_ != 0 && mesh->positions.empty() && mesh->face_sizes.empty())
       return invalid(at_line(name_, first_statement_line_) +
                      "no vertex (v) or face (f) line in the whole file, which starts " + first_statement_);
-    warnings_->add("ignored texture coordinate indices on face corners", texture_refs_);
-    warnings_->add("ignored normal indices on face corners", normal_refs_);
     if (largest_index_ != kNoIndex && largest_index_ >= mesh->vertex_count()) {
       return invalid(at_line(name_, largest_index_line_) + "vertex index " + std::to_string(largest_index_ + 1) +
                      " is out of range (the file has " + std::to_string(mesh->vertex_count()) + " vertices)");
     }
-    return Status::Ok();
+    if (Status s = finish_attribute(&texcoords_, "texcoord", AttributeKind::kTextureCoordinate, "texture coordinate (vt)",
+                                    mesh);
+        !s.ok())
+      return s;
+    return finish_attribute(&normals_, "normal", AttributeKind::kNormal, "normal (vn)", mesh);
   }
 
  private:
@@ -348,8 +370,6 @@ class ObjParser {
   // information all the same, so they never vanish silently either.
   static const char* ignored_statement_note(std::string_view keyword) {
     static constexpr std::pair<std::string_view, const char*> kNotes[] = {
-        {"vt", "ignored texture coordinate (vt) lines"},
-        {"vn", "ignored normal (vn) lines"},
         {"vp", "ignored parameter-space vertex (vp) lines"},
         {"l", "ignored polyline (l) elements"},
         {"p", "ignored point (p) elements"},
@@ -375,6 +395,8 @@ class ObjParser {
     std::string_view keyword = tokens_[0];
     if (keyword == "v") return parse_vertex(line, mesh);
     if (keyword == "f") return parse_face(line, mesh);
+    if (keyword == "vt") return parse_values(line, 1, 3, &texcoords_);
+    if (keyword == "vn") return parse_values(line, 3, 3, &normals_);
     // "s off" and "s 0" state the default (no smoothing group): nothing to carry.
     if (keyword == "s" && tokens_.size() == 2 && (tokens_[1] == "off" || tokens_[1] == "0")) return Status::Ok();
     if (const char* note = ignored_statement_note(keyword)) {
@@ -386,6 +408,56 @@ class ObjParser {
     } else {
       warnings_->add("ignored lines with other unknown keywords");
     }
+    return Status::Ok();
+  }
+
+  // vt / vn: `min` .. `max` numbers (vt's v and w default to 0).
+  Status parse_values(uint64_t line, size_t min, size_t max, ObjValues* out) {
+    const size_t count = tokens_.size() - 1;
+    if (count < min || count > max)
+      return invalid(at_line(name_, line) + quoted(tokens_[0]) + " line has " + std::to_string(count) +
+                     " number(s); " + std::to_string(min) + ".." + std::to_string(max) + " are allowed");
+    for (size_t i = 0; i < max; ++i) {
+      float value = 0;
+      if (i < count)
+        if (std::string problem = parse_coordinate(tokens_[1 + i], &value); !problem.empty())
+          return invalid(at_line(name_, line) + problem + " in " + quoted(tokens_[0]) + " line");
+      out->values.push_back(value);
+      if (value != 0) out->components = std::max(out->components, uint32_t(i + 1));
+    }
+    out->components = std::max<uint32_t>(out->components, uint32_t(std::min<size_t>(count, 2)));
+    return Status::Ok();
+  }
+
+  // Section 15 of the spec carries an attribute on every corner or none: a
+  // file whose faces give some corners an index and others none keeps the
+  // values out, with a note (qmc encode then asks for --drop-unsupported).
+  Status finish_attribute(ObjValues* in, const char* name, AttributeKind kind, const char* what, Mesh* mesh) {
+    const size_t stored = in->values.size() / 3;
+    if (in->indices.empty()) {
+      warnings_->add(std::string("ignored ") + what + " lines no face corner refers to", stored);
+      return Status::Ok();
+    }
+    if (in->indices.size() != mesh->corners.size()) {
+      warnings_->note("ignored " + std::string(what) + " values: only " + std::to_string(in->indices.size()) + " of " +
+                      std::to_string(mesh->corners.size()) + " face corners refer to one");
+      return Status::Ok();
+    }
+    MeshAttribute a;
+    a.name = name;
+    a.kind = kind;
+    a.components = kind == AttributeKind::kNormal ? 3 : std::max<uint32_t>(in->components, 1);
+    for (size_t i = 0; i < stored; ++i)
+      for (uint32_t c = 0; c < a.components; ++c) a.values.push_back(in->values[3 * i + c]);
+    a.corner_values.resize(in->indices.size());
+    for (size_t k = 0; k < in->indices.size(); ++k) {
+      const int64_t index = in->indices[k];
+      if (index >= int64_t(stored))
+        return invalid(at_line(name_, in->lines[k]) + what + " index " + std::to_string(index + 1) +
+                       " is out of range (the file has " + std::to_string(stored) + ")");
+      a.corner_values[k] = uint32_t(index);
+    }
+    mesh->attributes.push_back(std::move(a));
     return Status::Ok();
   }
 
@@ -441,12 +513,14 @@ class ObjParser {
       std::string_view texture = rest.substr(0, second);
       bool has_normal = second != std::string_view::npos;
       std::string_view normal = has_normal ? rest.substr(second + 1) : std::string_view();
-      int64_t ignored = 0;
-      bool texture_ok = texture.empty() ? has_normal : parse_int(texture, &ignored);
-      bool normal_ok = !has_normal || parse_int(normal, &ignored);
+      int64_t texture_index = 0, normal_index = 0;
+      bool texture_ok = texture.empty() ? has_normal : parse_int(texture, &texture_index);
+      bool normal_ok = !has_normal || parse_int(normal, &normal_index);
       if (!texture_ok || !normal_ok) return invalid(at_line(name_, line) + "malformed face corner " + quoted(token));
-      if (!texture.empty()) ++texture_refs_;
-      if (has_normal) ++normal_refs_;
+      if (!texture.empty())
+        if (Status s = texcoords_.refer(texture_index, line, name_); !s.ok()) return s;
+      if (has_normal)
+        if (Status s = normals_.refer(normal_index, line, name_); !s.ok()) return s;
     }
     int64_t value = 0;
     if (!parse_int(vertex, &value)) return invalid(at_line(name_, line) + "unparsable vertex index " + quoted(token));
@@ -477,8 +551,7 @@ class ObjParser {
   std::string_view name_;
   WarningTally* warnings_;
   std::vector<std::string_view> tokens_;
-  uint64_t texture_refs_ = 0;
-  uint64_t normal_refs_ = 0;
+  ObjValues texcoords_, normals_;
   size_t unknown_kinds_ = 0;
   uint64_t largest_index_ = kNoIndex;
   uint64_t largest_index_line_ = 0;
@@ -1534,17 +1607,47 @@ void put_vertex_line(const Mesh& mesh, size_t v, TextSink* out) {
   out->put("\n");
 }
 
+// The attribute OBJ writes as vt (kind texture coordinate) or vn (normal), or null.
+const MeshAttribute* obj_attribute(const Mesh& mesh, AttributeKind kind) {
+  for (const MeshAttribute& a : mesh.attributes)
+    if (a.kind == kind) return &a;
+  return nullptr;
+}
+
+void put_value_lines(const MeshAttribute* a, const char* keyword, TextSink* out) {
+  if (a == nullptr) return;
+  for (size_t i = 0; i < a->value_count(); ++i) {
+    out->put(keyword);
+    for (uint32_t c = 0; c < a->components; ++c) {
+      out->put(" ");
+      out->put_float(a->values[a->components * i + c]);
+    }
+    out->put("\n");
+  }
+}
+
+// Corners as v, v/t, v//n or v/t/n (1-based).
 void write_obj(const Mesh& mesh, TextSink* out) {
   for (size_t v = 0; v < mesh.vertex_count(); ++v) {
     out->put("v");
     put_vertex_line(mesh, v, out);
   }
+  const MeshAttribute* texcoord = obj_attribute(mesh, AttributeKind::kTextureCoordinate);
+  const MeshAttribute* normal = obj_attribute(mesh, AttributeKind::kNormal);
+  put_value_lines(texcoord, "vt", out);
+  put_value_lines(normal, "vn", out);
   size_t corner = 0;
   for (uint32_t size : mesh.face_sizes) {
     out->put("f");
-    for (uint32_t i = 0; i < size; ++i) {
+    for (uint32_t i = 0; i < size; ++i, ++corner) {
       out->put(" ");
-      out->put_uint(uint64_t{mesh.corners[corner++]} + 1);
+      out->put_uint(uint64_t{mesh.corners[corner]} + 1);
+      if (texcoord || normal) out->put("/");
+      if (texcoord) out->put_uint(uint64_t{texcoord->corner_values[corner]} + 1);
+      if (normal) {
+        out->put("/");
+        out->put_uint(uint64_t{normal->corner_values[corner]} + 1);
+      }
     }
     out->put("\n");
   }
@@ -1599,6 +1702,19 @@ void write_ply(const Mesh& mesh, TextSink* out) {
     out->put("\n");
   }
   put_face_lines(mesh, out);
+}
+
+// What the format cannot write is an error, never a silent loss: OBJ writes
+// one texture-coordinate and one normal attribute, OFF and PLY none yet.
+Status check_attributes_fit(const Mesh& mesh, const std::string& format) {
+  for (const MeshAttribute& a : mesh.attributes) {
+    const bool obj_kind = a.kind == AttributeKind::kTextureCoordinate || a.kind == AttributeKind::kNormal;
+    if (format == "obj" && obj_kind && obj_attribute(mesh, a.kind) == &a) continue;
+    return invalid("the mesh has attribute \"" + a.name + "\", which ." + format +
+                   (format == "obj" ? " cannot hold besides the first texture coordinates and normals"
+                                    : " output cannot hold; write .obj (texture coordinates, normals) or .qmc"));
+  }
+  return Status::Ok();
 }
 
 // Writing a mesh we could not read back would only move the failure later.
@@ -1658,6 +1774,7 @@ Status write_mesh_to_memory(const Mesh& mesh, std::string_view format, std::stri
   if (!is_writable_format(lowered)) return invalid("cannot write format " + quoted(format) + " (expected obj, off or ply)");
   if (text == nullptr) return invalid("write_mesh_to_memory: text is null");
   Status status = validate_for_writing(mesh);
+  if (status.ok()) status = check_attributes_fit(mesh, lowered);
   if (!status.ok()) return status;
   TextSink sink(nullptr);
   write_any(mesh, lowered, &sink);
@@ -1669,6 +1786,7 @@ Status write_mesh(const std::string& path, const Mesh& mesh) {
   std::string format = extension_of(path);
   if (!is_writable_format(format)) return invalid(path + ": cannot write this extension (expected .obj, .off or .ply)");
   Status status = validate_for_writing(mesh);
+  if (status.ok()) status = check_attributes_fit(mesh, format);
   if (!status.ok()) return Status(status.code(), path + ": " + status.message());
   return write_file_atomically(path, [&](std::FILE* file) {
     TextSink sink(file);

@@ -15,9 +15,11 @@
 
 namespace qmc::tools {
 
-// Reads by extension (case-insensitive): .obj .off .ply .stl.
-// Anything in the file that a qmc::Mesh does not carry (texture coordinates,
-// normals, colours, 'l'/'p' elements, extra PLY elements or properties, STL
+// Reads by extension (case-insensitive): .obj .off .ply .stl. OBJ texture
+// coordinates and normals with their per-corner indices (f v/vt/vn) become
+// the attributes "texcoord" and "normal" (spec section 15).
+// Anything in the file that a qmc::Mesh does not carry (colours, groups,
+// materials, attributes on only some corners, 'l'/'p' elements, extra PLY elements or properties, STL
 // vertex merging) is reported in *warnings as one short counted sentence per
 // kind; `warnings` may be null. Unreadable files give ErrorCode::kIo,
 // malformed content ErrorCode::kInvalidArgument with a message naming the
@@ -32,7 +34,9 @@ qmc::Status read_mesh_from_memory(std::string_view text_or_bytes, std::string_vi
 
 // Writes .obj .off .ply (ASCII) by extension, faces exactly as stored. Floats
 // are printed like "%.9g" (locale-independent), so they read back bit-exact.
-// A mesh that violates the qmc::Mesh invariants gives kInvalidArgument.
+// OBJ writes the first texture-coordinate and normal attributes as vt / vn
+// with per-corner indices. A mesh that violates the qmc::Mesh invariants,
+// or has an attribute the format cannot hold, gives kInvalidArgument.
 qmc::Status write_mesh(const std::string& path, const qmc::Mesh& mesh);
 
 // As write_mesh, into *text; `format` is "obj", "off" or "ply".

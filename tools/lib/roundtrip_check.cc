@@ -1,6 +1,8 @@
 #include "roundtrip_check.h"
 
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "encoder/polygon_connectivity_encoder.h"
@@ -60,19 +62,81 @@ Correspondence identity_correspondence(const Mesh& original) {
 
 namespace {
 
-// Rotation (never reversal) of `source` relabelled that equals `decoded`.
-bool same_cycle(const uint32_t* source, const uint32_t* decoded, uint32_t n, const std::vector<uint32_t>& label,
-                bool exact) {
+// One unit in the last place of a binary32 of magnitude |x|.
+double float_ulp(double x) {
+  const float f = float(std::fabs(x));
+  return double(std::nextafter(f, std::numeric_limits<float>::infinity())) - double(f);
+}
+
+// Section 15: each attribute's allowed difference per component: half its
+// grid's step plus binary32 rounding, or 0 (bit for bit) for exact values.
+std::vector<std::array<double, 3>> attribute_tolerances(const DecodedFile& decoded) {
+  std::vector<std::array<double, 3>> out;
+  for (const AttributeCoding& c : decoded.attribute_codings) {
+    std::array<double, 3> t{};
+    for (int a = 0; a < 3 && c.coding == 0; ++a) {
+      const double last = double(c.origin[a]) + double(c.top[a]) * c.step[a];
+      t[a] = 0.5 * c.step[a] * (1 + 1e-9) + float_ulp(std::fmax(std::fabs(c.origin[a]), std::fabs(last)));
+    }
+    out.push_back(t);
+  }
+  return out;
+}
+
+bool same_value(float input, float decoded, double tolerance) {
+  if (tolerance == 0) return std::memcmp(&input, &decoded, sizeof(float)) == 0;
+  return std::fabs(double(input) - double(decoded)) <= tolerance;
+}
+
+// Whether decoded corner k + i carries source corner s + (i + r) mod n's
+// value of every attribute.
+bool same_attributes(const Mesh& original, const DecodedFile& decoded, size_t s, size_t k, uint32_t n, uint32_t r,
+                     const std::vector<std::array<double, 3>>& tolerance) {
+  for (size_t j = 0; j < original.attributes.size(); ++j) {
+    const MeshAttribute& in = original.attributes[j];
+    const MeshAttribute& out = decoded.mesh.attributes[j];
+    for (uint32_t i = 0; i < n; ++i) {
+      const size_t x = in.corner_values[s + (i + r) % n], y = out.corner_values[k + i];
+      for (uint32_t a = 0; a < in.components; ++a)
+        if (!same_value(in.values[in.components * x + a], out.values[out.components * y + a], tolerance[j][a]))
+          return false;
+    }
+  }
+  return true;
+}
+
+// Rotation (never reversal) of `source` relabelled that equals `decoded`,
+// with the same attributes at every corner.
+bool same_cycle(const Mesh& original, const DecodedFile& decoded, size_t s, size_t k, uint32_t n,
+                const std::vector<uint32_t>& label, bool exact, const std::vector<std::array<double, 3>>& tolerance) {
+  const uint32_t* source = &original.corners[s];
+  const uint32_t* corners = &decoded.mesh.corners[k];
   for (uint32_t r = 0; r < (exact ? 1u : n); ++r) {
     uint32_t i = 0;
-    while (i < n && label[source[(i + r) % n]] == decoded[i]) ++i;
-    if (i == n) return true;
+    while (i < n && label[source[(i + r) % n]] == corners[i]) ++i;
+    if (i == n && same_attributes(original, decoded, s, k, n, r, tolerance)) return true;
   }
   return false;
 }
 
-std::string compare_faces(const Mesh& original, const Mesh& decoded, const Correspondence& c,
+// Names, kinds and components of the attributes, in order.
+std::string compare_attribute_tables(const Mesh& original, const DecodedFile& decoded) {
+  const auto& in = original.attributes;
+  const auto& out = decoded.mesh.attributes;
+  if (in.size() != out.size() || decoded.attribute_codings.size() != out.size())
+    return std::to_string(out.size()) + " attributes instead of " + std::to_string(in.size());
+  for (size_t j = 0; j < in.size(); ++j)
+    if (in[j].name != out[j].name || in[j].kind != out[j].kind || in[j].components != out[j].components ||
+        out[j].corner_values.size() != decoded.mesh.corners.size())
+      return "attribute " + std::to_string(j) + " (\"" + in[j].name + "\") differs in name, kind or components";
+  return {};
+}
+
+std::string compare_faces(const Mesh& original, const DecodedFile& file, const Correspondence& c,
                           const std::vector<uint32_t>& label) {
+  const Mesh& decoded = file.mesh;
+  if (std::string why = compare_attribute_tables(original, file); !why.empty()) return why;
+  const std::vector<std::array<double, 3>> tolerance = attribute_tolerances(file);
   if (original.face_count() != decoded.face_count() || c.face_source.size() != decoded.face_count())
     return "face count " + std::to_string(decoded.face_count()) + " instead of " +
            std::to_string(original.face_count());
@@ -86,17 +150,12 @@ std::string compare_faces(const Mesh& original, const Mesh& decoded, const Corre
     used[src] = true;
     const uint32_t n = decoded.face_sizes[f];
     if (original.face_sizes[src] != n) return "face " + std::to_string(f) + " degree differs";
-    if (!same_cycle(&original.corners[offset[src]], &decoded.corners[k], n, label, c.exact_corners))
-      return "face " + std::to_string(f) + " (input face " + std::to_string(src) + ") differs";
+    if (!same_cycle(original, file, offset[src], k, n, label, c.exact_corners, tolerance))
+      return "face " + std::to_string(f) + " (input face " + std::to_string(src) + ") differs" +
+             (original.attributes.empty() ? "" : " (its corners or their attributes)");
     k += n;
   }
   return {};
-}
-
-// One unit in the last place of a binary32 of magnitude |x|.
-double float_ulp(double x) {
-  const float f = float(std::fabs(x));
-  return double(std::nextafter(f, std::numeric_limits<float>::infinity())) - double(f);
 }
 
 }  // namespace
@@ -129,7 +188,7 @@ RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decode
     }
     label[order[i]] = i;
   }
-  report.face_mismatch = compare_faces(original, decoded.mesh, c, label);
+  report.face_mismatch = compare_faces(original, decoded, c, label);
   report.faces_equal = report.face_mismatch.empty();
 
   const QuantizationInfo& q = decoded.quantization;

@@ -15,7 +15,10 @@
 // chunk has arrived; onLoad gets the finest. Geometry userData carries level,
 // levelCount, vertexCount, faceCount, the polygon structure (faceSizes,
 // corners), a geometry image's attributes (its normals also become the
-// 'normal' attribute), bytesReceived and decodeMs.
+// 'normal' attribute), the corner attributes of spec 15, bytesReceived and
+// decodeMs. A file with texture coordinates or normals per corner (spec 15)
+// gives a non-indexed geometry with 'uv' and 'normal', three corners a
+// triangle, since a seam gives one vertex several values.
 import { BufferAttribute, BufferGeometry, Loader } from 'three';
 
 export class QMCLoader extends Loader {
@@ -139,14 +142,47 @@ export class QMCLoader extends Loader {
 }
 
 function toGeometry(mesh, info) {
+  const geometry = cornerGeometry(mesh) ?? indexedGeometry(mesh);
+  geometry.userData = { level: mesh.level, vertexCount: mesh.vertexCount, faceCount: mesh.faceCount,
+                        faceSizes: mesh.faceSizes, corners: mesh.corners, attributes: mesh.attributes,
+                        cornerAttributes: mesh.cornerAttributes, ...info };
+  return geometry;
+}
+
+function indexedGeometry(mesh) {
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', new BufferAttribute(mesh.positions, 3));
   geometry.setIndex(new BufferAttribute(mesh.indices, 1));
   const normal = normalsOf(mesh);
   if (normal) geometry.setAttribute('normal', new BufferAttribute(normal, 3));
   else geometry.computeVertexNormals();
-  geometry.userData = { level: mesh.level, vertexCount: mesh.vertexCount, faceCount: mesh.faceCount,
-                        faceSizes: mesh.faceSizes, corners: mesh.corners, attributes: mesh.attributes, ...info };
+  return geometry;
+}
+
+// Spec 15: texture coordinates (kind 1) and normals (kind 2) per corner, on
+// the polygons cut into fans from their first corner as mesh.indices are.
+function cornerGeometry(mesh) {
+  const uv = (mesh.cornerAttributes ?? []).find((a) => a.kind === 1 && a.components >= 2);
+  const normal = (mesh.cornerAttributes ?? []).find((a) => a.kind === 2 && a.components === 3);
+  if (!uv && !normal) return null;
+  const fan = [];
+  for (let f = 0, k0 = 0; f < mesh.faceSizes.length; k0 += mesh.faceSizes[f++]) {
+    for (let i = 1; i + 1 < mesh.faceSizes[f]; ++i) fan.push(k0, k0 + i, k0 + i + 1);
+  }
+  // One vertex per fan corner: `size` numbers from values[offsetOf(corner)].
+  const gather = (values, offsetOf, size) => {
+    const out = new Float32Array(size * fan.length);
+    fan.forEach((corner, j) => {
+      const at = offsetOf(corner);
+      for (let c = 0; c < size; ++c) out[size * j + c] = values[at + c];
+    });
+    return new BufferAttribute(out, size);
+  };
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', gather(mesh.positions, (k) => 3 * mesh.corners[k], 3));
+  if (uv) geometry.setAttribute('uv', gather(uv.values, (k) => uv.components * uv.cornerValues[k], 2));
+  if (normal) geometry.setAttribute('normal', gather(normal.values, (k) => 3 * normal.cornerValues[k], 3));
+  else geometry.computeVertexNormals();
   return geometry;
 }
 

@@ -10,8 +10,11 @@
 //
 // Meshes are plain objects of typed arrays the caller owns: positions
 // (Float32Array, 3 per vertex), indices (Uint32Array, the polygons cut into
-// fans for rendering), faceSizes and corners (the polygon structure), and
-// attributes (a geometry image's planes after X Y Z: normals, curvature ...).
+// fans for rendering), faceSizes and corners (the polygon structure),
+// attributes (a geometry image's planes after X Y Z: normals, curvature ...)
+// and cornerAttributes (spec 15: texture coordinates, normals, colours, each
+// { name, kind, components, values: Float32Array, cornerValues: Uint32Array },
+// corner k's value at values[components * cornerValues[k]]).
 // Rejections throw a QMCError whose `identifier` is spec section 9's.
 import createQmcModule from '../dist/qmc_decoder.mjs';
 
@@ -24,6 +27,7 @@ const LIMITS_SIZE = 40; // qmc_limits: two uint32, four uint64
 const MESH_SIZE = 32; // qmc_mesh on wasm32: four uint32, four pointers
 const SUMMARY_SIZE = 88;
 const ATTRIBUTE_SIZE = 12; // qmc_attribute on wasm32: kind, count, pointer
+const CORNER_ATTRIBUTE_SIZE = 280; // qmc_corner_attribute on wasm32: name[256], four uint32, two pointers
 export const FINEST = -1;
 
 export class QMCError extends Error {
@@ -159,6 +163,7 @@ class StreamDecoder {
       this.check(w._qmc_decoder_mesh(this.handle, level, out));
       const mesh = readMesh(w, out, level === FINEST ? this.completeLevel : level);
       mesh.attributes = level === FINEST ? this.attributes() : [];
+      mesh.cornerAttributes = level === FINEST ? this.cornerAttributes() : [];
       return mesh;
     } finally {
       w._qmc_mesh_free(out);
@@ -176,6 +181,31 @@ class StreamDecoder {
         const [kind, count, values] = w.HEAPU32.subarray(out >> 2, (out >> 2) + 3);
         attributes.push({ kind, values: new Float32Array(w.HEAPF32.buffer.slice(values, values + 4 * count)) });
         w._qmc_free(values);
+      }
+      return attributes;
+    } finally {
+      w._free(out);
+    }
+  }
+
+  // Spec 15: the attributes of the corners of the file's mesh (aTTR).
+  cornerAttributes() {
+    const w = this.qmc.wasm;
+    const out = w._malloc(CORNER_ATTRIBUTE_SIZE);
+    try {
+      const attributes = [];
+      for (let i = 0; i < w._qmc_decoder_corner_attribute_count(this.handle); ++i) {
+        this.check(w._qmc_decoder_corner_attribute(this.handle, i, out));
+        const [kind, components, valueCount, cornerCount, values, cornerValues] =
+          w.HEAPU32.subarray((out + 256) >> 2, ((out + 256) >> 2) + 6);
+        attributes.push({
+          name: w.UTF8ToString(out, 256),
+          kind,
+          components,
+          values: new Float32Array(w.HEAPF32.buffer.slice(values, values + 4 * components * valueCount)),
+          cornerValues: new Uint32Array(w.HEAPU32.buffer.slice(cornerValues, cornerValues + 4 * cornerCount)),
+        });
+        w._qmc_corner_attribute_free(out);
       }
       return attributes;
     } finally {

@@ -30,7 +30,8 @@ const files = new Map(); // id -> { stream, shownLevel, decodeMs }
 
 function transferables(mesh) {
   return [mesh.positions.buffer, mesh.indices.buffer, mesh.faceSizes.buffer, mesh.corners.buffer,
-          ...mesh.attributes.map((a) => a.values.buffer)];
+          ...mesh.attributes.map((a) => a.values.buffer),
+          ...(mesh.cornerAttributes ?? []).flatMap((a) => [a.values.buffer, a.cornerValues.buffer])];
 }
 
 function post(type, id, file, mesh) {

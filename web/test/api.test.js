@@ -61,6 +61,21 @@ test('a geometry image with normals and a curvature: attributes of kinds 3..6, o
   assert.deepEqual(qmc.decode(vector('valid_cube_8bit.qmc')).attributes, []);
 });
 
+test('texture coordinates with a seam and per-vertex normals: cornerAttributes (spec 15)', () => {
+  const mesh = qmc.decode(vector('valid_attr_quads_texcoord_normal.qmc'));
+  assert.deepEqual(mesh.cornerAttributes.map((a) => [a.name, a.kind, a.components]), [['texcoord', 1, 2], ['normal', 2, 3]]);
+  const [texcoord, normal] = mesh.cornerAttributes;
+  assert.equal(texcoord.cornerValues.length, mesh.corners.length);
+  assert.ok(texcoord.values.length / 2 > mesh.vertexCount); // the seam splits vertices
+  // Normals are one per vertex: every corner refers to its vertex's value, of unit length.
+  assert.deepEqual([...normal.cornerValues], [...mesh.corners]);
+  for (let v = 0; v < mesh.vertexCount; ++v) {
+    const [x, y, z] = normal.values.subarray(3 * v, 3 * v + 3);
+    assert.ok(Math.abs(Math.hypot(x, y, z) - 1) < 0.01);
+  }
+  assert.deepEqual(qmc.decode(vector('valid_cube_8bit.qmc')).cornerAttributes, []);
+});
+
 test('hostile files of under 130 bytes are refused by the default limits, not allocated (spec 8.1)', () => {
   const hostile = (name) => readFileSync(new URL(`../../fuzz/regressions/decode_file/${name}`, import.meta.url));
   for (const name of ['loop_base_claims_2p32_vertices', 'loop_base_claims_200M_vertices', 'gim_unmasked_33M_triangles']) {

@@ -1,0 +1,69 @@
+// libFuzzer target: an aTTR payload (spec section 15) against a mesh decoded
+// from a CONN payload in the same input: u16le length of the CONN payload,
+// the CONN payload, then the aTTR payload. An accepted attribute must give
+// every corner a value index below its table's size; coded again by the
+// encoder (exact binary32) and decoded, every corner must keep its value
+// bit for bit.
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "conn_prefix.h"
+#include "decoder/attribute_decoder.h"
+#include "encoder/attribute_encoder.h"
+
+namespace {
+
+constexpr uint64_t kOutputLimit = uint64_t(64) << 20;
+
+bool same_corner_values(const qmc::MeshAttribute& a, const qmc::MeshAttribute& b) {
+  if (a.corner_values.size() != b.corner_values.size() || a.components != b.components) return false;
+  for (size_t k = 0; k < a.corner_values.size(); ++k)
+    if (std::memcmp(&a.values[a.components * size_t(a.corner_values[k])],
+                    &b.values[b.components * size_t(b.corner_values[k])], 4 * a.components) != 0)
+      return false;
+  return true;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  qmc::Mesh mesh;
+  uint32_t vertex_count = 0;
+  const uint8_t* payload = nullptr;
+  size_t length = 0;
+  if (!qmc::fuzz::decode_conn_prefix(data, size, &mesh, &vertex_count, &payload, &length)) return 0;
+  if (vertex_count > (1u << 16)) return 0;  // POSN would have to back the vertices
+  qmc::OutputBudget budget(kOutputLimit);
+  qmc::MeshAttribute attribute;
+  qmc::AttributeCoding coding;
+  bool skipped = false;
+  if (!qmc::decode_attribute(payload, length, mesh, vertex_count, {}, &budget, &attribute, &coding, &skipped).ok() ||
+      skipped)
+    return 0;
+  const size_t values = attribute.value_count();
+  if (attribute.values.size() != values * attribute.components) __builtin_trap();
+  if (attribute.corner_values.size() != mesh.corners.size()) __builtin_trap();
+  for (uint32_t m : attribute.corner_values)
+    if (m >= values) __builtin_trap();
+  if (coding.mapping == 0 && attribute.corner_values != mesh.corners) __builtin_trap();
+
+  // Coded again, exactly, over the same faces.
+  mesh.positions.assign(3 * size_t(vertex_count), 0.f);
+  std::vector<uint64_t> source(mesh.corners.size());
+  for (size_t k = 0; k < source.size(); ++k) source[k] = k;
+  qmc::EncodeOptions options;
+  options.exact_attributes = true;
+  std::vector<uint8_t> again;
+  qmc::AttributeStats stats;
+  if (!qmc::encode_attribute(attribute, mesh, vertex_count, source, options, &again, &stats).ok()) __builtin_trap();
+  qmc::OutputBudget second_budget(kOutputLimit);
+  qmc::MeshAttribute round_trip;
+  if (!qmc::decode_attribute(again.data(), again.size(), mesh, vertex_count, {}, &second_budget, &round_trip, &coding,
+                             &skipped)
+           .ok() ||
+      skipped || !same_corner_values(attribute, round_trip))
+    __builtin_trap();
+  return 0;
+}

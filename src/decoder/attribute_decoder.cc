@@ -1,0 +1,220 @@
+// The aTTR chunk, spec/qmc-format.md section 15: header and checks (15.1),
+// the per-corner mapping (15.3), and the values predicted over the
+// attribute mesh (15.4) or stored as binary32 (15.5).
+#include "decoder/attribute_decoder.h"
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "bitio/attribute_mapping.h"
+#include "bitio/byte_io.h"
+#include "bitio/exact_arith.h"
+#include "bitio/range_coder.h"
+#include "decoder/position_decoder.h"
+
+namespace qmc {
+namespace {
+
+constexpr uint8_t kMappingPerVertex = 0, kMappingPerCorner = 1;
+constexpr uint8_t kCodingGrid = 0, kCodingExact = 1;
+constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
+
+struct Header {
+  std::string label = "aTTR";  // "aTTR \"name\"" once the name is read
+  uint8_t mapping = 0, coding = 0, components = 0;
+  uint64_t value_count = 0;
+  const uint8_t* mapping_stream = nullptr;
+  size_t mapping_bytes = 0;
+};
+
+Status bad(const Header& h, const std::string& message) {
+  return Status(ErrorCode::kBadChunkPayload, h.label + ": " + message + " (section 15.1)");
+}
+
+uint64_t corner_count(const Mesh& faces) { return faces.corners.size(); }
+
+// Checks 1-3 of 15.1.
+Status read_identity(ByteReader* in, const Mesh& faces, uint32_t vertex_count,
+                     const std::vector<MeshAttribute>& earlier, Header* h, MeshAttribute* out) {
+  uint64_t v = 0, k = 0;
+  if (!in->get_varint(&v) || v != vertex_count)
+    return bad(*h, "vertex_count missing, malformed or not CONN's " + std::to_string(vertex_count));
+  if (!in->get_varint(&k) || k != corner_count(faces))
+    return bad(*h, "corner_count missing, malformed or not CONN's " + std::to_string(corner_count(faces)));
+  uint8_t length = 0;
+  if (!in->get_u8(&length) || length == 0) return bad(*h, "name_length missing or 0");
+  if (in->remaining() < length) return bad(*h, "the name is cut short");
+  out->name.assign(reinterpret_cast<const char*>(in->cursor()), length);
+  in->skip(length);
+  h->label = "aTTR \"" + out->name + "\"";
+  for (const MeshAttribute& e : earlier)
+    if (e.name == out->name) return bad(*h, "a second attribute of this name");
+  uint8_t kind = 0;
+  if (!in->get_u8(&kind) || !in->get_u8(&h->components) || !in->get_u8(&h->mapping))
+    return bad(*h, "kind, components or mapping missing");
+  if (h->components < 1 || h->components > 3)
+    return bad(*h, "components " + std::to_string(h->components) + " outside 1..3");
+  out->kind = AttributeKind(kind);
+  out->components = h->components;
+  return Status::Ok();
+}
+
+// Checks 5-8 of 15.1 (the caller has skipped an unknown mapping, check 4).
+Status read_sizes(ByteReader* in, uint32_t vertex_count, Header* h, bool* skipped) {
+  if (!in->get_varint(&h->value_count) || h->value_count > UINT32_MAX)
+    return bad(*h, "value_count missing, malformed or above 2^32 - 1");
+  if (h->mapping == kMappingPerVertex && h->value_count != vertex_count)
+    return bad(*h, "value_count " + std::to_string(h->value_count) + " is not V = " + std::to_string(vertex_count) +
+                       " with mapping 0");
+  if (!in->get_u8(&h->coding)) return bad(*h, "coding missing");
+  if (h->coding > kCodingExact) {
+    *skipped = true;
+    return Status::Ok();
+  }
+  if (h->mapping == kMappingPerCorner) {
+    uint64_t m = 0;
+    if (!in->get_varint(&m) || m > in->remaining())
+      return bad(*h, "mapping_bytes missing, malformed or beyond the payload");
+    h->mapping_stream = in->cursor();
+    h->mapping_bytes = size_t(m);
+    in->skip(size_t(m));
+  }
+  const uint64_t rest = in->remaining();
+  if (h->coding == kCodingExact && rest != 4 * uint64_t(h->components) * h->value_count)
+    return bad(*h, std::to_string(rest) + " bytes of values, not 4 C N = " +
+                       std::to_string(4 * uint64_t(h->components) * h->value_count));
+  if (h->coding == kCodingGrid && !range_stream_justifies(h->value_count, rest))
+    return Status(ErrorCode::kLimitExceeded, h->label + ": " + std::to_string(h->value_count) + " values for " +
+                                                 std::to_string(rest) + " bytes, above 512 (L + 8) (section 15.1)");
+  return Status::Ok();
+}
+
+Status mapping_fault(const Header& h, MappingFault fault, uint64_t k) {
+  const char* what = fault == MappingFault::kOwnIndex     ? "an index past the vertex's own values"
+                     : fault == MappingFault::kNothingMet ? "an earlier value before any value was met"
+                                                          : "an index past the values met so far";
+  return Status(ErrorCode::kBadSymbol,
+                h.label + ": corner " + std::to_string(k) + " refers to " + what + " (section 15.3)");
+}
+
+// Section 15.3: m_k for every corner.
+Status decode_mapping(const Header& h, const Mesh& faces, uint32_t vertex_count, std::vector<uint32_t>* m) {
+  RangeDecoder rc(h.mapping_stream, h.mapping_bytes);
+  if (rc.bad_start())
+    return Status(ErrorCode::kBadChunkPayload,
+                  h.label + ": the mapping stream starts with 0xFFFFFFFF (section 13.5.2)");
+  AttributeMappingModel model;
+  VertexValueLists lists;
+  lists.reset(vertex_count, faces.corners);
+  m->resize(faces.corners.size());
+  uint32_t met = 0;
+  for (size_t k = 0; k < faces.corners.size(); ++k) {
+    MappingFault fault = MappingFault::kNone;
+    (*m)[k] = code_corner_value(&rc, &model, &lists, faces.corners[k], h.value_count, &met, MappingChoice{}, &fault);
+    if (fault != MappingFault::kNone) return mapping_fault(h, fault, k);
+    if (rc.overrun())
+      return Status(ErrorCode::kTruncated,
+                    h.label + ": the mapping stream ends inside corner " + std::to_string(k) + " (section 15.3)");
+  }
+  if (rc.unread() != 0)
+    return Status(ErrorCode::kBadChunkPayload, h.label + ": " + std::to_string(rc.unread()) +
+                                                   " bytes after the mapping stream's data (section 13.5.2)");
+  return Status::Ok();
+}
+
+// Section 15.4's grid: 14.1's fields for C components.
+Status read_grid(ByteReader* in, const Header& h, float origin[3], double step[3], uint32_t top[3]) {
+  const int c = h.components;
+  uint8_t grid = 0;
+  if (!in->get_u8(&grid) || grid > 1) return bad(h, "grid missing or above 1");
+  for (int a = 0; a < c; ++a)
+    if (!in->get_f32le(&origin[a])) return bad(h, "grid origin cut short");
+  for (int a = 0; a < (grid == 0 ? 1 : c); ++a)
+    if (!in->get_f64le(&step[a])) return bad(h, "grid step cut short");
+  for (int a = 1; grid == 0 && a < c; ++a) step[a] = step[0];
+  for (int a = 0; a < c; ++a) {
+    uint64_t t = 0;
+    if (!in->get_varint(&t) || t > kMaxTop) return bad(h, "grid top missing, malformed or above 2^30 - 1");
+    top[a] = uint32_t(t);
+  }
+  for (int a = 0; a < c; ++a) {
+    const std::string which = "component " + std::to_string(a);
+    if (!std::isfinite(origin[a])) return bad(h, which + ": the origin is not finite");
+    if (!std::isfinite(step[a]) || step[a] < 0) return bad(h, which + ": the step is not finite and >= 0");
+    if (!std::isfinite(float(double(origin[a]) + mul(double(top[a]), step[a]))))
+      return bad(h, which + ": the grid's last point overflows binary32");
+  }
+  return Status::Ok();
+}
+
+// Section 15.4: the values predicted over the attribute mesh.
+Status decode_grid_values(ByteReader* in, const Header& h, const Mesh& faces, const std::vector<uint32_t>& m,
+                          AttributeCoding* coding, std::vector<float>* values) {
+  float* origin = coding->origin.data();
+  double* step = coding->step.data();
+  uint32_t* top = coding->top.data();
+  if (Status s = read_grid(in, h, origin, step, top); !s.ok()) return s;
+  Mesh attribute_mesh;
+  attribute_mesh.face_sizes = faces.face_sizes;
+  attribute_mesh.corners = m;
+  std::vector<uint32_t> q;
+  const PredictedGridNames names{h.label, "value", "values", "component"};
+  if (Status s = decode_predicted_grid(in->cursor(), in->remaining(), attribute_mesh, uint32_t(h.value_count), top,
+                                       names, &q);
+      !s.ok())
+    return s;
+  const size_t c = h.components;
+  values->resize(c * size_t(h.value_count));
+  for (size_t i = 0; i < size_t(h.value_count); ++i)
+    for (size_t a = 0; a < c; ++a)
+      (*values)[c * i + a] = float(double(origin[a]) + mul(double(q[3 * i + a]), step[a]));
+  return Status::Ok();
+}
+
+// Section 15.5: binary32 as stored, NaN payloads included.
+void read_exact_values(ByteReader* in, size_t count, std::vector<float>* values) {
+  values->resize(count);
+  for (size_t i = 0; i < count; ++i) {
+    const uint32_t bits = load_u32le(in->cursor() + 4 * i);
+    std::memcpy(&(*values)[i], &bits, 4);
+  }
+}
+
+}  // namespace
+
+Status decode_attribute(const uint8_t* payload, size_t size, const Mesh& faces, uint32_t vertex_count,
+                        const std::vector<MeshAttribute>& earlier, OutputBudget* budget, MeshAttribute* out,
+                        AttributeCoding* coding, bool* skipped) {
+  *out = MeshAttribute{};
+  *coding = AttributeCoding{};
+  *skipped = false;
+  ByteReader in(payload, size);
+  Header h;
+  if (Status s = read_identity(&in, faces, vertex_count, earlier, &h, out); !s.ok()) return s;
+  if (h.mapping > kMappingPerCorner) {  // check 4: a mapping of a later revision
+    *skipped = true;
+    return Status::Ok();
+  }
+  if (Status s = read_sizes(&in, vertex_count, &h, skipped); !s.ok() || *skipped) return s;
+  if (Status s = check_limit(h.label + ": values", h.value_count, kNoLimit, "max_output_bytes"); !s.ok()) return s;
+  if (Status s = budget->charge(attribute_output_bytes(out->name.size(), h.components, h.value_count,
+                                                       faces.corners.size()),
+                                h.label);
+      !s.ok())
+    return s;
+  coding->mapping = h.mapping;
+  coding->coding = h.coding;
+  coding->chunk_bytes = 12 + uint64_t(size);
+  if (h.mapping == kMappingPerVertex)
+    out->corner_values = faces.corners;
+  else if (Status s = decode_mapping(h, faces, vertex_count, &out->corner_values); !s.ok())
+    return s;
+  if (h.coding == kCodingExact) {
+    read_exact_values(&in, size_t(h.value_count) * h.components, &out->values);
+    return Status::Ok();
+  }
+  return decode_grid_values(&in, h, faces, out->corner_values, coding, &out->values);
+}
+
+}  // namespace qmc

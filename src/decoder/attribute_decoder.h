@@ -1,0 +1,27 @@
+// Decoder of the aTTR chunk (spec/qmc-format.md section 15): one attribute
+// of the mesh's corners, in coder order.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "decoder/output_budget.h"
+#include "qmc/decoder.h"
+#include "qmc/mesh.h"
+#include "qmc/status.h"
+
+namespace qmc {
+
+// Decodes an aTTR payload against `faces` (CONN's faces in coder order,
+// vertex_count vertices). `earlier` holds the attributes decoded before
+// (names must differ). Sets *skipped, and leaves *out empty, for a mapping
+// or coding this revision does not define (15.1); charges the output to
+// the budget before reserving it.
+// *coding says how it was coded (mapping 0's values move with the vertices
+// when oRDR is applied).
+Status decode_attribute(const uint8_t* payload, size_t size, const Mesh& faces, uint32_t vertex_count,
+                        const std::vector<MeshAttribute>& earlier, OutputBudget* budget, MeshAttribute* out,
+                        AttributeCoding* coding, bool* skipped);
+
+}  // namespace qmc

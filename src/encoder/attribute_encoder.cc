@@ -1,0 +1,216 @@
+// The aTTR chunk, spec/qmc-format.md section 15, on the encoder side: the
+// mapping (one value per vertex, or per corner with 15.3's decisions), and
+// the values on the uniform grid of their bounding box, predicted over the
+// attribute mesh as positions are (15.4), or exact binary32 (15.5).
+#include "encoder/attribute_encoder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "bitio/attribute_mapping.h"
+#include "bitio/byte_io.h"
+#include "bitio/range_coder.h"
+#include "encoder/position_encoder.h"
+
+namespace qmc {
+namespace {
+
+constexpr uint8_t kMappingPerVertex = 0, kMappingPerCorner = 1;
+constexpr uint8_t kCodingGrid = 0, kCodingExact = 1;
+constexpr uint32_t kNone = UINT32_MAX;
+// The longest list S_v the encoder searches for a value of the vertex's own
+// (15.3); past it, a value is coded as met before, which is as valid.
+constexpr uint32_t kSearchedOwnValues = 64;
+
+int bits_for(AttributeKind kind, const EncodeOptions& options) {
+  switch (kind) {
+    case AttributeKind::kTextureCoordinate: return options.texcoord_bits;
+    case AttributeKind::kNormal: return options.normal_bits;
+    case AttributeKind::kColour: return options.colour_bits;
+    default: return options.generic_bits;
+  }
+}
+
+// 15.7: mapping 0 when each vertex's corners refer to one value that no
+// other vertex refers to, and every vertex has one. Fills value_of_vertex.
+bool one_value_per_vertex(const std::vector<uint32_t>& corner_values, const Mesh& file_mesh, size_t vertex_count,
+                          size_t value_count, std::vector<uint32_t>* value_of_vertex) {
+  if (value_count != vertex_count) return false;
+  value_of_vertex->assign(vertex_count, kNone);
+  std::vector<uint32_t> owner(value_count, kNone);
+  for (size_t k = 0; k < corner_values.size(); ++k) {
+    const uint32_t v = file_mesh.corners[k], x = corner_values[k];
+    if ((*value_of_vertex)[v] == kNone) {
+      if (owner[x] != kNone) return false;
+      (*value_of_vertex)[v] = x;
+      owner[x] = v;
+    } else if ((*value_of_vertex)[v] != x) {
+      return false;
+    }
+  }
+  return std::find(value_of_vertex->begin(), value_of_vertex->end(), kNone) == value_of_vertex->end();
+}
+
+// 15.3: values numbered by first reference over the corners in coder order,
+// then the unreferenced ones in input order. Returns the new index of each.
+std::vector<uint32_t> first_reference_numbering(const std::vector<uint32_t>& corner_values, size_t value_count) {
+  std::vector<uint32_t> number(value_count, kNone);
+  uint32_t next = 0;
+  for (uint32_t x : corner_values)
+    if (number[x] == kNone) number[x] = next++;
+  for (uint32_t& n : number)
+    if (n == kNone) n = next++;
+  return number;
+}
+
+// 15.3: the decisions of every corner; m holds m_k.
+std::vector<uint8_t> encode_mapping(const std::vector<uint32_t>& m, const Mesh& file_mesh, size_t vertex_count,
+                                    size_t value_count) {
+  RangeEncoder rc;
+  AttributeMappingModel model;
+  VertexValueLists lists;
+  lists.reset(uint32_t(vertex_count), file_mesh.corners);
+  uint32_t met = 0;
+  for (size_t k = 0; k < m.size(); ++k) {
+    const uint32_t v = file_mesh.corners[k];
+    MappingChoice choice;
+    if (m[k] == met) {
+      choice.branch = MappingChoice::kNew;
+    } else {
+      choice = {MappingChoice::kMet, m[k]};
+      for (uint32_t j = 0; j < std::min(lists.length(v), kSearchedOwnValues); ++j)
+        if (lists.at(v, j) == m[k]) {
+          choice = {MappingChoice::kOwn, j};
+          break;
+        }
+    }
+    MappingFault fault = MappingFault::kNone;
+    code_corner_value(&rc, &model, &lists, v, value_count, &met, choice, &fault);
+  }
+  return rc.finish();
+}
+
+// 15.4: the uniform grid of the values' bounding box (one step, 14.1), the
+// grid fields and the range-coded stream; empty if 14.1's bound fails.
+std::vector<uint8_t> encode_grid_values(const std::vector<float>& table, uint32_t c, int bits, const Mesh& mesh,
+                                        double* step_out) {
+  const size_t n = table.size() / c;
+  float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  for (uint32_t a = 0; a < c; ++a) {
+    lo[a] = hi[a] = n > 0 ? table[a] : 0.0f;
+    for (size_t i = 0; i < n; ++i) {
+      lo[a] = std::min(lo[a], table[c * i + a]);
+      hi[a] = std::max(hi[a], table[c * i + a]);
+    }
+  }
+  double side = 0;
+  for (uint32_t a = 0; a < c; ++a) side = std::max(side, double(hi[a]) - double(lo[a]));
+  double step = side / double((uint64_t(1) << bits) - 1);
+  if (!(step > 0)) step = 1;  // one point: any step; top 1 below keeps a decision per value
+  uint32_t top[3] = {0, 0, 0};
+  for (uint32_t a = 0; a < c; ++a) top[a] = uint32_t(std::llround((double(hi[a]) - double(lo[a])) / step));
+  if (top[0] == 0 && top[1] == 0 && top[2] == 0) top[0] = 1;
+  std::vector<uint32_t> q(3 * n, 0);
+  for (size_t i = 0; i < n; ++i)
+    for (uint32_t a = 0; a < c; ++a) {
+      const long long g = std::llround((double(table[c * i + a]) - double(lo[a])) / step);
+      q[3 * i + a] = uint32_t(std::clamp<long long>(g, 0, top[a]));
+    }
+  std::vector<uint8_t> out;
+  put_u8(&out, 0);  // grid 0: one step
+  for (uint32_t a = 0; a < c; ++a) put_f32le(&out, lo[a]);
+  put_f64le(&out, step);
+  for (uint32_t a = 0; a < c; ++a) put_varint(&out, top[a]);
+  const std::vector<uint8_t> stream = encode_predicted_grid(q, top, mesh, nullptr, CandidateChoice::kFewestBits);
+  if (!range_stream_justifies(n, stream.size())) return {};
+  out.insert(out.end(), stream.begin(), stream.end());
+  *step_out = step;
+  return out;
+}
+
+}  // namespace
+
+std::string attribute_problem(const Mesh& mesh, size_t i, bool exact) {
+  const MeshAttribute& a = mesh.attributes[i];
+  const std::string which = "attribute " + std::to_string(i) + " (\"" + a.name + "\")";
+  if (a.name.empty() || a.name.size() > 255) return which + ": a name needs 1 to 255 bytes";
+  for (size_t j = 0; j < i; ++j)
+    if (mesh.attributes[j].name == a.name) return which + ": a second attribute of this name";
+  if (a.components < 1 || a.components > 3) return which + ": components must be 1..3";
+  if (a.values.size() % a.components != 0) return which + ": values are not a multiple of the components";
+  if (a.value_count() > UINT32_MAX) return which + ": more than 2^32 - 1 values";
+  if (a.corner_values.size() != mesh.corners.size())
+    return which + ": " + std::to_string(a.corner_values.size()) + " corner indices for " +
+           std::to_string(mesh.corners.size()) + " corners";
+  for (size_t k = 0; k < a.corner_values.size(); ++k)
+    if (a.corner_values[k] >= a.value_count())
+      return which + ": corner " + std::to_string(k) + " refers to value " + std::to_string(a.corner_values[k]) +
+             " of " + std::to_string(a.value_count());
+  if (!exact)
+    for (size_t v = 0; v < a.values.size(); ++v)
+      if (!std::isfinite(a.values[v]))
+        return which + ": value " + std::to_string(v / a.components) +
+               " is not finite (exact attributes keep any binary32)";
+  return {};
+}
+
+Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, size_t vertex_count,
+                        const std::vector<uint64_t>& corner_source, const EncodeOptions& options,
+                        std::vector<uint8_t>* payload, AttributeStats* stats) {
+  const uint32_t c = attribute.components;
+  const size_t value_count = attribute.value_count();
+  std::vector<uint32_t> corner_values(corner_source.size());
+  for (size_t k = 0; k < corner_source.size(); ++k) corner_values[k] = attribute.corner_values[corner_source[k]];
+  // The table in file order: by vertex (mapping 0) or by first reference.
+  std::vector<uint32_t> source_value, m;
+  const bool per_vertex = one_value_per_vertex(corner_values, file_mesh, vertex_count, value_count, &source_value);
+  if (!per_vertex) {
+    const std::vector<uint32_t> number = first_reference_numbering(corner_values, value_count);
+    source_value.resize(value_count);
+    for (size_t x = 0; x < value_count; ++x) source_value[number[x]] = uint32_t(x);
+    m.resize(corner_values.size());
+    for (size_t k = 0; k < m.size(); ++k) m[k] = number[corner_values[k]];
+  }
+  std::vector<float> table(value_count * c);
+  for (size_t i = 0; i < value_count; ++i)
+    for (uint32_t a = 0; a < c; ++a) table[c * i + a] = attribute.values[c * size_t(source_value[i]) + a];
+
+  *stats = AttributeStats{};
+  stats->name = attribute.name;
+  stats->per_corner = !per_vertex;
+  stats->value_count = uint32_t(value_count);
+  std::vector<uint8_t> values;
+  if (!options.exact_attributes) {
+    Mesh attribute_mesh;
+    attribute_mesh.face_sizes = file_mesh.face_sizes;
+    attribute_mesh.corners = per_vertex ? file_mesh.corners : m;
+    values = encode_grid_values(table, c, bits_for(attribute.kind, options), attribute_mesh, &stats->step);
+  }
+  stats->exact = values.empty();
+  if (stats->exact)
+    for (float x : table) put_f32le(&values, x);
+
+  payload->clear();
+  put_varint(payload, vertex_count);
+  put_varint(payload, file_mesh.corners.size());
+  put_u8(payload, uint8_t(attribute.name.size()));
+  payload->insert(payload->end(), attribute.name.begin(), attribute.name.end());
+  put_u8(payload, uint8_t(attribute.kind));
+  put_u8(payload, uint8_t(c));
+  put_u8(payload, per_vertex ? kMappingPerVertex : kMappingPerCorner);
+  put_varint(payload, value_count);
+  put_u8(payload, stats->exact ? kCodingExact : kCodingGrid);
+  if (!per_vertex) {
+    const std::vector<uint8_t> mapping = encode_mapping(m, file_mesh, vertex_count, value_count);
+    put_varint(payload, mapping.size());
+    payload->insert(payload->end(), mapping.begin(), mapping.end());
+    stats->mapping_bytes = mapping.size();
+  }
+  payload->insert(payload->end(), values.begin(), values.end());
+  stats->value_bytes = values.size();
+  stats->chunk_bytes = 12 + payload->size();
+  return Status::Ok();
+}
+
+}  // namespace qmc

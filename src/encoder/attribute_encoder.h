@@ -1,0 +1,25 @@
+// The aTTR chunk on the encoder side (spec/qmc-format.md section 15): one
+// attribute of the input's corners, for the file's mesh in coder order.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "qmc/encoder.h"
+#include "qmc/mesh.h"
+#include "qmc/status.h"
+
+namespace qmc {
+
+// The aTTR payload of `attribute` (an attribute of the input mesh, already
+// validated). file_mesh holds the faces in coder order with file vertex
+// labels (vertex_count of them); corner_source[k] is the input corner that
+// file corner k is.
+Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, size_t vertex_count,
+                        const std::vector<uint64_t>& corner_source, const EncodeOptions& options,
+                        std::vector<uint8_t>* payload, AttributeStats* stats);
+
+// Every problem that keeps attribute i of `mesh` out of the format, or "".
+std::string attribute_problem(const Mesh& mesh, size_t i, bool exact);
+
+}  // namespace qmc

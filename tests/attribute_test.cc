@@ -1,0 +1,229 @@
+// Attributes of the corners, spec section 15: the mapping decisions of
+// 15.3, round trips of random seamed tables through every coder, with and
+// without oRDR, the encoder's refusals, and OBJ's vt / vn.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "attribute_generators.h"
+#include "bitio/attribute_mapping.h"
+#include "bitio/range_coder.h"
+#include "chunk_list.h"
+#include "mesh_generators.h"
+#include "mesh_io.h"
+#include "qmc/decoder.h"
+#include "qmc/encoder.h"
+#include "roundtrip_check.h"
+
+namespace qmc {
+namespace {
+
+std::vector<uint8_t> encode_or_fail(const Mesh& mesh, const EncodeOptions& options) {
+  std::vector<uint8_t> out;
+  const Status s = encode(mesh, options, &out);
+  EXPECT_TRUE(s.ok()) << s.to_string();
+  return out;
+}
+
+DecodedFile decode_or_fail(const std::vector<uint8_t>& file) {
+  DecodedFile d;
+  const Status s = decode(file.data(), file.size(), &d);
+  EXPECT_TRUE(s.ok()) << s.to_string();
+  return d;
+}
+
+// 15.3 on two triangles (0, 1, 2) and (2, 1, 3), a seam through vertices 1
+// and 2: corners 3 and 4 (vertices 2 and 1 in the second face) get new
+// values, corner 5 (vertex 3) too. Decoding the coded choices gives back
+// m = 0 1 2 3 4 5 and U = 6; own and met choices give the listed values.
+TEST(AttributeMapping, DecisionsOfTheSpecExample) {
+  const std::vector<uint32_t> corners = {0, 1, 2, 2, 1, 3};
+  using C = MappingChoice;
+  const std::vector<C> choices = {C{}, C{}, C{}, C{C::kOwn, 0}, C{}, C{C::kMet, 1}};
+  RangeEncoder enc;
+  AttributeMappingModel model;
+  VertexValueLists lists;
+  lists.reset(4, corners);
+  uint32_t met = 0;
+  MappingFault fault = MappingFault::kNone;
+  std::vector<uint32_t> coded;
+  for (size_t k = 0; k < corners.size(); ++k)
+    coded.push_back(code_corner_value(&enc, &model, &lists, corners[k], 8, &met, choices[k], &fault));
+  // Corner 3 (vertex 2) reuses vertex 2's value 2; corner 4 (vertex 1) is
+  // new (3); corner 5 (vertex 3) takes value 1, met at vertex 1.
+  EXPECT_EQ(coded, (std::vector<uint32_t>{0, 1, 2, 2, 3, 1}));
+  EXPECT_EQ(met, 4u);
+  const std::vector<uint8_t> stream = enc.finish();
+  RangeDecoder dec(stream.data(), stream.size());
+  AttributeMappingModel model2;
+  lists.reset(4, corners);
+  uint32_t met2 = 0;
+  std::vector<uint32_t> decoded;
+  for (size_t k = 0; k < corners.size(); ++k)
+    decoded.push_back(code_corner_value(&dec, &model2, &lists, corners[k], 8, &met2, MappingChoice{}, &fault));
+  EXPECT_EQ(fault, MappingFault::kNone);
+  EXPECT_EQ(decoded, coded);
+  EXPECT_EQ(dec.unread(), 0u);
+}
+
+// With N values met already (U = N), a corner cannot be new: no NEW
+// decision is coded, and an all-zero stream reads "met, j = 0".
+TEST(AttributeMapping, NoNewValueOnceTheTableIsFull) {
+  const std::vector<uint32_t> corners = {0, 1, 2};
+  const std::vector<uint8_t> zeros(8, 0);
+  RangeDecoder dec(zeros.data(), zeros.size());
+  AttributeMappingModel model;
+  VertexValueLists lists;
+  lists.reset(3, corners);
+  uint32_t met = 1;  // as if value 0 had been met
+  MappingFault fault = MappingFault::kNone;
+  EXPECT_EQ(code_corner_value(&dec, &model, &lists, 0, 1, &met, MappingChoice{}, &fault), 0u);
+  EXPECT_EQ(fault, MappingFault::kNone);
+  EXPECT_EQ(met, 1u);
+}
+
+void expect_round_trip(const Mesh& mesh, const EncodeOptions& options, const std::string& what) {
+  const std::vector<uint8_t> file = encode_or_fail(mesh, options);
+  const DecodedFile d = decode_or_fail(file);
+  const tools::RoundTripReport r = tools::check_round_trip(mesh, d);
+  EXPECT_TRUE(r.ok()) << what << ": " << r.face_mismatch << r.position_mismatch;
+  ASSERT_EQ(d.mesh.attributes.size(), mesh.attributes.size()) << what;
+}
+
+// Property: random tables (own values, other vertices' values, values no
+// corner uses) on soups with non-manifold edges, loose faces, repeated
+// corners, and on closed quad and triangle meshes, through the quad,
+// polygon and indexed coders, in coder order and with oRDR, quantized and
+// exact.
+TEST(AttributeRoundTrip, RandomTablesOnEveryCoder) {
+  int meshes = 0;
+  for (uint64_t seed = 1; seed <= 40; ++seed) {
+    tools::RandomSoupOptions o;
+    o.vertices = 20 + uint32_t(seed % 7) * 9;
+    o.faces = 30 + uint32_t(seed % 5) * 11;
+    o.repeated_corners = seed % 3 == 0;
+    Mesh soup = tools::make_random_soup(seed, o);
+    Mesh torus = tools::make_scrambled(tools::make_torus(6 + int(seed % 4), 4), seed);
+    Mesh sphere = tools::triangulated(tools::make_refined_sphere(1 + int(seed % 2)));
+    for (Mesh* m : {&soup, &torus, &sphere}) {
+      tools::add_random_corner_attribute(m, seed, "a", AttributeKind::kGeneric, 1 + uint32_t(seed % 3));
+      tools::add_chart_texcoords(m);
+      for (ConnectivityChoice c : {ConnectivityChoice::kAuto, ConnectivityChoice::kIndexed}) {
+        EncodeOptions options;
+        options.connectivity = c;
+        options.generic_bits = 8 + int(seed % 10);
+        options.keep_order = seed % 2 == 0;
+        options.exact_attributes = seed % 4 == 1;
+        expect_round_trip(*m, options, "seed " + std::to_string(seed));
+        ++meshes;
+      }
+    }
+  }
+  EXPECT_EQ(meshes, 240);
+}
+
+// 15.7: per-vertex normals use mapping 0; texture coordinates with seams mapping 1.
+TEST(AttributeEncoder, ChoosesPerVertexMappingWhenItFits) {
+  Mesh m = tools::triangulated(tools::make_refined_sphere(2));
+  tools::add_vertex_normals(&m);
+  tools::add_chart_texcoords(&m);
+  const DecodedFile d = decode_or_fail(encode_or_fail(m, EncodeOptions{}));
+  ASSERT_EQ(d.attribute_codings.size(), 2u);
+  EXPECT_EQ(d.attribute_codings[0].mapping, 0);
+  EXPECT_EQ(d.attribute_codings[1].mapping, 1);
+  EXPECT_EQ(d.mesh.attributes[0].kind, AttributeKind::kNormal);
+  EXPECT_EQ(d.mesh.attributes[1].name, "texcoord");
+}
+
+// 3.3: aTTR is ancillary and adds to the mesh without changing it: the file
+// without its aTTR chunks decodes to the same faces and positions.
+TEST(AttributeContainer, TheMeshIsTheSameWithoutTheChunks) {
+  Mesh m = tools::make_torus(8, 5);
+  tools::add_chart_texcoords(&m);
+  const std::vector<uint8_t> file = encode_or_fail(m, EncodeOptions{});
+  tools::Chunks chunks = tools::split_chunks(file), without;
+  for (const tools::Chunk& c : chunks)
+    if (c.type != kChunkAttribute) without.push_back(c);
+  ASSERT_EQ(without.size() + 1, chunks.size());
+  const DecodedFile a = decode_or_fail(file), b = decode_or_fail(tools::join_chunks(without));
+  EXPECT_EQ(a.mesh.positions, b.mesh.positions);
+  EXPECT_EQ(a.mesh.corners, b.mesh.corners);
+  EXPECT_TRUE(b.mesh.attributes.empty());
+}
+
+TEST(AttributeEncoder, RefusesWhatTheFormatCannotCarry) {
+  Mesh m = tools::triangulated(tools::make_refined_sphere(1));
+  tools::add_chart_texcoords(&m);
+  std::vector<uint8_t> out;
+  EncodeOptions progressive;
+  progressive.progressive_levels = 2;
+  EXPECT_EQ(encode(m, progressive, &out).code(), ErrorCode::kInvalidArgument);
+  Mesh bad = m;
+  bad.attributes[0].corner_values[5] = uint32_t(bad.attributes[0].value_count());
+  EXPECT_EQ(encode(bad, EncodeOptions{}, &out).code(), ErrorCode::kInvalidArgument);
+  Mesh infinite = m;
+  infinite.attributes[0].values[3] = std::numeric_limits<float>::infinity();
+  EXPECT_EQ(encode(infinite, EncodeOptions{}, &out).code(), ErrorCode::kInvalidArgument);
+  EncodeOptions exact;
+  exact.exact_attributes = true;
+  EXPECT_TRUE(encode(infinite, exact, &out).ok());
+  Mesh twice = m;
+  twice.attributes.push_back(twice.attributes[0]);
+  EXPECT_EQ(encode(twice, EncodeOptions{}, &out).code(), ErrorCode::kInvalidArgument);
+}
+
+// 8.1: an attribute's output is charged before its memory is reserved.
+TEST(AttributeLimits, OutputChargedBeforeDecoding) {
+  Mesh m = tools::make_torus(20, 12);
+  tools::add_random_corner_attribute(&m, 5, "big", AttributeKind::kGeneric, 3);
+  EncodeOptions exact;
+  exact.exact_attributes = true;
+  const std::vector<uint8_t> file = encode_or_fail(m, exact);
+  DecoderLimits limits;
+  limits.max_output_bytes = 20000;  // the mesh fits, the attribute's 12 bytes a value do not
+  DecodedFile d;
+  const Status s = decode(file.data(), file.size(), &d, limits);
+  EXPECT_EQ(s.code(), ErrorCode::kLimitExceeded) << s.to_string();
+  EXPECT_NE(s.message().find("aTTR"), std::string::npos) << s.message();
+}
+
+TEST(AttributeObj, ReadsAndWritesTextureCoordinatesAndNormals) {
+  const std::string text =
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+      "vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\nvt 0.5 0.5\n"
+      "vn 0 0 1\n"
+      "f 1/1/1 2/2/1 3/3/1\nf 3/5/1 2/2/1 4/4/1\n";
+  Mesh m;
+  std::vector<std::string> notes;
+  ASSERT_TRUE(tools::read_mesh_from_memory(text, "obj", &m, &notes).ok());
+  EXPECT_TRUE(notes.empty());
+  ASSERT_EQ(m.attributes.size(), 2u);
+  EXPECT_EQ(m.attributes[0].name, "texcoord");
+  EXPECT_EQ(m.attributes[0].components, 2u);
+  EXPECT_EQ(m.attributes[0].corner_values, (std::vector<uint32_t>{0, 1, 2, 4, 1, 3}));
+  EXPECT_EQ(m.attributes[1].corner_values, std::vector<uint32_t>(6, 0));
+  std::string written;
+  ASSERT_TRUE(tools::write_mesh_to_memory(m, "obj", &written).ok());
+  Mesh again;
+  ASSERT_TRUE(tools::read_mesh_from_memory(written, "obj", &again, nullptr).ok());
+  EXPECT_EQ(again.attributes[0].values, m.attributes[0].values);
+  EXPECT_EQ(again.attributes[0].corner_values, m.attributes[0].corner_values);
+  EXPECT_EQ(again.attributes[1].values, m.attributes[1].values);
+  // OFF cannot hold them: an error, never a silent loss.
+  EXPECT_EQ(tools::write_mesh_to_memory(m, "off", &written).code(), ErrorCode::kInvalidArgument);
+}
+
+TEST(AttributeObj, CornersWithoutAnIndexLeaveTheValuesOutWithANote) {
+  const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3\n";
+  Mesh m;
+  std::vector<std::string> notes;
+  ASSERT_TRUE(tools::read_mesh_from_memory(text, "obj", &m, &notes).ok());
+  EXPECT_TRUE(m.attributes.empty());
+  ASSERT_EQ(notes.size(), 1u);
+  EXPECT_NE(notes[0].find("only 2 of 3 face corners"), std::string::npos) << notes[0];
+}
+
+}  // namespace
+}  // namespace qmc
