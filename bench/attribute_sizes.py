@@ -7,7 +7,9 @@ Usage: attribute_sizes.py QMC WORK_DIR MESH.obj...
 Draco's bytes for an attribute are its file with positions and that
 attribute minus its file with positions only (draco_encoder -cl 10 -qp P
 -qt T -qn N on OBJ files written here with only those parts), so they
-include the seams its connectivity records for the attribute. qmc's are the
+include the seams its connectivity records for the attribute; polygons are
+written as fans of triangles (Draco's OBJ reader takes triangles and quads,
+and triangulates quads itself), qmc keeps them. qmc's are the
 aTTR chunk (12 bytes of framing included) of `qmc encode -q P --uv-bits T
 --normal-bits N` on the whole input, read from `qmc info --json`. Both
 quantize texture coordinates on one step over their largest range with T
@@ -64,7 +66,8 @@ def write_obj(path, obj, keep_vt, keep_vn):
                 if keep_vn:
                     s += '/' + (c[2] if len(c) > 2 else '')
                 corners.append(s)
-            out.write('f ' + ' '.join(corners) + '\n')
+            for i in range(1, len(corners) - 1):  # Draco's OBJ reader takes triangles and quads only
+                out.write('f %s %s %s\n' % (corners[0], corners[i], corners[i + 1]))
 
 
 def draco_bytes(work, name, obj, keep_vt, keep_vn):
@@ -97,11 +100,12 @@ def positions(v_lines):
     return [tuple(float(x) for x in line.split()[1:4]) for line in v_lines]
 
 
-def normal_error(obj, decoded_obj, cell):
-    """Largest angle between an input corner's normal and the closest normal
-    among the corners of the decoded vertex nearest to its position (a
-    spatial hash of `cell`, several times the grid step: both codecs move a
-    vertex by less than a step)."""
+def normal_error(obj, decoded_obj, step):
+    """Largest, over the input's corners, of the smallest angle between the
+    corner's normal and a normal of a decoded vertex within 2 grid steps of
+    its position (both codecs move a vertex by less than one step; several
+    vertices may share a position, and a seam gives one vertex several
+    normals, so the best match is taken)."""
     v, _, vn, faces = obj
     dv, _, dvn, dfaces = parse_obj(decoded_obj)
     dpos = positions(dv)
@@ -109,6 +113,7 @@ def normal_error(obj, decoded_obj, cell):
     for f in dfaces:
         for c in f:
             normals_at.setdefault(int(c[0]) - 1, []).append(dvn[int(c[2]) - 1])
+    cell = 2 * step
     grid = {}
     for i, p in enumerate(dpos):
         grid.setdefault(tuple(int(math.floor(x / cell)) for x in p), []).append(i)
@@ -119,11 +124,12 @@ def normal_error(obj, decoded_obj, cell):
             p = pos[int(c[0]) - 1]
             key = tuple(int(math.floor(x / cell)) for x in p)
             near = [i for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1)
-                    for i in grid.get((key[0] + dx, key[1] + dy, key[2] + dz), [])]
-            if not near:
+                    for i in grid.get((key[0] + dx, key[1] + dy, key[2] + dz), [])
+                    if sum((a - b) ** 2 for a, b in zip(p, dpos[i])) <= cell * cell]
+            normals = [d for i in near for d in normals_at.get(i, [])]
+            if not normals:
                 return float('nan')
-            best = min(near, key=lambda i: sum((a - b) ** 2 for a, b in zip(p, dpos[i])))
-            worst = max(worst, min(max_angle([vn[int(c[2]) - 1]], [d]) for d in normals_at.get(best, [])))
+            worst = max(worst, min(max_angle([vn[int(c[2]) - 1]], [d]) for d in normals))
     return worst
 
 
@@ -162,8 +168,8 @@ def main():
             run('draco_decoder', '-i', whole_drc, '-o', draco_obj)
             pos = positions(obj[0])
             side = max(max(p[a] for p in pos) - min(p[a] for p in pos) for a in range(3))
-            cell = 4 * side / (2 ** POSITION_BITS - 1)
-            angle = '%.3f / %.3f' % (normal_error(obj, qmc_obj, cell), normal_error(obj, draco_obj, cell))
+            step = side / (2 ** POSITION_BITS - 1)
+            angle = '%.3f / %.3f' % (normal_error(obj, qmc_obj, step), normal_error(obj, draco_obj, step))
         rows.append('| %s | %d | %s | %s | %d / %d = **%.3f** | %s |' %
                     (path.split('corpus/')[-1], len(obj[0]), cells[0], cells[1], info['bytes'], whole, whole_ratio,
                      angle))

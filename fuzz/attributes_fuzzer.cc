@@ -35,11 +35,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   size_t length = 0;
   if (!qmc::fuzz::decode_conn_prefix(data, size, &mesh, &vertex_count, &payload, &length)) return 0;
   if (vertex_count > (1u << 16)) return 0;  // POSN would have to back the vertices
+  // Positions for coding 3's predictions (15.8): a fixed scatter of integers.
+  std::vector<uint32_t> quantized(3 * size_t(vertex_count));
+  for (size_t i = 0; i < quantized.size(); ++i) quantized[i] = uint32_t((i * 2654435761u) >> 7) & 0xFFFFF;
   qmc::OutputBudget budget(kOutputLimit);
   qmc::MeshAttribute attribute;
   qmc::AttributeCoding coding;
   bool skipped = false;
-  if (!qmc::decode_attribute(payload, length, mesh, vertex_count, {}, &budget, &attribute, &coding, &skipped).ok() ||
+  if (!qmc::decode_attribute(payload, length, mesh, vertex_count, quantized, {}, &budget, &attribute, &coding,
+                             &skipped)
+           .ok() ||
       skipped)
     return 0;
   const size_t values = attribute.value_count();
@@ -57,11 +62,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   options.exact_attributes = true;
   std::vector<uint8_t> again;
   qmc::AttributeStats stats;
-  if (!qmc::encode_attribute(attribute, mesh, vertex_count, source, options, &again, &stats).ok()) __builtin_trap();
+  if (!qmc::encode_attribute(attribute, mesh, vertex_count, {}, source, options, &again, &stats).ok()) __builtin_trap();
   qmc::OutputBudget second_budget(kOutputLimit);
   qmc::MeshAttribute round_trip;
-  if (!qmc::decode_attribute(again.data(), again.size(), mesh, vertex_count, {}, &second_budget, &round_trip, &coding,
-                             &skipped)
+  if (!qmc::decode_attribute(again.data(), again.size(), mesh, vertex_count, quantized, {}, &second_budget,
+                             &round_trip, &coding, &skipped)
            .ok() ||
       skipped || !same_corner_values(attribute, round_trip))
     __builtin_trap();

@@ -3,12 +3,14 @@
 // without oRDR, the encoder's refusals, and OBJ's vt / vn.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
 
 #include "attribute_generators.h"
 #include "bitio/attribute_mapping.h"
+#include "bitio/octahedral_normal.h"
 #include "bitio/range_coder.h"
 #include "chunk_list.h"
 #include "mesh_generators.h"
@@ -82,6 +84,58 @@ TEST(AttributeMapping, NoNewValueOnceTheTableIsFull) {
   EXPECT_EQ(code_corner_value(&dec, &model, &lists, 0, 1, &met, MappingChoice{}, &fault), 0u);
   EXPECT_EQ(fault, MappingFault::kNone);
   EXPECT_EQ(met, 1u);
+}
+
+// 15.8 on one counter-clockwise triangle (0,0,0), (1,0,0), (0,1,0): every
+// corner predicts +z (t = 2, sigma = +1, X = Y = 0, L = 1), the grid point
+// floor(((0 + 1) M + 1) / 2) = 512 of M = 1023 on both axes; its output is
+// (1/1023, 1/1023, 1 - 2/1023) normalized.
+TEST(OctahedralNormals, PredictionOfTheSpecExample) {
+  const std::vector<uint32_t> corners = {0, 1, 2};
+  const std::vector<uint32_t> q = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  CornerCycle cycle;
+  cycle.build({3}, 3);
+  ValueCorners value_corners;
+  value_corners.build(corners, 3);
+  for (uint32_t i = 0; i < 3; ++i) {
+    OctahedralFrame frame;
+    uint32_t pu = 0, pv = 0;
+    predict_octahedral(value_corners.begin(i), value_corners.end(i), corners, cycle, q.data(), 1023, &frame, &pu, &pv);
+    EXPECT_EQ(frame.t, 2);
+    EXPECT_EQ(frame.sigma, 1);
+    EXPECT_EQ(pu, 512u);
+    EXPECT_EQ(pv, 512u);
+  }
+  float n[3];
+  octahedral_output(512, 512, 1023, OctahedralFrame{}, n);
+  const double u = 1.0 / 1023, w = 1 - 2.0 / 1023, l = std::sqrt(2 * u * u + w * w);
+  EXPECT_EQ(n[0], float(u / l));
+  EXPECT_EQ(n[2], float(w / l));
+  // Facing -x: the frame puts axis 0 up with sigma -1, and (y, z) become (u, v).
+  const std::vector<uint32_t> q_x = {0, 0, 0, 0, 0, 1, 0, 1, 0};  // (0,0,0), (0,0,1), (0,1,0): normal -x
+  OctahedralFrame frame;
+  uint32_t pu = 0, pv = 0;
+  predict_octahedral(value_corners.begin(0), value_corners.end(0), corners, cycle, q_x.data(), 1023, &frame, &pu, &pv);
+  EXPECT_EQ(frame.t, 0);
+  EXPECT_EQ(frame.sigma, -1);
+  octahedral_output(pu, pv, 1023, frame, n);
+  EXPECT_LT(n[0], -0.99f);
+}
+
+// Unit normals of every direction come back within their octahedral cell,
+// with the positions' frames (15.8), in coder order and with oRDR.
+TEST(OctahedralNormals, RoundTripAtEveryBitCount) {
+  Mesh m = tools::make_scrambled(tools::triangulated(tools::make_refined_sphere(2)), 3);
+  tools::add_vertex_normals(&m);
+  for (int bits : {2, 5, 10, 16}) {
+    EncodeOptions options;
+    options.normal_bits = bits;
+    options.keep_order = bits == 5;
+    const DecodedFile d = decode_or_fail(encode_or_fail(m, options));
+    ASSERT_EQ(d.attribute_codings.size(), 1u);
+    EXPECT_EQ(d.attribute_codings[0].coding, 3) << bits;
+    EXPECT_TRUE(tools::check_round_trip(m, d).ok()) << bits;
+  }
 }
 
 void expect_round_trip(const Mesh& mesh, const EncodeOptions& options, const std::string& what) {

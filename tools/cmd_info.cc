@@ -110,7 +110,10 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
     std::printf("attribute    \"%s\" (spec 15): %s, %u component(s), %zu values, %s, %s; %llu bytes, %.2f bits/value\n",
                 a.name.c_str(), uint8_t(a.kind) < 4 ? kKinds[uint8_t(a.kind)] : "kind unknown to this revision",
                 a.components, a.value_count(), c.mapping == 0 ? "one per vertex" : "per corner",
-                c.coding == 0 ? "predicted on a grid" : "exact binary32", static_cast<unsigned long long>(c.chunk_bytes),
+                c.coding == 0   ? "predicted on a grid"
+                : c.coding == 3 ? "unit normals, octahedral"
+                                : "exact binary32",
+                static_cast<unsigned long long>(c.chunk_bytes),
                 a.value_count() ? 8.0 * double(c.chunk_bytes) / double(a.value_count()) : 0.0);
   }
   if (f.loop_level_count) {

@@ -26,6 +26,7 @@
 #include "analytic_loop_files.h"
 #include "attribute_generators.h"
 #include "bitio/attribute_mapping.h"
+#include "bitio/octahedral_normal.h"
 #include "encoder/position_encoder.h"
 #include "chunk_list.h"
 #include "mesh_generators.h"
@@ -54,6 +55,7 @@ qmc::EncodeOptions format_1_4_options() {
 
 
 using qmc::Mesh;
+using qmc::MeshAttribute;
 
 using qmc::tools::Chunk;
 using qmc::tools::Chunks;
@@ -1885,6 +1887,28 @@ std::vector<uint8_t> attr_payload(const AttrFields& f) {
   return p;
 }
 
+// Where an aTTR payload's components byte is, and the first byte after its
+// coding (mapping_bytes, or coding 3's bits).
+struct AttrFieldOffsets {
+  size_t components, after_coding;
+};
+AttrFieldOffsets attr_field_offsets(const std::vector<uint8_t>& payload) {
+  qmc::ByteReader r(payload.data(), payload.size());
+  uint64_t skip = 0;
+  uint8_t byte = 0;
+  r.get_varint(&skip);
+  r.get_varint(&skip);
+  r.get_u8(&byte);
+  r.skip(byte);
+  AttrFieldOffsets at;
+  at.components = r.position() + 1;
+  for (int i = 0; i < 3; ++i) r.get_u8(&byte);  // kind, components, mapping
+  r.get_varint(&skip);
+  r.get_u8(&byte);  // coding
+  at.after_coding = r.position();
+  return at;
+}
+
 // A mapping stream (15.3) of the given choices, one per corner of `corners`.
 std::vector<uint8_t> mapping_stream(const std::vector<uint32_t>& corners, uint32_t vertex_count, uint64_t value_count,
                                     const std::vector<qmc::MappingChoice>& choices) {
@@ -1907,7 +1931,8 @@ std::vector<uint8_t> exact_values(size_t floats) {
 
 void write_attribute_valid(VectorWriter* w) {
   using namespace qmc::tools;
-  qmc::EncodeOptions options;  // what `qmc encode` writes
+  qmc::EncodeOptions options;  // what `qmc encode` wrote before normals took 15.8's coding
+  options.octahedral_normals = false;
   Mesh sphere = perturbed(triangulated(make_refined_sphere(3)), 7, 0.01f);
   add_chart_texcoords(&sphere);
   w->valid("valid_attr_texcoord_seams", encode_with(sphere, options, "seams"), &sphere);
@@ -1987,6 +2012,7 @@ void write_attribute_errors(VectorWriter* w) {
   using qmc::ErrorCode;
   using namespace qmc::tools;
   qmc::EncodeOptions options;
+  options.octahedral_normals = false;
   const std::vector<uint8_t> cube = encode_with(make_cube(), options, "cube");
   qmc::DecodedFile decoded;
   (void)qmc::decode(cube.data(), cube.size(), &decoded);
@@ -2081,17 +2107,9 @@ void write_attribute_errors(VectorWriter* w) {
     add_random_corner_attribute(&grid, 9, "t", qmc::AttributeKind::kGeneric, 1);
     Chunks c = split_chunks(encode_with(grid, options, "grid"));
     std::vector<uint8_t>& p = c[find_chunk(c, qmc::kChunkAttribute)].payload;
+    const size_t length_at = attr_field_offsets(p).after_coding;
     qmc::ByteReader r(p.data(), p.size());
-    uint64_t skip = 0;
-    uint8_t byte = 0;
-    r.get_varint(&skip);
-    r.get_varint(&skip);
-    r.get_u8(&byte);
-    r.skip(byte);
-    for (int i = 0; i < 3; ++i) r.get_u8(&byte);  // kind, components, mapping
-    r.get_varint(&skip);
-    r.get_u8(&byte);  // coding
-    const size_t length_at = r.position();
+    r.skip(length_at);
     uint64_t length = 0;
     r.get_varint(&length);
     std::vector<uint8_t> cut(p.begin(), p.begin() + std::ptrdiff_t(length_at));
@@ -2201,6 +2219,107 @@ void write_attribute_errors(VectorWriter* w) {
   invalid("invalid_attr_values_bytes_after_data", x, ErrorCode::kBadChunkPayload);
 }
 
+// Section 15.8: unit normals on the octahedral grid, predicted from the positions.
+void write_octahedral_normal_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  using namespace qmc::tools;
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  Mesh sphere = perturbed(triangulated(make_refined_sphere(2)), 11, 0.02f);
+  add_vertex_normals(&sphere);
+  const std::vector<uint8_t> smooth = encode_with(sphere, options, "octahedral sphere");
+  w->valid("valid_attr_octahedral_vertex_normals", smooth, &sphere);
+  // Per-corner normals of a cube's flat faces: every axis up once, both signs (frames t = 0, 1, 2, sigma = -1, +1).
+  Mesh cube = make_cube();
+  {
+    MeshAttribute flat{"normal", qmc::AttributeKind::kNormal, 3, {}, {}};
+    size_t k0 = 0;
+    for (uint32_t d : cube.face_sizes) {
+      double n[3] = {0, 0, 0};
+      for (uint32_t i = 0; i < d; ++i) {
+        const float* p = &cube.positions[3 * size_t(cube.corners[k0 + i])];
+        const float* q = &cube.positions[3 * size_t(cube.corners[k0 + (i + 1) % d])];
+        n[0] += (double(p[1]) - q[1]) * (double(p[2]) + q[2]);
+        n[1] += (double(p[2]) - q[2]) * (double(p[0]) + q[0]);
+        n[2] += (double(p[0]) - q[0]) * (double(p[1]) + q[1]);
+      }
+      const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      const uint32_t value = uint32_t(flat.value_count());
+      for (int a = 0; a < 3; ++a) flat.values.push_back(float(n[a] / l));
+      for (uint32_t i = 0; i < d; ++i) flat.corner_values.push_back(value);
+      k0 += d;
+    }
+    cube.attributes.push_back(flat);
+  }
+  qmc::EncodeOptions sixteen = options;
+  sixteen.normal_bits = 16;
+  w->valid("valid_attr_octahedral_face_normals_16_bits", encode_with(cube, sixteen, "octahedral cube"), &cube);
+  qmc::EncodeOptions two = options;
+  two.normal_bits = 2;
+  w->valid("valid_attr_octahedral_2_bits", encode_with(sphere, two, "octahedral 2 bits"), nullptr);
+
+  // Invalid: the payload of the sphere's normals with one thing broken.
+  Chunks c = split_chunks(smooth);
+  const size_t at = find_chunk(c, qmc::kChunkAttribute);
+  const std::vector<uint8_t> payload = c[at].payload;
+  const size_t components_at = attr_field_offsets(payload).components, bits_at = attr_field_offsets(payload).after_coding;
+  const auto with_payload = [&](std::vector<uint8_t> p) {
+    Chunks broken = c;
+    broken[at].payload = std::move(p);
+    return join_chunks(broken);
+  };
+  std::vector<uint8_t> p = payload;
+  p[bits_at] = 1;
+  w->invalid("invalid_attr_octahedral_bits_1", with_payload(p), ErrorCode::kBadChunkPayload);
+  p[bits_at] = 17;
+  w->invalid("invalid_attr_octahedral_bits_17", with_payload(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  p[components_at] = 2;
+  w->invalid("invalid_attr_octahedral_two_components", with_payload(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  p.insert(p.end(), 8, 0);
+  w->invalid("invalid_attr_octahedral_bytes_after_data", with_payload(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  p.resize(bits_at + 1 + 4);
+  p[bits_at + 1] = p[bits_at + 2] = p[bits_at + 3] = p[bits_at + 4] = 0xFF;
+  w->invalid("invalid_attr_octahedral_bad_start", with_payload(p), ErrorCode::kBadChunkPayload);
+  // The longest cut of the stream that runs out of bytes.
+  bool truncated = false, outside = false;
+  for (size_t n = payload.size(); n-- > bits_at + 1 && !truncated;) {
+    std::vector<uint8_t> cut(payload.begin(), payload.begin() + std::ptrdiff_t(n));
+    const std::vector<uint8_t> file = with_payload(cut);
+    qmc::DecodedFile d;
+    if (qmc::decode(file.data(), file.size(), &d).code() != ErrorCode::kTruncated) continue;
+    w->invalid("invalid_attr_octahedral_truncated", file, ErrorCode::kTruncated);
+    truncated = true;
+  }
+  {
+    // B = 2 (M = 3) and value 0's u residual 3 away from its prediction, on the far side.
+    qmc::DecodedFile d;
+    (void)qmc::decode(smooth.data(), smooth.size(), &d);
+    qmc::ValueCorners value_corners;
+    value_corners.build(d.mesh.corners, d.mesh.vertex_count());
+    qmc::CornerCycle cycle;
+    cycle.build(d.mesh.face_sizes, d.mesh.corners.size());
+    qmc::OctahedralFrame frame;
+    uint32_t pu = 0, pv = 0;
+    qmc::predict_octahedral(value_corners.begin(0), value_corners.end(0), d.mesh.corners, cycle, d.quantized.data(), 3,
+                            &frame, &pu, &pv);
+    qmc::RangeEncoder rc;
+    qmc::OctahedralModel model;
+    qmc::code_octahedral_residual(&rc, &model, 2, 0, 0, qmc::SignedResidual{3, pu == 0});
+    const std::vector<uint8_t> stream = rc.finish();
+    p.assign(payload.begin(), payload.begin() + std::ptrdiff_t(bits_at));
+    p.push_back(2);
+    p.insert(p.end(), stream.begin(), stream.end());
+    w->invalid("invalid_attr_octahedral_outside_grid", with_payload(p), ErrorCode::kBadSymbol);
+    outside = true;
+  }
+  if (!truncated || !outside) {
+    std::fprintf(stderr, "qmc-make-vectors: octahedral: no truncated cut or no outside-grid stream\n");
+    std::exit(3);
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: qmc-make-vectors DIR   (writes DIR/MANIFEST and DIR/vectors/*.qmc)\n");
@@ -2229,6 +2348,7 @@ int main(int argc, char** argv) {
   write_context_coded_errors(&w);
   write_attribute_valid(&w);
   write_attribute_errors(&w);
+  write_octahedral_normal_vectors(&w);
   w.finish();
   return 0;
 }

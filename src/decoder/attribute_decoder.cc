@@ -10,6 +10,7 @@
 #include "bitio/attribute_mapping.h"
 #include "bitio/byte_io.h"
 #include "bitio/exact_arith.h"
+#include "bitio/octahedral_normal.h"
 #include "bitio/range_coder.h"
 #include "decoder/position_decoder.h"
 
@@ -17,7 +18,9 @@ namespace qmc {
 namespace {
 
 constexpr uint8_t kMappingPerVertex = 0, kMappingPerCorner = 1;
-constexpr uint8_t kCodingGrid = 0, kCodingExact = 1;
+constexpr uint8_t kCodingGrid = 0, kCodingExact = 1, kCodingOctahedral = 3;
+// 15.1: coding 2 stays unassigned (the vector valid_attr_unknown_coding_skipped uses it).
+constexpr uint8_t kCodingUnassigned = 2;
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
 
 struct Header {
@@ -28,8 +31,8 @@ struct Header {
   size_t mapping_bytes = 0;
 };
 
-Status bad(const Header& h, const std::string& message) {
-  return Status(ErrorCode::kBadChunkPayload, h.label + ": " + message + " (section 15.1)");
+Status bad(const Header& h, const std::string& message, const char* section = "15.1") {
+  return Status(ErrorCode::kBadChunkPayload, h.label + ": " + message + " (section " + section + ")");
 }
 
 uint64_t corner_count(const Mesh& faces) { return faces.corners.size(); }
@@ -68,10 +71,12 @@ Status read_sizes(ByteReader* in, uint32_t vertex_count, Header* h, bool* skippe
     return bad(*h, "value_count " + std::to_string(h->value_count) + " is not V = " + std::to_string(vertex_count) +
                        " with mapping 0");
   if (!in->get_u8(&h->coding)) return bad(*h, "coding missing");
-  if (h->coding > kCodingExact) {
+  if (h->coding > kCodingOctahedral || h->coding == kCodingUnassigned) {  // 15.1 check 6
     *skipped = true;
     return Status::Ok();
   }
+  if (h->coding == kCodingOctahedral && h->components != 3)
+    return bad(*h, "coding 3 (octahedral normals) with " + std::to_string(h->components) + " components, not 3");
   if (h->mapping == kMappingPerCorner) {
     uint64_t m = 0;
     if (!in->get_varint(&m) || m > in->remaining())
@@ -84,7 +89,7 @@ Status read_sizes(ByteReader* in, uint32_t vertex_count, Header* h, bool* skippe
   if (h->coding == kCodingExact && rest != 4 * uint64_t(h->components) * h->value_count)
     return bad(*h, std::to_string(rest) + " bytes of values, not 4 C N = " +
                        std::to_string(4 * uint64_t(h->components) * h->value_count));
-  if (h->coding == kCodingGrid && !range_stream_justifies(h->value_count, rest))
+  if (h->coding != kCodingExact && !range_stream_justifies(h->value_count, rest))
     return Status(ErrorCode::kLimitExceeded, h->label + ": " + std::to_string(h->value_count) + " values for " +
                                                  std::to_string(rest) + " bytes, above 512 (L + 8) (section 15.1)");
   return Status::Ok();
@@ -172,6 +177,57 @@ Status decode_grid_values(ByteReader* in, const Header& h, const Mesh& faces, co
   return Status::Ok();
 }
 
+Status truncated_in_value(const Header& h, size_t i) {
+  return Status(ErrorCode::kTruncated,
+                h.label + ": the range-coded stream ends inside value " + std::to_string(i) + " (section 15.8)");
+}
+
+// Section 15.8: unit normals on the octahedral grid of B bits, each in the
+// frame of its prediction from the positions q (coder order).
+Status decode_octahedral_values(ByteReader* in, const Header& h, const Mesh& faces, const std::vector<uint32_t>& m,
+                                const std::vector<uint32_t>& q, AttributeCoding* coding, std::vector<float>* values) {
+  uint8_t bits = 0;
+  if (!in->get_u8(&bits) || bits < kOctahedralMinBits || bits > kOctahedralMaxBits)
+    return bad(h, "bits missing or outside 2..16", "15.8");
+  coding->top = {uint32_t((1u << bits) - 1), uint32_t((1u << bits) - 1), 0};
+  const uint32_t steps = coding->top[0];
+  RangeDecoder rc(in->cursor(), in->remaining());
+  if (rc.bad_start())
+    return Status(ErrorCode::kBadChunkPayload, h.label + ": the values' stream starts with 0xFFFFFFFF (section 13.5.2)");
+  ValueCorners value_corners;
+  value_corners.build(m, size_t(h.value_count));
+  CornerCycle cycle;
+  cycle.build(faces.face_sizes, faces.corners.size());
+  OctahedralModel model;
+  values->resize(3 * size_t(h.value_count));
+  uint32_t activity = 0;
+  for (size_t i = 0; i < size_t(h.value_count); ++i) {
+    OctahedralFrame frame;
+    uint32_t predicted[2];
+    predict_octahedral(value_corners.begin(i), value_corners.end(i), faces.corners, cycle, q.data(), steps, &frame,
+                       &predicted[0], &predicted[1]);
+    const int bucket = octahedral_bucket(activity);
+    uint32_t grid[2];
+    activity = 0;
+    for (int e = 0; e < 2; ++e) {
+      const SignedResidual r = code_octahedral_residual(&rc, &model, bits, bucket, e, SignedResidual{});
+      if (rc.overrun()) return truncated_in_value(h, i);
+      const int64_t g = int64_t(predicted[e]) + (r.negative ? -int64_t(r.magnitude) : int64_t(r.magnitude));
+      if (g < 0 || g > int64_t(steps))
+        return Status(ErrorCode::kBadSymbol, h.label + ": value " + std::to_string(i) + " " + (e ? "v" : "u") +
+                                                 " decodes to " + std::to_string(g) + ", outside 0.." +
+                                                 std::to_string(steps) + " (section 15.8)");
+      grid[e] = uint32_t(g);
+      activity += r.magnitude;
+    }
+    octahedral_output(grid[0], grid[1], steps, frame, &(*values)[3 * i]);
+  }
+  if (rc.unread() != 0)
+    return Status(ErrorCode::kBadChunkPayload, h.label + ": " + std::to_string(rc.unread()) +
+                                                   " bytes after the range-coded data (section 13.5.2)");
+  return Status::Ok();
+}
+
 // Section 15.5: binary32 as stored, NaN payloads included.
 void read_exact_values(ByteReader* in, size_t count, std::vector<float>* values) {
   values->resize(count);
@@ -184,8 +240,8 @@ void read_exact_values(ByteReader* in, size_t count, std::vector<float>* values)
 }  // namespace
 
 Status decode_attribute(const uint8_t* payload, size_t size, const Mesh& faces, uint32_t vertex_count,
-                        const std::vector<MeshAttribute>& earlier, OutputBudget* budget, MeshAttribute* out,
-                        AttributeCoding* coding, bool* skipped) {
+                        const std::vector<uint32_t>& quantized, const std::vector<MeshAttribute>& earlier,
+                        OutputBudget* budget, MeshAttribute* out, AttributeCoding* coding, bool* skipped) {
   *out = MeshAttribute{};
   *coding = AttributeCoding{};
   *skipped = false;
@@ -214,6 +270,8 @@ Status decode_attribute(const uint8_t* payload, size_t size, const Mesh& faces, 
     read_exact_values(&in, size_t(h.value_count) * h.components, &out->values);
     return Status::Ok();
   }
+  if (h.coding == kCodingOctahedral)
+    return decode_octahedral_values(&in, h, faces, out->corner_values, quantized, coding, &out->values);
   return decode_grid_values(&in, h, faces, out->corner_values, coding, &out->values);
 }
 

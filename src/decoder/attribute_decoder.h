@@ -20,8 +20,10 @@ namespace qmc {
 // the budget before reserving it.
 // *coding says how it was coded (mapping 0's values move with the vertices
 // when oRDR is applied).
+// `quantized` holds POSN's integers in coder order (3 per vertex), from
+// which coding 3 predicts normals (15.8).
 Status decode_attribute(const uint8_t* payload, size_t size, const Mesh& faces, uint32_t vertex_count,
-                        const std::vector<MeshAttribute>& earlier, OutputBudget* budget, MeshAttribute* out,
-                        AttributeCoding* coding, bool* skipped);
+                        const std::vector<uint32_t>& quantized, const std::vector<MeshAttribute>& earlier,
+                        OutputBudget* budget, MeshAttribute* out, AttributeCoding* coding, bool* skipped);
 
 }  // namespace qmc

@@ -254,8 +254,8 @@ Status StreamDecoder::State::handle_attribute(const uint8_t* payload, uint32_t l
   if (order_seen) return order_error("aTTR after oRDR (section 15.1)");
   MeshAttribute attribute;
   AttributeCoding coding;
-  if (Status s = decode_attribute(payload, length, file.mesh, vertex_count, file.mesh.attributes, &budget,
-                                  &attribute, &coding, skipped);
+  if (Status s = decode_attribute(payload, length, file.mesh, vertex_count, file.quantized, file.mesh.attributes,
+                                  &budget, &attribute, &coding, skipped);
       !s.ok() || *skipped)
     return s;
   file.mesh.attributes.push_back(std::move(attribute));

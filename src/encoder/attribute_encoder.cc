@@ -10,6 +10,7 @@
 
 #include "bitio/attribute_mapping.h"
 #include "bitio/byte_io.h"
+#include "bitio/octahedral_normal.h"
 #include "bitio/range_coder.h"
 #include "encoder/position_encoder.h"
 
@@ -17,7 +18,9 @@ namespace qmc {
 namespace {
 
 constexpr uint8_t kMappingPerVertex = 0, kMappingPerCorner = 1;
-constexpr uint8_t kCodingGrid = 0, kCodingExact = 1;
+constexpr uint8_t kCodingGrid = 0, kCodingExact = 1, kCodingOctahedral = 3;
+// 15.7: normals within this of unit length take coding 3.
+constexpr double kUnitTolerance = 1e-3;
 constexpr uint32_t kNone = UINT32_MAX;
 // The longest list S_v the encoder searches for a value of the vertex's own
 // (15.3); past it, a value is coded as met before, which is as valid.
@@ -129,6 +132,78 @@ std::vector<uint8_t> encode_grid_values(const std::vector<float>& table, uint32_
   return out;
 }
 
+// 15.7: normals all of unit length (within kUnitTolerance) fit coding 3.
+bool unit_normals(const MeshAttribute& a) {
+  if (a.kind != AttributeKind::kNormal || a.components != 3) return false;
+  for (size_t i = 0; i < a.value_count(); ++i) {
+    const double x = a.values[3 * i], y = a.values[3 * i + 1], z = a.values[3 * i + 2];
+    if (!(std::fabs(std::sqrt(x * x + y * y + z * z) - 1) <= kUnitTolerance)) return false;
+  }
+  return true;
+}
+
+// 15.7: the grid point, of the four around the octahedral projection of n in
+// `frame`, whose output (15.8) is nearest to n in angle.
+void nearest_octahedral(const float* n, OctahedralFrame frame, uint32_t steps, uint32_t grid[2]) {
+  const double x = n[(frame.t + 1) % 3], y = n[(frame.t + 2) % 3], z = double(frame.sigma) * n[frame.t];
+  const double l1 = std::fabs(x) + std::fabs(y) + std::fabs(z);
+  double u = x / l1, v = y / l1;
+  if (z < 0) {
+    const double fu = (u < 0 ? -1.0 : 1.0) * (1 - std::fabs(v)), fv = (v < 0 ? -1.0 : 1.0) * (1 - std::fabs(u));
+    u = fu;
+    v = fv;
+  }
+  const double gu = (u + 1) / 2 * steps, gv = (v + 1) / 2 * steps;
+  double best = -2;
+  for (int du = 0; du < 2; ++du)
+    for (int dv = 0; dv < 2; ++dv) {
+      const uint32_t cu = uint32_t(std::clamp(std::floor(gu) + du, 0.0, double(steps)));
+      const uint32_t cv = uint32_t(std::clamp(std::floor(gv) + dv, 0.0, double(steps)));
+      float out[3];
+      octahedral_output(cu, cv, steps, frame, out);
+      const double dot = double(out[0]) * n[0] + double(out[1]) * n[1] + double(out[2]) * n[2];
+      if (dot > best) {
+        best = dot;
+        grid[0] = cu;
+        grid[1] = cv;
+      }
+    }
+}
+
+// 15.8: bits, then the residuals of every value in its predicted frame; m
+// is the value of every corner, q the positions' integers in file order.
+std::vector<uint8_t> encode_octahedral_values(const std::vector<float>& table, int bits, const Mesh& mesh,
+                                              const std::vector<uint32_t>& m, const std::vector<uint32_t>& q) {
+  const size_t n = table.size() / 3;
+  const uint32_t steps = (1u << bits) - 1;
+  ValueCorners value_corners;
+  value_corners.build(m, n);
+  CornerCycle cycle;
+  cycle.build(mesh.face_sizes, mesh.corners.size());
+  OctahedralModel model;
+  RangeEncoder rc;
+  uint32_t activity = 0;
+  for (size_t i = 0; i < n; ++i) {
+    OctahedralFrame frame;
+    uint32_t predicted[2], grid[2];
+    predict_octahedral(value_corners.begin(i), value_corners.end(i), mesh.corners, cycle, q.data(), steps, &frame,
+                       &predicted[0], &predicted[1]);
+    nearest_octahedral(&table[3 * i], frame, steps, grid);
+    const int bucket = octahedral_bucket(activity);
+    activity = 0;
+    for (int e = 0; e < 2; ++e) {
+      const int64_t r = int64_t(grid[e]) - int64_t(predicted[e]);
+      const SignedResidual value{uint32_t(r < 0 ? -r : r), r < 0};
+      code_octahedral_residual(&rc, &model, bits, bucket, e, value);
+      activity += value.magnitude;
+    }
+  }
+  std::vector<uint8_t> out{uint8_t(bits)};
+  const std::vector<uint8_t> stream = rc.finish();
+  out.insert(out.end(), stream.begin(), stream.end());
+  return out;
+}
+
 }  // namespace
 
 std::string attribute_problem(const Mesh& mesh, size_t i, bool exact) {
@@ -156,8 +231,8 @@ std::string attribute_problem(const Mesh& mesh, size_t i, bool exact) {
 }
 
 Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, size_t vertex_count,
-                        const std::vector<uint64_t>& corner_source, const EncodeOptions& options,
-                        std::vector<uint8_t>* payload, AttributeStats* stats) {
+                        const std::vector<uint32_t>& quantized, const std::vector<uint64_t>& corner_source,
+                        const EncodeOptions& options, std::vector<uint8_t>* payload, AttributeStats* stats) {
   const uint32_t c = attribute.components;
   const size_t value_count = attribute.value_count();
   std::vector<uint32_t> corner_values(corner_source.size());
@@ -181,15 +256,30 @@ Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, s
   stats->per_corner = !per_vertex;
   stats->value_count = uint32_t(value_count);
   std::vector<uint8_t> values;
-  if (!options.exact_attributes) {
+  uint8_t coding = kCodingGrid;
+  const bool octahedral = !options.exact_attributes && options.octahedral_normals &&
+                          options.normal_bits >= kOctahedralMinBits &&
+                          options.normal_bits <= kOctahedralMaxBits && unit_normals(attribute) &&
+                          quantized.size() == 3 * vertex_count;
+  if (octahedral) {
+    values = encode_octahedral_values(table, options.normal_bits, file_mesh, per_vertex ? file_mesh.corners : m,
+                                      quantized);
+    if (!range_stream_justifies(value_count, values.size() - 1)) values.clear();
+    coding = values.empty() ? kCodingGrid : kCodingOctahedral;
+    stats->step = 2.0 / ((1u << options.normal_bits) - 1);
+  }
+  if (!options.exact_attributes && values.empty()) {
     Mesh attribute_mesh;
     attribute_mesh.face_sizes = file_mesh.face_sizes;
     attribute_mesh.corners = per_vertex ? file_mesh.corners : m;
     values = encode_grid_values(table, c, bits_for(attribute.kind, options), attribute_mesh, &stats->step);
   }
   stats->exact = values.empty();
-  if (stats->exact)
+  if (stats->exact) {
+    coding = kCodingExact;
     for (float x : table) put_f32le(&values, x);
+  }
+  stats->octahedral = coding == kCodingOctahedral;
 
   payload->clear();
   put_varint(payload, vertex_count);
@@ -200,7 +290,7 @@ Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, s
   put_u8(payload, uint8_t(c));
   put_u8(payload, per_vertex ? kMappingPerVertex : kMappingPerCorner);
   put_varint(payload, value_count);
-  put_u8(payload, stats->exact ? kCodingExact : kCodingGrid);
+  put_u8(payload, coding);
   if (!per_vertex) {
     const std::vector<uint8_t> mapping = encode_mapping(m, file_mesh, vertex_count, value_count);
     put_varint(payload, mapping.size());

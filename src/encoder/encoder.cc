@@ -14,6 +14,7 @@
 #include "encoder/loop_encoder.h"
 #include "encoder/order_encoder.h"
 #include "decoder/connectivity_decoder.h"
+#include "decoder/position_decoder.h"
 #include "encoder/polygon_connectivity_encoder.h"
 #include "encoder/position_encoder.h"
 #include "encoder/quad_connectivity_encoder.h"
@@ -237,16 +238,27 @@ Status corner_sources(const Mesh& mesh, const FileConnectivity& conn, std::vecto
   return Status::Ok();
 }
 
-// Section 15: an aTTR chunk per attribute, right after POSN.
+// Section 15: an aTTR chunk per attribute, right after POSN. Normals are
+// predicted from the integers the decoder gets from `positions` (15.8),
+// decoded here: the POSN payload may hold another grid than the one asked
+// for (method 0 when every vertex is on one point).
 Status add_attributes(const Mesh& mesh, const EncodeOptions& options, const FileConnectivity& conn,
-                      std::vector<uint8_t>* out, EncodeStats* st) {
+                      const std::vector<uint8_t>& positions, std::vector<uint8_t>* out, EncodeStats* st) {
   if (mesh.attributes.empty()) return Status::Ok();
   std::vector<uint64_t> source;
   if (Status s = corner_sources(mesh, conn, &source); !s.ok()) return s;
+  QuantizationInfo info;
+  std::vector<uint32_t> quantized;
+  std::vector<float> decoded;
+  if (Status s = decode_positions(positions.data(), positions.size(), conn.mesh, uint32_t(mesh.vertex_count()), &info,
+                                  &quantized, &decoded);
+      !s.ok())
+    return Status(ErrorCode::kInvalidArgument, "internal: the encoder's POSN does not decode: " + s.to_string());
   for (const MeshAttribute& attribute : mesh.attributes) {
     std::vector<uint8_t> payload;
     AttributeStats stats;
-    if (Status s = encode_attribute(attribute, conn.mesh, mesh.vertex_count(), source, options, &payload, &stats);
+    if (Status s = encode_attribute(attribute, conn.mesh, mesh.vertex_count(), quantized, source, options, &payload,
+                                    &stats);
         !s.ok())
       return s;
     add_chunk(out, st, kChunkAttribute, payload);
@@ -278,7 +290,7 @@ Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_
     add_chunk(out, &st, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));
   add_chunk(out, &st, kChunkConnectivity, conn.payload);
   add_chunk(out, &st, kChunkPositions, positions);
-  if (Status s = add_attributes(mesh, options, conn, out, &st); !s.ok()) return s;
+  if (Status s = add_attributes(mesh, options, conn, positions, out, &st); !s.ok()) return s;
   if (options.keep_order) {  // section 4.5: right after POSN, only if the coder order differs
     std::vector<uint8_t> order;
     if (Status s = encode_order(mesh, conn.mesh, conn.file_vertex, conn.face_source, &order); !s.ok()) return s;

@@ -1,0 +1,154 @@
+// Unit normals on an octahedral grid, predicted from the decoded positions
+// (spec/qmc-format.md section 15.8): the prediction's frame, its grid point,
+// the output of a grid point, and the decisions of one value. Shared by the
+// encoder and the decoder so the two cannot drift apart.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "bitio/exact_arith.h"
+#include "bitio/position_coding.h"
+#include "bitio/residual_code.h"
+
+namespace qmc {
+
+inline constexpr int kOctahedralMinBits = 2, kOctahedralMaxBits = 16;
+inline constexpr uint32_t kOctahedralCorners = 16;  // corners of a value that predict it
+inline constexpr int kOctahedralBuckets = 8;
+
+// 15.8's frame: axis t goes up, with sign sigma.
+struct OctahedralFrame {
+  int t = 2;
+  int sigma = 1;
+};
+
+// floor(x / 2^s) for any sign (15.8).
+inline int64_t floor_shift(int64_t x, int s) { return x >= 0 ? x >> s : -((-x - 1) >> s) - 1; }
+
+// The corners of every value, in corner order (m: the value of each corner).
+class ValueCorners {
+ public:
+  void build(const std::vector<uint32_t>& m, size_t value_count) {
+    first_.assign(value_count + 1, 0);
+    for (uint32_t v : m) ++first_[size_t(v) + 1];
+    for (size_t i = 0; i < value_count; ++i) first_[i + 1] += first_[i];
+    corners_.resize(m.size());
+    std::vector<uint32_t> next(first_.begin(), first_.end() - 1);
+    for (size_t k = 0; k < m.size(); ++k) corners_[next[m[k]]++] = uint32_t(k);
+  }
+  const uint32_t* begin(size_t i) const { return corners_.data() + first_[i]; }
+  const uint32_t* end(size_t i) const { return corners_.data() + first_[i + 1]; }
+
+ private:
+  std::vector<uint32_t> first_, corners_;
+};
+
+// Per corner, the corners after and before it in its face (along +1, -1).
+struct CornerCycle {
+  std::vector<uint32_t> next, previous;
+  void build(const std::vector<uint32_t>& face_sizes, size_t corner_count) {
+    next.resize(corner_count);
+    previous.resize(corner_count);
+    uint64_t start = 0;
+    for (uint32_t d : face_sizes) {
+      for (uint32_t i = 0; i < d; ++i) {
+        next[start + i] = uint32_t(start + (i + 1) % d);
+        previous[start + i] = uint32_t(start + (i + d - 1) % d);
+      }
+      start += d;
+    }
+  }
+};
+
+// 15.8's prediction of a value from the positions q (3 per vertex) at its
+// corners [first, last): the frame and the grid point (pu, pv) of M.
+inline void predict_octahedral(const uint32_t* first, const uint32_t* last, const std::vector<uint32_t>& corners,
+                               const CornerCycle& cycle, const uint32_t* q, uint32_t m_steps, OctahedralFrame* frame,
+                               uint32_t* pu, uint32_t* pv) {
+  last = first + std::min<ptrdiff_t>(last - first, kOctahedralCorners);
+  int64_t edge[kOctahedralCorners][2][3];
+  int64_t largest = 0;
+  for (const uint32_t* k = first; k != last; ++k) {
+    const uint32_t c = corners[*k], n = corners[cycle.next[*k]], p = corners[cycle.previous[*k]];
+    for (int a = 0; a < 3; ++a) {
+      int64_t* e = edge[k - first][0];
+      e[a] = int64_t(q[3 * size_t(n) + a]) - int64_t(q[3 * size_t(c) + a]);
+      e[3 + a] = int64_t(q[3 * size_t(p) + a]) - int64_t(q[3 * size_t(c) + a]);
+      largest = std::max({largest, e[a] < 0 ? -e[a] - 1 : e[a], e[3 + a] < 0 ? -e[3 + a] - 1 : e[3 + a]});
+    }
+  }
+  int s = 0;
+  while ((largest >> s) >= (int64_t(1) << 20)) ++s;  // floor(x / 2^s) in -2^20 .. 2^20 - 1
+  int64_t sum[3] = {0, 0, 0};
+  for (ptrdiff_t j = 0; j < last - first; ++j) {
+    int64_t a[3], b[3];
+    for (int i = 0; i < 3; ++i) {
+      a[i] = floor_shift(edge[j][0][i], s);
+      b[i] = floor_shift(edge[j][1][i], s);
+    }
+    sum[0] += a[1] * b[2] - a[2] * b[1];
+    sum[1] += a[2] * b[0] - a[0] * b[2];
+    sum[2] += a[0] * b[1] - a[1] * b[0];
+  }
+  const auto l1 = [&] { return std::abs(sum[0]) + std::abs(sum[1]) + std::abs(sum[2]); };
+  while (l1() >= (int64_t(1) << 40))
+    for (int64_t& x : sum) x = floor_shift(x, 1);
+  const int64_t l = l1();
+  *frame = OctahedralFrame{};
+  if (l == 0) {
+    *pu = *pv = m_steps / 2;
+    return;
+  }
+  int t = 0;
+  for (int a = 1; a < 3; ++a)
+    if (std::abs(sum[a]) > std::abs(sum[t])) t = a;
+  frame->t = t;
+  frame->sigma = sum[t] < 0 ? -1 : 1;
+  const int64_t x = sum[(t + 1) % 3], y = sum[(t + 2) % 3], m = m_steps;
+  *pu = uint32_t(((x + l) * m + l) / (2 * l));
+  *pv = uint32_t(((y + l) * m + l) / (2 * l));
+}
+
+// 15.8's output of grid point (gu, gv) of M in `frame`.
+inline void octahedral_output(uint32_t gu, uint32_t gv, uint32_t m_steps, OctahedralFrame frame, float out[3]) {
+  const double m = double(m_steps);
+  const double u = (2.0 * double(gu) - m) / m, v = (2.0 * double(gv) - m) / m;
+  const double w = 1.0 - std::fabs(u) - std::fabs(v);
+  double x = u, y = v;
+  if (w < 0) {
+    x = (u < 0 ? -1.0 : 1.0) * (1.0 - std::fabs(v));
+    y = (v < 0 ? -1.0 : 1.0) * (1.0 - std::fabs(u));
+  }
+  const double length = std::sqrt(rounded(rounded(mul(x, x) + mul(y, y)) + mul(w, w)));
+  out[(frame.t + 1) % 3] = float(x / length);
+  out[(frame.t + 2) % 3] = float(y / length);
+  out[frame.t] = float(double(frame.sigma) * w / length);
+}
+
+// 15.8's probabilities of one payload, all starting at 1024.
+struct OctahedralModel {
+  uint16_t cls[2][kOctahedralBuckets][kOctahedralMaxBits];
+  uint16_t sign[2];
+  uint16_t mantissa[kOctahedralMaxBits + 1][3];
+  OctahedralModel() {
+    std::fill(&cls[0][0][0], &cls[0][0][0] + sizeof(cls) / sizeof(uint16_t), uint16_t(1024));
+    std::fill(sign, sign + 2, uint16_t(1024));
+    std::fill(&mantissa[0][0], &mantissa[0][0] + sizeof(mantissa) / sizeof(uint16_t), uint16_t(1024));
+  }
+};
+
+// 15.8's bucket of a value: the activity |r_u| + |r_v| of the value before.
+inline int octahedral_bucket(uint32_t activity) { return std::min(bit_length(activity), kOctahedralBuckets - 1); }
+
+// 15.8's residual of component e (0: u, 1: v) of one value: decoded, or
+// `value` coded.
+template <class Coder>
+SignedResidual code_octahedral_residual(Coder* coder, OctahedralModel* model, int bits, int bucket, int e,
+                                        SignedResidual value) {
+  return code_class_residual(coder, model->cls[e][bucket], &model->sign[e], model->mantissa, bits, value);
+}
+
+}  // namespace qmc
