@@ -2,7 +2,7 @@
 """Runs any qmc decoder over the conformance vectors (spec/qmc-format.md 10.3).
 
     conformance/run.py --decoder "mydec {in} {out}" [--manifest conformance/MANIFEST]
-                       [--only PATTERN] [--skip-ordr] [--skip-attr] [--strict-errors] [--jobs N] [--timeout S]
+                       [--only PATTERN] [--skip-ordr] [--skip-attr] [--skip-flbl] [--strict-errors] [--jobs N] [--timeout S]
 
 The decoder command is a shell command line in which {in} is replaced by the
 vector's path and {out} by the path of a file to write, both quoted for the
@@ -39,6 +39,7 @@ EXIT_OK, EXIT_FAILED, EXIT_USAGE = 0, 1, 2
 # without 4.5 is not checked on.
 ORDR_PREFIXES = ("valid_ordr_", "invalid_ordr_")
 ATTR_PREFIXES = ("valid_attr_", "invalid_attr_")
+FLBL_PREFIXES = ("valid_flbl_", "invalid_flbl_")
 
 
 class UsageError(Exception):
@@ -127,7 +128,7 @@ def check(vector, template, work_dir, timeout, strict_errors):
     return None
 
 
-def select(vectors, only, skip_ordr, skip_attr=False):
+def select(vectors, only, skip_ordr, skip_attr=False, skip_flbl=False):
     """(vector, skip reason or None) for the vectors --only keeps."""
     chosen = []
     for v in vectors:
@@ -138,6 +139,8 @@ def select(vectors, only, skip_ordr, skip_attr=False):
             reason = "oRDR vector (--skip-ordr, spec 10.1)"
         if skip_attr and v.name.startswith(ATTR_PREFIXES):
             reason = "aTTR vector (--skip-attr, spec 10.1)"
+        if skip_flbl and v.name.startswith(FLBL_PREFIXES):
+            reason = "fLBL vector (--skip-flbl, spec 10.1)"
         chosen.append((v, reason))
     return chosen
 
@@ -152,6 +155,8 @@ def parse_args(argv):
     p.add_argument("--skip-ordr", action="store_true", help="skip the valid_ordr_*/invalid_ordr_* vectors (spec 10.1)")
     p.add_argument("--skip-attr", action="store_true",
                    help="skip the valid_attr_*/invalid_attr_* vectors, for a decoder without section 15 (spec 10.1)")
+    p.add_argument("--skip-flbl", action="store_true",
+                   help="skip the valid_flbl_*/invalid_flbl_* vectors, for a decoder without section 16 (spec 10.1)")
     p.add_argument("--strict-errors", action="store_true",
                    help="a rejection must also print the manifest's error identifier (spec 9)")
     p.add_argument("--jobs", type=int, default=1, metavar="N", help="vectors decoded at once (default 1)")
@@ -167,7 +172,7 @@ def parse_args(argv):
 def main(argv):
     args = parse_args(argv)
     try:
-        chosen = select(read_manifest(args.manifest), args.only, args.skip_ordr, args.skip_attr)
+        chosen = select(read_manifest(args.manifest), args.only, args.skip_ordr, args.skip_attr, args.skip_flbl)
     except UsageError as e:
         print(f"run.py: {e}", file=sys.stderr)
         return EXIT_USAGE

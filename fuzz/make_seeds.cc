@@ -96,7 +96,7 @@ int main(int argc, char** argv) {
   const fs::path out = argv[2];
   for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "polygon_connectivity", "polygon_coding7", "positions",
                         "predicted_positions",
-                        "huffman", "roundtrip", "order", "loop_levels", "gim_file", "gim_plane", "attributes"})
+                        "huffman", "roundtrip", "order", "loop_levels", "gim_file", "gim_plane", "attributes", "face_labels"})
     fs::create_directories(out / t);
   int n = 0;
   for (const auto& entry : fs::directory_iterator(argv[1])) {
@@ -165,6 +165,15 @@ int main(int argc, char** argv) {
         seed.insert(seed.end(), conn.begin(), conn.end());
         seed.insert(seed.end(), payload, payload + length);
         write(out / "attributes" / (name + "_" + std::to_string(pos)), seed.data(), seed.size());
+      }
+      if (type == qmc::kChunkFaceLabels && length <= 0xFFFF) {  // face_labels input: u16le F, the payload
+        qmc::ByteReader r(payload, length);
+        uint64_t faces = 0;
+        if (r.get_varint(&faces) && faces <= 0xFFFF) {
+          std::vector<uint8_t> seed{uint8_t(faces), uint8_t(faces >> 8)};
+          seed.insert(seed.end(), payload, payload + length);
+          write(out / "face_labels" / (name + "_" + std::to_string(pos)), seed.data(), seed.size());
+        }
       }
       if (type == qmc::kChunkOrder && !conn.empty()) {
         std::vector<uint8_t> seed{uint8_t(conn.size()), uint8_t(conn.size() >> 8)};

@@ -224,21 +224,27 @@ contains encode-obj-without-geometry-message "$work/err" "nogeometry.obj line 1:
 check encode-stl-count-0 3 "$qmc" encode "$work/count0.stl" "$work/x.qmc"
 contains encode-stl-count-0-message "$work/err" "header says 0 triangles but the file's 234 bytes hold 3"
 { printf 'mtllib m.mtl\ng side\nusemtl red\ns 1\no cube\n'; cat "$work/torus.obj"; } >"$work/groups.obj"
+# Spec 16: objects, groups, materials and smoothing groups travel as face labels.
+check encode-groups 0 "$qmc" encode "$work/groups.obj" "$work/groups.qmc"
+check verify-groups 0 "$qmc" verify "$work/groups.obj" "$work/groups.qmc"
+contains verify-groups-material "$work/out" "labels    material: on every face, 1 values"
+check decode-groups 0 "$qmc" decode "$work/groups.qmc" "$work/groups_back.obj"
+contains decode-groups-mtllib "$work/groups_back.obj" "^mtllib m.mtl$"
+contains decode-groups-usemtl "$work/groups_back.obj" "^usemtl red$"
+check decode-groups-off-refused 3 "$qmc" decode "$work/groups.qmc" "$work/groups_back.off"
 # What the format cannot carry yet is an error naming it and the flag that drops it ...
-check encode-groups-refused 3 "$qmc" encode "$work/groups.obj" "$work/groups.qmc"
-contains encode-groups-refused-names-flag "$work/err" "pass --drop-unsupported"
-contains encode-groups-refused-g "$work/err" "  ignored group (g) lines: 1"
-check encode-groups-refused-no-output 0 test ! -e "$work/groups.qmc"
+{ echo "v 0 0 0 1 0 0"; echo "v 1 0 0 0 1 0"; echo "v 0 1 0 0 0 1"; echo "f 1 2 3"; echo "l 1 2"; } >"$work/colours.obj"
+check encode-colours-refused 3 "$qmc" encode "$work/colours.obj" "$work/colours.qmc"
+contains encode-colours-refused-names-flag "$work/err" "pass --drop-unsupported"
+contains encode-colours-refused-colours "$work/err" "  ignored per-vertex colours on v lines: 3"
+check encode-colours-refused-no-output 0 test ! -e "$work/colours.qmc"
 # ... and with the flag, a list of what was dropped.
-check encode-groups-noted 0 "$qmc" encode "$work/groups.obj" "$work/groups.qmc" --drop-unsupported
-contains encode-groups-noted-g "$work/err" "dropped (--drop-unsupported): .*groups.obj: ignored group (g) lines: 1"
-contains encode-groups-noted-usemtl "$work/err" "ignored material (usemtl) lines: 1"
-contains encode-groups-noted-mtllib "$work/err" "ignored material library (mtllib) lines: 1"
-contains encode-groups-noted-s "$work/err" "ignored smoothing group (s) lines: 1"
-contains encode-groups-noted-o "$work/err" "ignored object name (o) lines: 1"
-check encode-groups-quiet 0 "$qmc" encode "$work/groups.obj" "$work/groups.qmc" --quiet --drop-unsupported
+check encode-colours-noted 0 "$qmc" encode "$work/colours.obj" "$work/colours.qmc" --drop-unsupported
+contains encode-colours-noted-colours "$work/err" "dropped (--drop-unsupported): .*colours.obj: ignored per-vertex colours on v lines: 3"
+contains encode-colours-noted-l "$work/err" "ignored polyline (l) elements: 1"
+check encode-colours-quiet 0 "$qmc" encode "$work/colours.obj" "$work/colours.qmc" --quiet --drop-unsupported
 cp "$work/err" "$work/quiet.err"
-check encode-groups-quiet-says-nothing 0 test ! -s "$work/quiet.err"
+check encode-colours-quiet-says-nothing 0 test ! -s "$work/quiet.err"
 
 # Spec 8.1: a 68-byte file claiming 20 M vertices is refused by the default
 # limits, naming the option; without limits its real fault (12.2 rule 4) shows.

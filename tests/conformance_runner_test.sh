@@ -56,16 +56,19 @@ check crash 1 --decoder "sh -c 'kill -SEGV \$\$' # {in} {out}" --only invalid_cr
 contains crash-reason "killed by a signal"
 
 # --skip-ordr skips valid_ordr_* and invalid_ordr_* only: invalid_loop_with_ordr
-# binds every decoder (spec 12.1), invalid_attr_after_ordr every decoder of
-# section 15.
+# binds every decoder (spec 12.1), invalid_attr_after_ordr and
+# invalid_flbl_after_ordr every decoder of sections 15 and 16.
 ordr=$(grep -c -E '^(valid|invalid) +vectors/(valid|invalid)_ordr_' "$dir/MANIFEST")
 check skip-ordr 0 --decoder "$reference" --only '*ordr*' --skip-ordr --strict-errors
-last_line skip-ordr-summary "2 passed, 0 failed, $ordr skipped"
+last_line skip-ordr-summary "3 passed, 0 failed, $ordr skipped"
 contains skip-ordr-loop "PASS invalid invalid_loop_with_ordr"
 # --skip-attr skips the aTTR vectors (spec 10.1), not the geometry images' attribute planes.
 attr=$(grep -c -E '^(valid|invalid) +vectors/(valid|invalid)_attr_' "$dir/MANIFEST")
 check skip-attr 0 --decoder "$reference" --only '*attr*' --skip-attr --strict-errors
 last_line skip-attr-summary "2 passed, 0 failed, $attr skipped"
+flbl=$(grep -c -E '^(valid|invalid) +vectors/(valid|invalid)_flbl_' "$dir/MANIFEST")
+check skip-flbl 0 --decoder "$reference" --only '*flbl*' --skip-flbl --strict-errors
+last_line skip-flbl-summary "0 passed, 0 failed, $flbl skipped"
 
 check no-out-placeholder 2 --decoder "true {in}"
 check nothing-selected 2 --decoder "$reference" --only 'no_such_vector'

@@ -207,27 +207,42 @@ TEST(MeshIo, ObjReadsAllFaceFormsAndWarns) {
   EXPECT_TRUE(has_warning(warnings, "(l) elements: 1")) << joined(warnings);
   EXPECT_TRUE(has_warning(warnings, "(p) elements: 1")) << joined(warnings);
   EXPECT_TRUE(has_warning(warnings, "unknown keyword 'curv': 1")) << joined(warnings);
-  EXPECT_TRUE(has_warning(warnings, "group (g) lines: 1")) << joined(warnings);  // and o, s, usemtl, mtllib
-  EXPECT_EQ(warnings.size(), 12u) << joined(warnings);
+  EXPECT_EQ(mesh.face_labels.size(), 4u);  // o, g, usemtl (with mtllib), s: spec 16
+  EXPECT_EQ(warnings.size(), 7u) << joined(warnings);
 }
 
-// Issue #12 item 8: groups, objects, materials and smoothing groups are not
-// kept yet, and never vanish without a counted note.
-TEST(MeshIo, ObjGroupsObjectsAndMaterialsAreCounted) {
+// Spec 16: groups, objects, materials (with their libraries) and smoothing
+// groups become face labels, each face with the value its statements set.
+TEST(MeshIo, ObjGroupsObjectsAndMaterialsAreFaceLabels) {
   const std::string obj =
       "mtllib a.mtl b.mtl\no box\ng left\nusemtl red\ns 1\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
-      "f 1 2 3\ng right\nusemtl blue\ns off\nf 2 4 3\nusemtl red\n";
+      "f 1 2 3\ng right\nusemtl blue\ns off\nf 2 4 3\nusemtl red\nf 1 4 2\n";
   Mesh mesh;
   std::vector<std::string> warnings;
   ASSERT_TRUE(read_text(obj, "obj", &mesh, &warnings).ok());
-  EXPECT_EQ(mesh.face_count(), 2u);
-  EXPECT_TRUE(has_warning(warnings, "ignored group (g) lines: 2")) << joined(warnings);
-  EXPECT_TRUE(has_warning(warnings, "ignored object name (o) lines: 1")) << joined(warnings);
-  // "s 1" counts; "s off" only states the default, so it carries nothing.
-  EXPECT_TRUE(has_warning(warnings, "ignored smoothing group (s) lines: 1")) << joined(warnings);
-  EXPECT_TRUE(has_warning(warnings, "ignored material (usemtl) lines: 3")) << joined(warnings);
-  EXPECT_TRUE(has_warning(warnings, "ignored material library (mtllib) lines: 1")) << joined(warnings);
-  EXPECT_EQ(warnings.size(), 5u) << joined(warnings);
+  EXPECT_TRUE(warnings.empty()) << joined(warnings);
+  ASSERT_EQ(mesh.face_labels.size(), 4u);
+  const FaceLabels& object = mesh.face_labels[0];
+  const FaceLabels& group = mesh.face_labels[1];
+  const FaceLabels& material = mesh.face_labels[2];
+  const FaceLabels& smoothing = mesh.face_labels[3];
+  EXPECT_EQ(object.name, "object");
+  EXPECT_EQ(object.face_values, (std::vector<uint32_t>{0, 0, 0}));
+  EXPECT_EQ(group.values, (std::vector<std::string>{"left", "right"}));
+  EXPECT_EQ(group.face_values, (std::vector<uint32_t>{0, 1, 1}));
+  EXPECT_EQ(material.references, (std::vector<std::string>{"a.mtl", "b.mtl"}));
+  EXPECT_EQ(material.values, (std::vector<std::string>{"red", "blue"}));
+  EXPECT_EQ(material.face_values, (std::vector<uint32_t>{0, 1, 0}));
+  EXPECT_EQ(smoothing.values, (std::vector<std::string>{"1", "off"}));
+  std::string written;
+  ASSERT_TRUE(write_mesh_to_memory(mesh, "obj", &written).ok());
+  Mesh again;
+  ASSERT_TRUE(read_text(written, "obj", &again, nullptr).ok());
+  for (size_t j = 0; j < 4; ++j) {
+    EXPECT_EQ(again.face_labels[j].values, mesh.face_labels[j].values) << j;
+    EXPECT_EQ(again.face_labels[j].face_values, mesh.face_labels[j].face_values) << j;
+    EXPECT_EQ(again.face_labels[j].references, mesh.face_labels[j].references) << j;
+  }
 }
 
 // Issue #12 item 8: a file named .obj that is not an OBJ mesh is an error

@@ -86,10 +86,11 @@ const char kHelp[] =
     "  --normal-bits N     normals likewise (default 10: within 0.1 degree)\n"
     "  --color-bits N      colours likewise (default 10)\n"
     "  --exact-attributes  keep every attribute value bit for bit (binary32)\n"
-    "  --drop NAME         leave attribute NAME out (texcoord, normal), saying so;\n"
-    "                      progressive files and geometry images carry none\n"
+    "  --drop NAME         leave attribute or face labels NAME out (texcoord,\n"
+    "                      normal, object, group, material, smoothing), saying\n"
+    "                      so; progressive files and geometry images carry none\n"
     "  --drop-unsupported  encode without what the file format cannot carry yet\n"
-    "                      (colours, groups, materials, attributes of a\n"
+    "                      (colours, PLY properties, attributes of a\n"
     "                      progressive file or geometry image...), listing it;\n"
     "                      without it such input is an error that names what\n"
     "                      would be lost\n"
@@ -464,32 +465,40 @@ int refuse_dropping(const EncodeArgs& args, const std::vector<std::string>& note
   return -1;
 }
 
-// --drop NAME leaves an attribute out, and so does --drop-unsupported for a
-// progressive file or a geometry image (spec 15.1: they carry none); what
-// is left out is printed. An attribute those files would lose without
-// either is an error naming the flags. Returns -1 to go on, else the exit code.
+// --drop NAME leaves an attribute or face labels (spec 16) out, and
+// --drop-unsupported all of them for a progressive file or a geometry image
+// (spec 15.1, 16.1: they carry none); what is left out is printed. What
+// those files would lose without either is an error naming the flags.
+// Returns -1 to go on, else the exit code.
 int drop_attributes(const EncodeArgs& args, Mesh* mesh) {
   for (const std::string& name : args.drop) {
-    const auto it = std::find_if(mesh->attributes.begin(), mesh->attributes.end(),
-                                 [&](const MeshAttribute& a) { return a.name == name; });
-    if (it == mesh->attributes.end())
-      return usage_error("encode", "--drop " + name + ": " + args.input + " has no attribute of that name");
-    mesh->attributes.erase(it);
-    if (!args.quiet) std::fprintf(stderr, "dropped (--drop %s): %s: attribute %s\n", name.c_str(), args.input.c_str(), name.c_str());
+    const auto attribute = std::find_if(mesh->attributes.begin(), mesh->attributes.end(),
+                                        [&](const MeshAttribute& a) { return a.name == name; });
+    const auto labels = std::find_if(mesh->face_labels.begin(), mesh->face_labels.end(),
+                                     [&](const FaceLabels& l) { return l.name == name; });
+    if (attribute != mesh->attributes.end())
+      mesh->attributes.erase(attribute);
+    else if (labels != mesh->face_labels.end())
+      mesh->face_labels.erase(labels);
+    else
+      return usage_error("encode", "--drop " + name + ": " + args.input + " has no attribute or face labels of that name");
+    if (!args.quiet) std::fprintf(stderr, "dropped (--drop %s): %s: %s\n", name.c_str(), args.input.c_str(), name.c_str());
   }
   const bool carries_none = args.progressive || args.options.gim.size > 0;
-  if (!carries_none || mesh->attributes.empty()) return -1;
+  if (!carries_none || (mesh->attributes.empty() && mesh->face_labels.empty())) return -1;
   std::string names;
   for (const MeshAttribute& a : mesh->attributes) names += (names.empty() ? "" : ", ") + a.name;
+  for (const FaceLabels& l : mesh->face_labels) names += (names.empty() ? "" : ", ") + l.name;
   const char* what = args.progressive ? "a progressive file" : "a geometry image";
   if (!args.drop_unsupported)
     return fail("encode", Status(ErrorCode::kInvalidArgument,
-                                 std::string(what) + " carries no attributes (spec 15.1); " + args.input + " has " +
-                                     names + ": pass --drop NAME for each, or --drop-unsupported"));
+                                 std::string(what) + " carries no attributes or face labels (spec 15.1, 16.1); " +
+                                     args.input + " has " + names + ": pass --drop NAME for each, or --drop-unsupported"));
   if (!args.quiet)
-    std::fprintf(stderr, "dropped (--drop-unsupported): %s: attributes %s (%s carries none)\n", args.input.c_str(),
-                 names.c_str(), what);
+    std::fprintf(stderr, "dropped (--drop-unsupported): %s: %s (%s carries none)\n", args.input.c_str(), names.c_str(),
+                 what);
   mesh->attributes.clear();
+  mesh->face_labels.clear();
   return -1;
 }
 

@@ -103,6 +103,9 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
   if (!f.gim.present)
     std::printf("order        %s\n", f.order_restored ? order_description(f.order_flags).c_str()
                                                      : "coder order (no oRDR chunk)");
+  for (const FaceLabels& l : f.mesh.face_labels)
+    std::printf("face labels  \"%s\" (spec 16): %zu values, %zu references\n", l.name.c_str(), l.values.size(),
+                l.references.size());
   for (size_t i = 0; i < f.mesh.attributes.size() && i < f.attribute_codings.size(); ++i) {
     const MeshAttribute& a = f.mesh.attributes[i];
     const AttributeCoding& c = f.attribute_codings[i];

@@ -51,6 +51,9 @@ int run_verify(int argc, char** argv) {
                 decoded.attribute_codings[i].coding == 0   ? "within half its step"
                 : decoded.attribute_codings[i].coding == 3 ? "within its octahedral cell"
                                                            : "bit for bit");
+  for (size_t i = 0; r.faces_equal && i < decoded.mesh.face_labels.size(); ++i)
+    std::printf("labels    %s: on every face, %zu values\n", decoded.mesh.face_labels[i].name.c_str(),
+                decoded.mesh.face_labels[i].values.size());
   std::printf("positions %s; max error %.6g, rms %.6g\n",
               r.positions_within_bound ? "within half a quantization step" : r.position_mismatch.c_str(),
               r.max_error, r.rms_error);

@@ -26,6 +26,7 @@
 #include "analytic_loop_files.h"
 #include "attribute_generators.h"
 #include "bitio/attribute_mapping.h"
+#include "bitio/face_label_coding.h"
 #include "bitio/octahedral_normal.h"
 #include "encoder/position_encoder.h"
 #include "chunk_list.h"
@@ -55,6 +56,7 @@ qmc::EncodeOptions format_1_4_options() {
 
 
 using qmc::Mesh;
+using qmc::FaceLabels;
 using qmc::MeshAttribute;
 
 using qmc::tools::Chunk;
@@ -2320,6 +2322,140 @@ void write_octahedral_normal_vectors(VectorWriter* w) {
   }
 }
 
+// Section 16: fLBL, a label per face.
+void write_face_label_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  using namespace qmc::tools;
+  qmc::EncodeOptions options;
+  Mesh torus = triangulated(make_torus(10, 6));
+  add_face_labels(&torus, 1, 9);
+  const std::vector<uint8_t> file = encode_with(torus, options, "labels");
+  w->valid("valid_flbl_material_group", file, &torus);
+  Mesh scrambled = make_scrambled(make_torus(8, 5), 2);
+  add_face_labels(&scrambled, 2, 4);
+  qmc::EncodeOptions keep = options;
+  keep.keep_order = true;
+  w->valid("valid_flbl_keep_order", encode_with(scrambled, keep, "labels kept"), &scrambled);
+  Mesh bare = make_cube();
+  bare.face_labels.push_back({"tag", {}, {}, std::vector<uint32_t>(6, 0)});  // no value: every face none
+  w->valid("valid_flbl_empty_table", encode_with(bare, options, "empty table"), &bare);
+
+  // Invalid: the cube with one label chunk, its fields set by hand.
+  const std::vector<uint8_t> cube = encode_with(make_cube(), options, "cube");
+  qmc::DecodedFile d;
+  (void)qmc::decode(cube.data(), cube.size(), &d);
+  struct Fields {
+    uint64_t faces = 6;
+    std::string name = "material";
+    std::vector<std::string> references{"m.mtl"}, values{"a", "b"};
+    std::vector<uint32_t> labels{0, 0, 1, 1, 3, 0};  // 3 of a table of 2: past "none" (2)
+    std::vector<uint8_t> stream;  // coded from labels unless set
+    size_t cut = SIZE_MAX;
+  };
+  const auto payload = [](const Fields& f) {
+    std::vector<uint8_t> p;
+    qmc::put_varint(&p, f.faces);
+    qmc::put_u8(&p, uint8_t(f.name.size()));
+    p.insert(p.end(), f.name.begin(), f.name.end());
+    for (const auto* table : {&f.references, &f.values}) {
+      qmc::put_varint(&p, table->size());
+      for (const std::string& s : *table) {
+        qmc::put_varint(&p, s.size());
+        p.insert(p.end(), s.begin(), s.end());
+      }
+    }
+    std::vector<uint8_t> stream = f.stream;
+    if (stream.empty()) {
+      qmc::RangeEncoder rc;
+      uint16_t same = qmc::kRangeProbabilityInit;
+      uint32_t previous = uint32_t(f.values.size());
+      for (size_t j = 0; j < f.labels.size(); ++j)
+        previous = qmc::code_face_label(&rc, &same, j, previous, uint32_t(f.values.size()), f.labels[j]);
+      stream = rc.finish();
+    }
+    p.insert(p.end(), stream.begin(), stream.end());
+    if (f.cut < p.size()) p.resize(f.cut);
+    return p;
+  };
+  const auto with = [&](const Fields& f) {
+    return with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkFaceLabels, payload(f));
+  };
+  const Fields f;
+  w->invalid("invalid_flbl_label_past_table", with(f), ErrorCode::kBadSymbol);
+  Fields ok = f;
+  ok.labels = {0, 0, 1, 1, 2, 0};  // face 4 unlabelled
+  ok.values = {"a", "b"};
+  w->valid("valid_flbl_hand_made", with(ok), nullptr);
+  w->invalid("invalid_flbl_before_posn", with_chunk_before(cube, qmc::kChunkPositions, qmc::kChunkFaceLabels, payload(ok)),
+             ErrorCode::kChunkOrder);
+  {
+    Mesh scrambled_cube = make_scrambled(make_cube(), 3);
+    const std::vector<uint8_t> ordered = encode_with(scrambled_cube, keep, "ordered cube");
+    w->invalid("invalid_flbl_after_ordr",
+               with_chunk_before(ordered, qmc::kChunkEnd, qmc::kChunkFaceLabels, payload(ok)), ErrorCode::kChunkOrder);
+  }
+  Fields x = ok;
+  x.faces = 7;
+  w->invalid("invalid_flbl_face_count_not_conn", with(x), ErrorCode::kBadChunkPayload);
+  x = ok;
+  x.name = "";
+  w->invalid("invalid_flbl_empty_name", with(x), ErrorCode::kBadChunkPayload);
+  x = ok;
+  x.cut = 5;  // 6, length 8, "mat"
+  w->invalid("invalid_flbl_name_cut_short", with(x), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_flbl_name_repeated",
+             with_chunk_before(with(ok), qmc::kChunkEnd, qmc::kChunkFaceLabels, payload(ok)), ErrorCode::kBadChunkPayload);
+  x = ok;
+  x.cut = 1 + 1 + 8 + 1 + 1 + 3;  // ..., references 1, "m.m": the reference cut short
+  w->invalid("invalid_flbl_string_cut_short", with(x), ErrorCode::kBadChunkPayload);
+  {
+    std::vector<uint8_t> p = payload(ok);
+    p.resize(1 + 1 + 8);
+    qmc::put_varint(&p, 1000);  // 1000 references in the few bytes left
+    p.insert(p.end(), 20, 0);
+    w->invalid("invalid_flbl_count_above_bytes_left", with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkFaceLabels, p),
+               ErrorCode::kBadChunkPayload);
+  }
+  x = ok;
+  x.stream = {0xFF, 0xFF, 0xFF, 0xFF};
+  w->invalid("invalid_flbl_bad_start", with(x), ErrorCode::kBadChunkPayload);
+  {
+    std::vector<uint8_t> p = payload(ok);
+    p.insert(p.end(), 8, 0);
+    w->invalid("invalid_flbl_bytes_after_data", with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkFaceLabels, p),
+               ErrorCode::kBadChunkPayload);
+  }
+  {
+    // 4097 faces from an empty stream: above 512 (0 + 8).
+    Mesh many;
+    for (int i = 0; i < 3; ++i) many.positions.insert(many.positions.end(), {float(i), float(i * i), 0.f});
+    for (int i = 0; i < 4097; ++i) {
+      many.face_sizes.push_back(3);
+      many.corners.insert(many.corners.end(), {0, 1, 2});
+    }
+    Fields big = ok;
+    big.faces = 4097;
+    big.values.clear();
+    big.labels.clear();
+    std::vector<uint8_t> p = payload(big);
+    w->invalid("invalid_flbl_faces_unjustified",
+               with_chunk_before(encode_with(many, options, "4097 faces"), qmc::kChunkEnd, qmc::kChunkFaceLabels, p),
+               ErrorCode::kLimitExceeded);
+  }
+  // The material run of the torus cut: the longest cut that runs out of bytes.
+  Chunks c = split_chunks(file);
+  const size_t at = find_chunk(c, qmc::kChunkFaceLabels);
+  const std::vector<uint8_t> full = c[at].payload;
+  for (size_t n = full.size(); n-- > 0;) {
+    c[at].payload.assign(full.begin(), full.begin() + std::ptrdiff_t(n));
+    const std::vector<uint8_t> cut = join_chunks(c);
+    qmc::DecodedFile e;
+    if (qmc::decode(cut.data(), cut.size(), &e).code() != ErrorCode::kTruncated) continue;
+    w->invalid("invalid_flbl_truncated", cut, ErrorCode::kTruncated);
+    break;
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: qmc-make-vectors DIR   (writes DIR/MANIFEST and DIR/vectors/*.qmc)\n");
@@ -2349,6 +2485,7 @@ int main(int argc, char** argv) {
   write_attribute_valid(&w);
   write_attribute_errors(&w);
   write_octahedral_normal_vectors(&w);
+  write_face_label_vectors(&w);
   w.finish();
   return 0;
 }

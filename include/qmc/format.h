@@ -34,6 +34,8 @@ inline constexpr uint32_t kChunkText = chunk_type('t', 'e', 'X', 't');
 inline constexpr uint32_t kChunkOrder = chunk_type('o', 'R', 'D', 'R');
 // Section 15: one attribute of the corners (ancillary).
 inline constexpr uint32_t kChunkAttribute = chunk_type('a', 'T', 'T', 'R');
+// Section 16: a label per face from a table of strings (ancillary).
+inline constexpr uint32_t kChunkFaceLabels = chunk_type('f', 'L', 'B', 'L');
 // Section 12: progressive Loop levels, the header and one chunk per level.
 inline constexpr uint32_t kChunkLoop = chunk_type('L', 'O', 'O', 'P');
 inline constexpr uint32_t kChunkLevel = chunk_type('L', 'E', 'V', 'L');

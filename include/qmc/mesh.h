@@ -31,6 +31,19 @@ struct MeshAttribute {
   size_t value_count() const { return components == 0 ? 0 : values.size() / components; }
 };
 
+// Labels of the faces (spec section 16): each face has one of `values`, or
+// none (face_values[f] == values.size()). OBJ's objects, groups, materials
+// and smoothing groups are read as the labels "object", "group",
+// "material" (its `mtllib` files in references) and "smoothing".
+struct FaceLabels {
+  std::string name;                     // 1..255 bytes, distinct within a mesh
+  std::vector<std::string> references;  // files the values refer to (OBJ mtllib)
+  std::vector<std::string> values;
+  std::vector<uint32_t> face_values;    // per face, an index into values or values.size()
+
+  uint32_t none() const { return uint32_t(values.size()); }
+};
+
 // A polygon soup: positions plus faces given as vertex-index cycles.
 // Face f has face_sizes[f] corners, stored consecutively in `corners`.
 // Nothing here requires the mesh to be manifold, oriented or free of
@@ -40,6 +53,7 @@ struct Mesh {
   std::vector<uint32_t> face_sizes;  // degree of each face, >= 3
   std::vector<uint32_t> corners;     // concatenated face cycles
   std::vector<MeshAttribute> attributes;  // section 15; empty for most meshes
+  std::vector<FaceLabels> face_labels;    // section 16
 
   size_t vertex_count() const { return positions.size() / 3; }
   size_t face_count() const { return face_sizes.size(); }

@@ -36,6 +36,22 @@ void append_attribute(std::vector<uint8_t>* out, const MeshAttribute& attribute)
   for (uint32_t m : attribute.corner_values) put_u32le(out, m);
 }
 
+void append_string(std::vector<uint8_t>* out, const std::string& s) {
+  put_u32le(out, uint32_t(s.size()));
+  out->insert(out->end(), s.begin(), s.end());
+}
+
+// Section 16.3's record of a chunk's face labels.
+void append_face_labels(std::vector<uint8_t>* out, const FaceLabels& labels) {
+  append_tag(out, "QMCFLBL1");
+  append_string(out, labels.name);
+  for (const auto* table : {&labels.references, &labels.values}) {
+    put_u32le(out, uint32_t(table->size()));
+    for (const std::string& s : *table) append_string(out, s);
+  }
+  for (uint32_t l : labels.face_values) put_u32le(out, l);
+}
+
 // Section 13.10.
 void append_geometry_image(std::vector<uint8_t>* out, const DecodedFile& file) {
   const GeometryImageData& g = file.gim;
@@ -72,6 +88,7 @@ void append_canonical_output(std::vector<uint8_t>* out_bytes, const DecodedFile&
   if (file.loop_level_count == 0 || file.levels.empty()) {
     append_mesh(&out, file.mesh, file.quantized);
     for (const MeshAttribute& attribute : file.mesh.attributes) append_attribute(&out, attribute);
+    for (const FaceLabels& labels : file.mesh.face_labels) append_face_labels(&out, labels);
     return;
   }
   // Section 12.9: the base mesh as in 10.2, then every level in binary64.

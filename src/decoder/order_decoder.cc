@@ -200,6 +200,11 @@ void apply_order(const OrderMaps& maps, Mesh* mesh, std::vector<uint32_t>* quant
     for (size_t k = 0; k < values.size(); ++k) values[k] = attribute.corner_values[source[k]];
     attribute.corner_values = std::move(values);
   }
+  for (FaceLabels& labels : mesh->face_labels) {  // 16.3
+    std::vector<uint32_t> values(labels.face_values.size());
+    for (size_t j = 0; j < values.size(); ++j) values[face(j)] = labels.face_values[j];
+    labels.face_values = std::move(values);
+  }
   mesh->face_sizes = std::move(sizes);
   mesh->corners = std::move(corners);
 }

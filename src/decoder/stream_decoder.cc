@@ -9,6 +9,7 @@
 #include "decoder/attribute_decoder.h"
 #include "decoder/chunk_frame.h"
 #include "decoder/connectivity_decoder.h"
+#include "decoder/face_label_decoder.h"
 #include "decoder/gim_decoder.h"
 #include "decoder/loop_level_decoder.h"
 #include "decoder/no_throw.h"
@@ -47,6 +48,8 @@ struct StreamDecoder::State {
   Status handle_positions(const uint8_t* payload, uint32_t length);
   Status handle_order(const uint8_t* payload, uint32_t length);
   Status handle_attribute(const uint8_t* payload, uint32_t length, bool* skipped);
+  Status handle_face_labels(const uint8_t* payload, uint32_t length);
+  Status check_mesh_extension(const char* type, const char* section) const;
   Status handle_loop(const uint8_t* payload, uint32_t length);
   Status handle_level(const uint8_t* payload, uint32_t length);
   Status handle_end(uint32_t length);
@@ -131,7 +134,8 @@ Status StreamDecoder::State::handle_chunk(uint32_t type, const uint8_t* payload,
   if (!header_seen && type != kChunkHeader)
     return order_error("the first chunk must be QHDR, found " + chunk_type_name(type));
   if (gim.active() && (type == kChunkConnectivity || type == kChunkPositions || type == kChunkLoop ||
-                       type == kChunkLevel || type == kChunkOrder || type == kChunkAttribute))
+                       type == kChunkLevel || type == kChunkOrder || type == kChunkAttribute ||
+                       type == kChunkFaceLabels))
     return order_error(chunk_type_name(type) + " in a geometry-image file (section 13.1)");
   Status s;
   switch (type) {
@@ -141,6 +145,7 @@ Status StreamDecoder::State::handle_chunk(uint32_t type, const uint8_t* payload,
     case kChunkEnd: s = handle_end(length); break;
     case kChunkText: file.texts.emplace_back(reinterpret_cast<const char*>(payload), length); break;
     case kChunkOrder: s = handle_order(payload, length); break;
+    case kChunkFaceLabels: s = handle_face_labels(payload, length); break;
     case kChunkAttribute: {
       bool skipped = false;
       s = handle_attribute(payload, length, &skipped);
@@ -247,11 +252,29 @@ Status StreamDecoder::State::handle_order(const uint8_t* payload, uint32_t lengt
   return Status::Ok();
 }
 
-// Section 15.1: after POSN, before oRDR, not in a progressive file.
+// Sections 15.1 and 16.1: after POSN, before oRDR, not in a progressive file.
+Status StreamDecoder::State::check_mesh_extension(const char* type, const char* section) const {
+  if (!positions_seen) return order_error(std::string(type) + " before POSN");
+  if (file.loop_level_count > 0)
+    return order_error(std::string(type) + " in a progressive file (section " + section + ")");
+  if (order_seen) return order_error(std::string(type) + " after oRDR (section " + section + ")");
+  return Status::Ok();
+}
+
+// Section 16.
+Status StreamDecoder::State::handle_face_labels(const uint8_t* payload, uint32_t length) {
+  if (Status s = check_mesh_extension("fLBL", "16.1"); !s.ok()) return s;
+  FaceLabels labels;
+  if (Status s = decode_face_labels(payload, length, file.mesh.face_count(), file.mesh.face_labels, &budget, &labels);
+      !s.ok())
+    return s;
+  file.mesh.face_labels.push_back(std::move(labels));
+  return Status::Ok();
+}
+
+// Section 15.
 Status StreamDecoder::State::handle_attribute(const uint8_t* payload, uint32_t length, bool* skipped) {
-  if (!positions_seen) return order_error("aTTR before POSN");
-  if (file.loop_level_count > 0) return order_error("aTTR in a progressive file (section 15.1)");
-  if (order_seen) return order_error("aTTR after oRDR (section 15.1)");
+  if (Status s = check_mesh_extension("aTTR", "15.1"); !s.ok()) return s;
   MeshAttribute attribute;
   AttributeCoding coding;
   if (Status s = decode_attribute(payload, length, file.mesh, vertex_count, file.quantized, file.mesh.attributes,

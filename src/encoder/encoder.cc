@@ -10,6 +10,7 @@
 #include "encoder/chunk_writer.h"
 #include "encoder/gim_encoder.h"
 #include "encoder/encoder_internal.h"
+#include "encoder/face_label_encoder.h"
 #include "encoder/indexed_connectivity_encoder.h"
 #include "encoder/loop_encoder.h"
 #include "encoder/order_encoder.h"
@@ -26,16 +27,18 @@ namespace {
 
 Status invalid(const std::string& message) { return Status(ErrorCode::kInvalidArgument, message); }
 
-// Section 15: what aTTR can carry, and only in a plain file.
+// Sections 15 and 16: what aTTR and fLBL can carry, and only in a plain file.
 Status validate_attributes(const Mesh& mesh, const EncodeOptions& options) {
   for (int bits : {options.texcoord_bits, options.normal_bits, options.colour_bits, options.generic_bits})
     if (bits < 1 || bits > 30) return invalid("attribute bits must be in 1..30, got " + std::to_string(bits));
-  if (mesh.attributes.empty()) return Status::Ok();
+  if (mesh.attributes.empty() && mesh.face_labels.empty()) return Status::Ok();
   if (options.progressive_levels > 0 || options.gim.size > 0)
     return invalid(std::string("a ") + (options.progressive_levels > 0 ? "progressive file" : "geometry image") +
-                   " cannot carry attributes (section 15.1): drop them first");
+                   " cannot carry attributes or face labels (sections 15.1, 16.1): drop them first");
   for (size_t i = 0; i < mesh.attributes.size(); ++i)
     if (std::string why = attribute_problem(mesh, i, options.exact_attributes); !why.empty()) return invalid(why);
+  for (size_t i = 0; i < mesh.face_labels.size(); ++i)
+    if (std::string why = face_label_problem(mesh, i); !why.empty()) return invalid(why);
   return Status::Ok();
 }
 
@@ -291,6 +294,8 @@ Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_
   add_chunk(out, &st, kChunkConnectivity, conn.payload);
   add_chunk(out, &st, kChunkPositions, positions);
   if (Status s = add_attributes(mesh, options, conn, positions, out, &st); !s.ok()) return s;
+  for (const FaceLabels& labels : mesh.face_labels)  // section 16
+    add_chunk(out, &st, kChunkFaceLabels, encode_face_labels(labels, conn.face_source));
   if (options.keep_order) {  // section 4.5: right after POSN, only if the coder order differs
     std::vector<uint8_t> order;
     if (Status s = encode_order(mesh, conn.mesh, conn.file_vertex, conn.face_source, &order); !s.ok()) return s;

@@ -86,4 +86,18 @@ void add_random_corner_attribute(Mesh* mesh, uint64_t seed, const char* name, At
   mesh->attributes.push_back(std::move(a));
 }
 
+void add_face_labels(Mesh* mesh, uint64_t seed, uint32_t run) {
+  SplitMix64 rng(seed);
+  FaceLabels material{"material", {"m.mtl"}, {"red", "green", "blue"}, {}};
+  FaceLabels group{"group", {}, {"left", ""}, {}};
+  uint32_t current = material.none();
+  for (size_t f = 0; f < mesh->face_count(); ++f) {
+    if (f >= 3 && rng.below(run) == 0) current = rng.below(3);
+    material.face_values.push_back(current);
+    group.face_values.push_back(uint32_t(f / 7 % 2));
+  }
+  mesh->face_labels.push_back(std::move(material));
+  mesh->face_labels.push_back(std::move(group));
+}
+
 }  // namespace qmc::tools

@@ -25,4 +25,9 @@ void add_vertex_normals(Mesh* mesh);
 void add_random_corner_attribute(Mesh* mesh, uint64_t seed, const char* name, AttributeKind kind,
                                  uint32_t components);
 
+// Face labels (spec 16) like an OBJ's: "material" (with references
+// "m.mtl") in runs of about `run` faces over 3 values, the first faces
+// unlabelled; "group" with 2 values alternating every 7 faces.
+void add_face_labels(Mesh* mesh, uint64_t seed, uint32_t run);
+
 }  // namespace qmc::tools

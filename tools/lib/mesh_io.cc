@@ -300,6 +300,43 @@ struct ObjValues {
   }
 };
 
+// What an OBJ statement after `keyword` says: the rest of the line, trimmed.
+std::string_view rest_of(std::string_view statement, std::string_view keyword) {
+  statement = trim(statement);
+  return trim(statement.substr(std::min(statement.size(), keyword.size())));
+}
+
+// Objects, groups, materials and smoothing groups (o, g, usemtl, s): the face
+// labels of spec section 16, "material" with the mtllib files as references.
+struct ObjLabel {
+  static constexpr uint32_t kUnset = UINT32_MAX;
+  ObjLabel(const char* k, const char* n) : keyword(k), name(n) {}
+  std::string_view keyword;
+  const char* name;
+  bool used = false;
+  uint32_t current = kUnset;
+  std::vector<std::string> values, references;
+  std::vector<uint32_t> face_values;
+
+  Status set(std::string_view value) {
+    used = true;
+    const auto it = std::find(values.begin(), values.end(), value);
+    current = uint32_t(it - values.begin());
+    if (it == values.end()) values.emplace_back(value);
+    return Status::Ok();
+  }
+  FaceLabels finish() {
+    FaceLabels out;
+    out.name = name;
+    out.references = std::move(references);
+    out.values = std::move(values);
+    out.face_values = std::move(face_values);
+    for (uint32_t& v : out.face_values)
+      if (v == kUnset) v = out.none();
+    return out;
+  }
+};
+
 class ObjParser {
  public:
   ObjParser(std::string_view name, WarningTally* warnings) : name_(name), warnings_(warnings) {}
@@ -335,6 +372,8 @@ class ObjParser {
                                     mesh);
         !s.ok())
       return s;
+    for (ObjLabel& label : labels_)
+      if (label.used) mesh->face_labels.push_back(label.finish());
     return finish_attribute(&normals_, "normal", AttributeKind::kNormal, "normal (vn)", mesh);
   }
 
@@ -373,11 +412,6 @@ class ObjParser {
         {"vp", "ignored parameter-space vertex (vp) lines"},
         {"l", "ignored polyline (l) elements"},
         {"p", "ignored point (p) elements"},
-        {"g", "ignored group (g) lines"},
-        {"o", "ignored object name (o) lines"},
-        {"s", "ignored smoothing group (s) lines"},
-        {"usemtl", "ignored material (usemtl) lines"},
-        {"mtllib", "ignored material library (mtllib) lines"},
     };
     for (const auto& [name, note] : kNotes)
       if (keyword == name) return note;
@@ -397,8 +431,13 @@ class ObjParser {
     if (keyword == "f") return parse_face(line, mesh);
     if (keyword == "vt") return parse_values(line, 1, 3, &texcoords_);
     if (keyword == "vn") return parse_values(line, 3, 3, &normals_);
-    // "s off" and "s 0" state the default (no smoothing group): nothing to carry.
-    if (keyword == "s" && tokens_.size() == 2 && (tokens_[1] == "off" || tokens_[1] == "0")) return Status::Ok();
+    for (ObjLabel& label : labels_)
+      if (keyword == label.keyword) return label.set(rest_of(statement, keyword));
+    if (keyword == "mtllib") {
+      for (size_t i = 1; i < tokens_.size(); ++i) labels_[2].references.emplace_back(tokens_[i]);
+      labels_[2].used = true;
+      return Status::Ok();
+    }
     if (const char* note = ignored_statement_note(keyword)) {
       warnings_->add(note);
     } else if (unknown_kinds_ < kMaxUnknownKinds) {
@@ -499,6 +538,7 @@ class ObjParser {
       mesh->corners.push_back(index);
     }
     mesh->face_sizes.push_back(static_cast<uint32_t>(corners));
+    for (ObjLabel& label : labels_) label.face_values.push_back(label.current);
     return Status::Ok();
   }
 
@@ -552,6 +592,7 @@ class ObjParser {
   WarningTally* warnings_;
   std::vector<std::string_view> tokens_;
   ObjValues texcoords_, normals_;
+  ObjLabel labels_[4] = {{"o", "object"}, {"g", "group"}, {"usemtl", "material"}, {"s", "smoothing"}};
   size_t unknown_kinds_ = 0;
   uint64_t largest_index_ = kNoIndex;
   uint64_t largest_index_line_ = 0;
@@ -1626,8 +1667,24 @@ void put_value_lines(const MeshAttribute* a, const char* keyword, TextSink* out)
   }
 }
 
-// Corners as v, v/t, v//n or v/t/n (1-based).
+// The OBJ statement of a face label (spec 16) the reader makes, or "".
+const char* obj_keyword(const std::string& label) {
+  if (label == "object") return "o";
+  if (label == "group") return "g";
+  if (label == "material") return "usemtl";
+  if (label == "smoothing") return "s";
+  return "";
+}
+
+// Corners as v, v/t, v//n or v/t/n (1-based); face labels as o, g, usemtl
+// and s statements where they change, the material's files as mtllib.
 void write_obj(const Mesh& mesh, TextSink* out) {
+  for (const FaceLabels& l : mesh.face_labels)
+    if (l.name == "material" && !l.references.empty()) {
+      out->put("mtllib");
+      for (const std::string& r : l.references) out->put(" " + r);
+      out->put("\n");
+    }
   for (size_t v = 0; v < mesh.vertex_count(); ++v) {
     out->put("v");
     put_vertex_line(mesh, v, out);
@@ -1636,8 +1693,17 @@ void write_obj(const Mesh& mesh, TextSink* out) {
   const MeshAttribute* normal = obj_attribute(mesh, AttributeKind::kNormal);
   put_value_lines(texcoord, "vt", out);
   put_value_lines(normal, "vn", out);
+  std::vector<uint32_t> shown;  // per label, the value the last statement set
+  for (const FaceLabels& l : mesh.face_labels) shown.push_back(l.none());
   size_t corner = 0;
-  for (uint32_t size : mesh.face_sizes) {
+  for (size_t f = 0; f < mesh.face_sizes.size(); ++f) {
+    const uint32_t size = mesh.face_sizes[f];
+    for (size_t j = 0; j < mesh.face_labels.size(); ++j) {
+      const FaceLabels& l = mesh.face_labels[j];
+      if (l.face_values[f] == shown[j]) continue;
+      shown[j] = l.face_values[f];
+      out->put(std::string(obj_keyword(l.name)) + (l.values[shown[j]].empty() ? "" : " ") + l.values[shown[j]] + "\n");
+    }
     out->put("f");
     for (uint32_t i = 0; i < size; ++i, ++corner) {
       out->put(" ");
@@ -1717,6 +1783,23 @@ Status check_attributes_fit(const Mesh& mesh, const std::string& format) {
   return Status::Ok();
 }
 
+// OBJ writes the labels it reads (o, g, usemtl, s), as long as no face goes
+// back to having none after a face with one (OBJ has no statement for it).
+Status check_labels_fit(const Mesh& mesh, const std::string& format) {
+  for (const FaceLabels& l : mesh.face_labels) {
+    if (format != "obj" || *obj_keyword(l.name) == '\0')
+      return invalid("the mesh has face labels \"" + l.name + "\", which ." + format +
+                     " output cannot hold; write .obj (object, group, material, smoothing) or .qmc");
+    bool labelled = false;
+    for (uint32_t v : l.face_values) {
+      if (labelled && v == l.none())
+        return invalid("face labels \"" + l.name + "\": a face without one after faces with one, which .obj cannot say");
+      labelled = labelled || v != l.none();
+    }
+  }
+  return Status::Ok();
+}
+
 // Writing a mesh we could not read back would only move the failure later.
 Status validate_for_writing(const Mesh& mesh) {
   if (mesh.positions.size() % 3 != 0) return invalid("mesh positions are not a multiple of 3 floats");
@@ -1775,6 +1858,7 @@ Status write_mesh_to_memory(const Mesh& mesh, std::string_view format, std::stri
   if (text == nullptr) return invalid("write_mesh_to_memory: text is null");
   Status status = validate_for_writing(mesh);
   if (status.ok()) status = check_attributes_fit(mesh, lowered);
+  if (status.ok()) status = check_labels_fit(mesh, lowered);
   if (!status.ok()) return status;
   TextSink sink(nullptr);
   write_any(mesh, lowered, &sink);
@@ -1787,6 +1871,7 @@ Status write_mesh(const std::string& path, const Mesh& mesh) {
   if (!is_writable_format(format)) return invalid(path + ": cannot write this extension (expected .obj, .off or .ply)");
   Status status = validate_for_writing(mesh);
   if (status.ok()) status = check_attributes_fit(mesh, format);
+  if (status.ok()) status = check_labels_fit(mesh, format);
   if (!status.ok()) return Status(status.code(), path + ": " + status.message());
   return write_file_atomically(path, [&](std::FILE* file) {
     TextSink sink(file);

@@ -136,10 +136,35 @@ std::string compare_attribute_tables(const Mesh& original, const DecodedFile& de
   return {};
 }
 
+// Section 16: the same labels, in order, with the same references.
+std::string compare_label_tables(const Mesh& original, const Mesh& decoded) {
+  const auto& in = original.face_labels;
+  const auto& out = decoded.face_labels;
+  if (in.size() != out.size()) return std::to_string(out.size()) + " face labels instead of " + std::to_string(in.size());
+  for (size_t j = 0; j < in.size(); ++j)
+    if (in[j].name != out[j].name || in[j].references != out[j].references ||
+        out[j].face_values.size() != decoded.face_count())
+      return "face labels " + std::to_string(j) + " (\"" + in[j].name + "\") differ in name or references";
+  return {};
+}
+
+// Whether decoded face f has the labels of input face src (compared as strings).
+bool same_labels(const Mesh& original, const Mesh& decoded, size_t f, size_t src) {
+  for (size_t j = 0; j < original.face_labels.size(); ++j) {
+    const FaceLabels& in = original.face_labels[j];
+    const FaceLabels& out = decoded.face_labels[j];
+    const uint32_t a = in.face_values[src], b = out.face_values[f];
+    if ((a == in.none()) != (b == out.none())) return false;
+    if (a != in.none() && in.values[a] != out.values[b]) return false;
+  }
+  return true;
+}
+
 std::string compare_faces(const Mesh& original, const DecodedFile& file, const Correspondence& c,
                           const std::vector<uint32_t>& label) {
   const Mesh& decoded = file.mesh;
   if (std::string why = compare_attribute_tables(original, file); !why.empty()) return why;
+  if (std::string why = compare_label_tables(original, decoded); !why.empty()) return why;
   const std::vector<std::array<double, 3>> tolerance = attribute_tolerances(file);
   if (original.face_count() != decoded.face_count() || c.face_source.size() != decoded.face_count())
     return "face count " + std::to_string(decoded.face_count()) + " instead of " +
@@ -157,6 +182,8 @@ std::string compare_faces(const Mesh& original, const DecodedFile& file, const C
     if (!same_cycle(original, file, offset[src], k, n, label, c.exact_corners, tolerance))
       return "face " + std::to_string(f) + " (input face " + std::to_string(src) + ") differs" +
              (original.attributes.empty() ? "" : " (its corners or their attributes)");
+    if (!same_labels(original, decoded, f, src))
+      return "face " + std::to_string(f) + " (input face " + std::to_string(src) + ") has other labels";
     k += n;
   }
   return {};
