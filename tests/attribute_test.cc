@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "bitio/octahedral_normal.h"
 #include "bitio/range_coder.h"
 #include "chunk_list.h"
+#include "corpus_dir.h"
 #include "mesh_generators.h"
 #include "mesh_io.h"
 #include "qmc/decoder.h"
@@ -204,6 +206,33 @@ TEST(FaceLabels, RoundTripThroughEveryCoder) {
   bad.face_labels[0].face_values[2] = 4;  // a table of 3 values: 3 is none, 4 nothing
   std::vector<uint8_t> out;
   EXPECT_EQ(encode(bad, EncodeOptions{}, &out).code(), ErrorCode::kInvalidArgument);
+}
+
+// Issue 16: every corpus mesh with attributes or labels round-trips with all
+// of them, in coder order and with oRDR (qmc verify's check).
+TEST(AttributeCorpus, EveryMeshKeepsItsAttributesAndLabels) {
+  int checked = 0;
+  for (const char* sub : {"attr", "quad", "tri"}) {
+    const std::filesystem::path dir = testing::corpus_dir() / sub;
+    if (!std::filesystem::is_directory(dir)) continue;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+      Mesh m;
+      std::vector<std::string> notes;
+      ASSERT_TRUE(tools::read_mesh(entry.path().string(), &m, &notes).ok()) << entry.path();
+      EXPECT_TRUE(notes.empty()) << entry.path() << ": " << notes.front();
+      if (m.attributes.empty() && m.face_labels.empty()) continue;
+      for (bool keep : {false, true}) {
+        EncodeOptions options;
+        options.keep_order = keep;
+        const DecodedFile d = decode_or_fail(encode_or_fail(m, options));
+        const tools::RoundTripReport r = tools::check_round_trip(m, d);
+        EXPECT_TRUE(r.ok()) << entry.path() << (keep ? " kept order: " : ": ") << r.face_mismatch << r.position_mismatch;
+      }
+      ++checked;
+    }
+  }
+  if (checked == 0) GTEST_SKIP() << "corpus not found at " << testing::corpus_dir() << " (set QMC_CORPUS_DIR)";
+  EXPECT_GE(checked, 8);  // attr/ 3, quad/ 4 with texture coordinates, normals or labels, tri/cathead
 }
 
 // 15.7: per-vertex normals use mapping 0; texture coordinates with seams mapping 1.
