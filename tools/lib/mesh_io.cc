@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <system_error>
 #include <unordered_map>
 #include <utility>
@@ -1145,6 +1146,30 @@ std::string property_names(const PlyElement& element, const std::vector<int>& us
   return names;
 }
 
+// A per-vertex attribute of a PLY file (spec 15): the vertex properties
+// that make it, and its values as read.
+struct PlyVertexAttribute {
+  const char* name;
+  AttributeKind kind;
+  std::vector<int> properties;  // indices in the vertex element, in component order
+  std::vector<float> values;
+};
+
+// The property names PLY files use for normals, texture coordinates and
+// colours, in order of preference.
+const std::vector<std::pair<std::vector<const char*>, std::pair<const char*, AttributeKind>>>& ply_attribute_names() {
+  static const std::vector<std::pair<std::vector<const char*>, std::pair<const char*, AttributeKind>>> kNames = {
+      {{"nx", "ny", "nz"}, {"normal", AttributeKind::kNormal}},
+      {{"u", "v"}, {"texcoord", AttributeKind::kTextureCoordinate}},
+      {{"s", "t"}, {"texcoord", AttributeKind::kTextureCoordinate}},
+      {{"texture_u", "texture_v"}, {"texcoord", AttributeKind::kTextureCoordinate}},
+      {{"texture_s", "texture_t"}, {"texcoord", AttributeKind::kTextureCoordinate}},
+      {{"red", "green", "blue"}, {"colour", AttributeKind::kColour}},
+      {{"alpha"}, {"alpha", AttributeKind::kGeneric}},
+  };
+  return kNames;
+}
+
 class PlyParser {
  public:
   PlyParser(std::string_view text, std::string_view name, WarningTally* warnings)
@@ -1170,6 +1195,7 @@ class PlyParser {
       status = check_deferred_indices(*mesh);
       if (!status.ok()) return status;
     }
+    finish_attributes(mesh);
     warnings_->add(reader.binary() ? "ignored trailing bytes after the PLY data" : "ignored trailing values after the PLY data",
                    reader.trailing());
     return Status::Ok();
@@ -1193,7 +1219,12 @@ class PlyParser {
         return header_error(*vertex_element_, std::string("vertex element has no scalar property '") + axes[axis] + "'");
       }
     }
+    find_vertex_attributes();
     if (face_element_ == nullptr) return Status::Ok();
+    texcoord_list_ = face_element_->find("texcoord");
+    if (texcoord_list_ >= 0 && (!face_element_->properties[texcoord_list_].is_list ||
+                                ply_type_is_integral(face_element_->properties[texcoord_list_].value_type)))
+      texcoord_list_ = -1;
     indices_ = face_element_->find("vertex_indices");
     if (indices_ < 0) indices_ = face_element_->find("vertex_index");
     if (indices_ < 0 || !face_element_->properties[indices_].is_list) {
@@ -1203,6 +1234,57 @@ class PlyParser {
       return header_error(*face_element_, "face vertex indices have a floating-point type");
     }
     return Status::Ok();
+  }
+
+  // Spec 15: normals, texture coordinates, colours and alpha, each whole
+  // (every component a scalar property) or not at all; one texcoord.
+  void find_vertex_attributes() {
+    for (const auto& [names, what] : ply_attribute_names()) {
+      PlyVertexAttribute a{what.first, what.second, {}, {}};
+      for (const char* name : names) {
+        const int p = vertex_element_->find(name);
+        if (p < 0 || vertex_element_->properties[p].is_list) break;
+        a.properties.push_back(p);
+      }
+      if (a.properties.size() != names.size()) continue;
+      bool taken = false;
+      for (const PlyVertexAttribute& b : vertex_attributes_) taken = taken || std::string(b.name) == a.name;
+      if (!taken) vertex_attributes_.push_back(std::move(a));
+    }
+  }
+
+  // Per-vertex attributes: each corner refers to its vertex's value; the
+  // face texcoord lists, per corner, take the place of vertex ones.
+  void finish_attributes(Mesh* mesh) {
+    for (PlyVertexAttribute& a : vertex_attributes_) {
+      if (a.kind == AttributeKind::kTextureCoordinate && corner_texcoords_.size() == mesh->corners.size() &&
+          !mesh->corners.empty())
+        continue;
+      MeshAttribute out;
+      out.name = a.name;
+      out.kind = a.kind;
+      out.components = uint32_t(a.properties.size());
+      out.values = std::move(a.values);
+      out.corner_values = mesh->corners;
+      mesh->attributes.push_back(std::move(out));
+    }
+    if (corner_texcoords_.empty()) return;
+    if (corner_texcoords_.size() != mesh->corners.size()) {
+      warnings_->note("ignored PLY face texcoord lists: only " + std::to_string(corner_texcoords_.size()) + " of " +
+                      std::to_string(mesh->corners.size()) + " face corners have one");
+      return;
+    }
+    MeshAttribute out{"texcoord", AttributeKind::kTextureCoordinate, 2, {}, {}};
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> index;  // equal bit patterns share a value
+    for (const auto& [u, v] : corner_texcoords_) {
+      uint32_t key[2];
+      std::memcpy(&key[0], &u, 4);
+      std::memcpy(&key[1], &v, 4);
+      const auto [it, added] = index.emplace(std::make_pair(key[0], key[1]), uint32_t(out.value_count()));
+      if (added) out.values.insert(out.values.end(), {u, v});
+      out.corner_values.push_back(it->second);
+    }
+    mesh->attributes.push_back(std::move(out));
   }
 
   Status read_vertices(const PlyElement& element, PlyDataReader* reader, Mesh* mesh) {
@@ -1228,11 +1310,21 @@ class PlyParser {
                            describe_value(property.value_type, value) + " in " + describe(item));
           }
         }
+        for (PlyVertexAttribute& a : vertex_attributes_)
+          for (size_t c = 0; c < a.properties.size(); ++c)
+            if (a.properties[c] == static_cast<int>(p)) {
+              float x = 0;
+              if (!ply_coordinate(property.value_type, value, &x))
+                return invalid(reader->where() + "non-finite " + property.name + " in " + describe(item));
+              a.values.push_back(x);
+            }
       }
       mesh->positions.insert(mesh->positions.end(), xyz, xyz + 3);
     }
     vertices_read_ = true;
-    std::string extra = property_names(element, {xyz_[0], xyz_[1], xyz_[2]});
+    std::vector<int> used = {xyz_[0], xyz_[1], xyz_[2]};
+    for (const PlyVertexAttribute& a : vertex_attributes_) used.insert(used.end(), a.properties.begin(), a.properties.end());
+    std::string extra = property_names(element, used);
     if (!extra.empty() && element.count > 0) {
       warnings_->note("ignored PLY vertex properties (" + extra + ") on " + std::to_string(element.count) +
                       " vertices");
@@ -1247,13 +1339,14 @@ class PlyParser {
       PlyItem item{&element, f};
       for (size_t p = 0; p < element.properties.size(); ++p) {
         const PlyProperty& property = element.properties[p];
-        Status status = static_cast<int>(p) == indices_ ? read_face_corners(property, item, reader, mesh)
-                        : property.is_list             ? skip_list(property, item, reader)
-                                                       : reader->skip(property.value_type, 1, item);
+        Status status = static_cast<int>(p) == indices_        ? read_face_corners(property, item, reader, mesh)
+                        : static_cast<int>(p) == texcoord_list_ ? read_face_texcoords(property, item, reader)
+                        : property.is_list                     ? skip_list(property, item, reader)
+                                                               : reader->skip(property.value_type, 1, item);
         if (!status.ok()) return status;
       }
     }
-    std::string extra = property_names(element, {indices_});
+    std::string extra = property_names(element, {indices_, texcoord_list_});
     if (!extra.empty() && element.count > 0) {
       warnings_->note("ignored PLY face properties (" + extra + ") on " + std::to_string(element.count) + " faces");
     }
@@ -1287,6 +1380,29 @@ class PlyParser {
       mesh->corners.push_back(static_cast<uint32_t>(index.integer));
     }
     mesh->face_sizes.push_back(static_cast<uint32_t>(corners));
+    last_degree_ = corners;
+    return Status::Ok();
+  }
+
+  // A face's texcoord list: u v per corner (spec 15, texture coordinates
+  // with their own value per corner). A list of another length is an error.
+  Status read_face_texcoords(const PlyProperty& property, const PlyItem& item, PlyDataReader* reader) {
+    PlyValue count;
+    if (Status status = reader->read(property.count_type, item, &count); !status.ok()) return status;
+    const bool degree_known = indices_ < texcoord_list_;  // the corners came first in this face
+    if (count.integer < 0 || count.integer % 2 != 0 || count.integer > int64_t(reader->bytes_left()) ||
+        (degree_known && count.integer != 0 && uint64_t(count.integer) != 2 * last_degree_))
+      return invalid(reader->where() + describe(item) + ": a texcoord list of " + std::to_string(count.integer) +
+                     " numbers, not two per corner");
+    for (int64_t i = 0; i < count.integer; i += 2) {
+      PlyValue u, v;
+      float uv[2];
+      if (Status status = reader->read(property.value_type, item, &u); !status.ok()) return status;
+      if (Status status = reader->read(property.value_type, item, &v); !status.ok()) return status;
+      if (!ply_coordinate(property.value_type, u, &uv[0]) || !ply_coordinate(property.value_type, v, &uv[1]))
+        return invalid(reader->where() + "non-finite texcoord in " + describe(item));
+      corner_texcoords_.emplace_back(uv[0], uv[1]);
+    }
     return Status::Ok();
   }
 
@@ -1338,6 +1454,10 @@ class PlyParser {
   const PlyElement* face_element_ = nullptr;
   int xyz_[3] = {-1, -1, -1};
   int indices_ = -1;
+  int texcoord_list_ = -1;                 // face "texcoord" list (u v per corner), if any
+  uint64_t last_degree_ = 0;               // corners of the face read last
+  std::vector<PlyVertexAttribute> vertex_attributes_;
+  std::vector<std::pair<float, float>> corner_texcoords_;
   bool vertices_read_ = false;
   bool faces_before_vertices_ = false;
 };
@@ -1748,37 +1868,112 @@ void write_off(const Mesh& mesh, TextSink* out) {
   put_face_lines(mesh, out);
 }
 
+// Spec 15's attributes as PLY holds them: one value per vertex (every
+// corner of a vertex refers to one value), or texcoords per corner.
+bool one_value_per_vertex(const Mesh& mesh, const MeshAttribute& a, std::vector<uint32_t>* value_of) {
+  value_of->assign(mesh.vertex_count(), UINT32_MAX);
+  for (size_t k = 0; k < mesh.corners.size(); ++k) {
+    uint32_t& v = (*value_of)[mesh.corners[k]];
+    if (v != UINT32_MAX && v != a.corner_values[k]) return false;
+    v = a.corner_values[k];
+  }
+  return true;
+}
+
+// The PLY properties of an attribute (names, in component order).
+std::vector<const char*> ply_property_names(const MeshAttribute& a) {
+  for (const auto& [names, what] : ply_attribute_names())
+    if (a.name == what.first && a.kind == what.second && names.size() == a.components) return names;
+  return {};
+}
+
+// Colours and alpha as uchar when their values go above 1 (read from uchar
+// properties), else as float.
+bool ply_uchar(const MeshAttribute& a) {
+  if (a.kind != AttributeKind::kColour && a.name != "alpha") return false;
+  for (float x : a.values)
+    if (x > 1.5f) return true;
+  return false;
+}
+
 void write_ply(const Mesh& mesh, TextSink* out) {
   uint32_t max_degree = 0;
   for (uint32_t size : mesh.face_sizes) max_degree = std::max(max_degree, size);
   // The narrowest common types that hold the data, so other tools read it.
   const char* count_type = max_degree <= 255 ? "uchar" : "uint";
   const char* index_type = mesh.vertex_count() <= uint64_t{INT32_MAX} ? "int" : "uint";
+  std::vector<std::pair<const MeshAttribute*, std::vector<uint32_t>>> per_vertex;
+  const MeshAttribute* corner_texcoord = nullptr;
+  for (const MeshAttribute& a : mesh.attributes) {
+    std::vector<uint32_t> value_of;
+    if (one_value_per_vertex(mesh, a, &value_of))
+      per_vertex.emplace_back(&a, std::move(value_of));
+    else
+      corner_texcoord = &a;  // check_attributes_fit let only texcoords through
+  }
   out->put("ply\nformat ascii 1.0\nelement vertex ");
   out->put_uint(mesh.vertex_count());
-  out->put("\nproperty float x\nproperty float y\nproperty float z\nelement face ");
+  out->put("\nproperty float x\nproperty float y\nproperty float z\n");
+  for (const auto& [a, value_of] : per_vertex)
+    for (const char* name : ply_property_names(*a)) out->put(std::string("property ") + (ply_uchar(*a) ? "uchar " : "float ") + name + "\n");
+  out->put("element face ");
   out->put_uint(mesh.face_count());
-  out->put(std::string("\nproperty list ") + count_type + " " + index_type + " vertex_indices\nend_header\n");
+  out->put(std::string("\nproperty list ") + count_type + " " + index_type + " vertex_indices\n");
+  if (corner_texcoord) out->put(std::string("property list ") + (max_degree <= 127 ? "uchar" : "uint") + " float texcoord\n");
+  out->put("end_header\n");
   for (size_t v = 0; v < mesh.vertex_count(); ++v) {
     out->put_float(mesh.positions[3 * v]);
     out->put(" ");
     out->put_float(mesh.positions[3 * v + 1]);
     out->put(" ");
     out->put_float(mesh.positions[3 * v + 2]);
+    for (const auto& [a, value_of] : per_vertex)
+      for (uint32_t c = 0; c < a->components; ++c) {
+        const float x = value_of[v] == UINT32_MAX ? 0.f : a->values[a->components * size_t(value_of[v]) + c];
+        out->put(" ");
+        if (ply_uchar(*a))
+          out->put_uint(uint64_t(std::clamp(std::lround(x), 0L, 255L)));
+        else
+          out->put_float(x);
+      }
     out->put("\n");
   }
-  put_face_lines(mesh, out);
+  size_t corner = 0;
+  for (uint32_t size : mesh.face_sizes) {
+    out->put_uint(size);
+    for (uint32_t i = 0; i < size; ++i) {
+      out->put(" ");
+      out->put_uint(mesh.corners[corner + i]);
+    }
+    if (corner_texcoord) {
+      out->put(" ");
+      out->put_uint(2 * uint64_t(size));
+      for (uint32_t i = 0; i < size; ++i)
+        for (uint32_t c = 0; c < 2; ++c) {
+          out->put(" ");
+          out->put_float(corner_texcoord->values[2 * size_t(corner_texcoord->corner_values[corner + i]) + c]);
+        }
+    }
+    corner += size;
+    out->put("\n");
+  }
 }
 
 // What the format cannot write is an error, never a silent loss: OBJ writes
-// one texture-coordinate and one normal attribute, OFF and PLY none yet.
+// one texture-coordinate and one normal attribute, PLY per-vertex normals,
+// colours, alpha and texcoords (per corner too), OFF none.
 Status check_attributes_fit(const Mesh& mesh, const std::string& format) {
   for (const MeshAttribute& a : mesh.attributes) {
     const bool obj_kind = a.kind == AttributeKind::kTextureCoordinate || a.kind == AttributeKind::kNormal;
     if (format == "obj" && obj_kind && obj_attribute(mesh, a.kind) == &a) continue;
+    std::vector<uint32_t> value_of;
+    if (format == "ply" && !ply_property_names(a).empty() &&
+        (one_value_per_vertex(mesh, a, &value_of) || (a.kind == AttributeKind::kTextureCoordinate && a.components == 2)))
+      continue;
     return invalid("the mesh has attribute \"" + a.name + "\", which ." + format +
-                   (format == "obj" ? " cannot hold besides the first texture coordinates and normals"
-                                    : " output cannot hold; write .obj (texture coordinates, normals) or .qmc"));
+                   (format == "obj"   ? " cannot hold besides the first texture coordinates and normals"
+                    : format == "ply" ? " cannot hold (PLY: normals, colour and alpha one per vertex, texcoord)"
+                                      : " output cannot hold; write .obj, .ply or .qmc"));
   }
   return Status::Ok();
 }

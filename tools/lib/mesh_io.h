@@ -17,7 +17,10 @@ namespace qmc::tools {
 
 // Reads by extension (case-insensitive): .obj .off .ply .stl. OBJ texture
 // coordinates and normals with their per-corner indices (f v/vt/vn) become
-// the attributes "texcoord" and "normal" (spec section 15).
+// the attributes "texcoord" and "normal" (spec section 15), OBJ o/g/usemtl/s
+// and mtllib the face labels "object", "group", "material", "smoothing"
+// (section 16); PLY vertex nx ny nz, red green blue, alpha and u v (s t,
+// texture_u texture_v) and face texcoord lists become attributes too.
 // Anything in the file that a qmc::Mesh does not carry (colours, groups,
 // materials, attributes on only some corners, 'l'/'p' elements, extra PLY elements or properties, STL
 // vertex merging) is reported in *warnings as one short counted sentence per
@@ -35,7 +38,8 @@ qmc::Status read_mesh_from_memory(std::string_view text_or_bytes, std::string_vi
 // Writes .obj .off .ply (ASCII) by extension, faces exactly as stored. Floats
 // are printed like "%.9g" (locale-independent), so they read back bit-exact.
 // OBJ writes the first texture-coordinate and normal attributes as vt / vn
-// with per-corner indices. A mesh that violates the qmc::Mesh invariants,
+// with per-corner indices and the face labels as statements; PLY the
+// attributes it reads, in the same form (colours above 1 as uchar). A mesh that violates the qmc::Mesh invariants,
 // or has an attribute the format cannot hold, gives kInvalidArgument.
 qmc::Status write_mesh(const std::string& path, const qmc::Mesh& mesh);
 
