@@ -176,7 +176,7 @@ def main():
                     (path.split('corpus/')[-1], len(obj[0]), cells[0], cells[1], info['bytes'], whole, whole_ratio,
                      angle))
     print('Positions %d bits, texture coordinates %d bits, normals %d bits in both codecs. qmc codes unit normals '
-          'octahedrally (spec 15.8), predicted from the positions, as Draco does; its whole files also carry the '
+          'octahedrally (spec 15.7), predicted from the positions, as Draco does; its whole files also carry the '
           'face labels (spec 16: OBJ o, g, usemtl, s) that Draco drops.' % (POSITION_BITS, TEXCOORD_BITS, NORMAL_BITS))
     print()
     print('| mesh | vertices | texcoord: qmc / Draco bytes | normal: qmc / Draco bytes | whole file: qmc / Draco | '

@@ -35,7 +35,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   size_t length = 0;
   if (!qmc::fuzz::decode_conn_prefix(data, size, &mesh, &vertex_count, &payload, &length)) return 0;
   if (vertex_count > (1u << 16)) return 0;  // POSN would have to back the vertices
-  // Positions for coding 3's predictions (15.8): a fixed scatter of integers.
+  // Positions for coding 3's predictions (15.7): a fixed scatter of integers.
   std::vector<uint32_t> quantized(3 * size_t(vertex_count));
   for (size_t i = 0; i < quantized.size(); ++i) quantized[i] = uint32_t((i * 2654435761u) >> 7) & 0xFFFFF;
   qmc::OutputBudget budget(kOutputLimit);

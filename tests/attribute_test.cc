@@ -88,7 +88,7 @@ TEST(AttributeMapping, NoNewValueOnceTheTableIsFull) {
   EXPECT_EQ(met, 1u);
 }
 
-// 15.8 on one counter-clockwise triangle (0,0,0), (1,0,0), (0,1,0): every
+// 15.7 on one counter-clockwise triangle (0,0,0), (1,0,0), (0,1,0): every
 // corner predicts +z (t = 2, sigma = +1, X = Y = 0, L = 1), the grid point
 // floor(((0 + 1) M + 1) / 2) = 512 of M = 1023 on both axes; its output is
 // (1/1023, 1/1023, 1 - 2/1023) normalized.
@@ -125,7 +125,7 @@ TEST(OctahedralNormals, PredictionOfTheSpecExample) {
 }
 
 // Unit normals of every direction come back within their octahedral cell,
-// with the positions' frames (15.8), in coder order and with oRDR.
+// with the positions' frames (15.7), in coder order and with oRDR.
 TEST(OctahedralNormals, RoundTripAtEveryBitCount) {
   Mesh m = tools::make_scrambled(tools::triangulated(tools::make_refined_sphere(2)), 3);
   tools::add_vertex_normals(&m);
@@ -235,7 +235,7 @@ TEST(AttributeCorpus, EveryMeshKeepsItsAttributesAndLabels) {
   EXPECT_GE(checked, 8);  // attr/ 3, quad/ 4 with texture coordinates, normals or labels, tri/cathead
 }
 
-// 15.7: per-vertex normals use mapping 0; texture coordinates with seams mapping 1.
+// 15.8: per-vertex normals use mapping 0; texture coordinates with seams mapping 1.
 TEST(AttributeEncoder, ChoosesPerVertexMappingWhenItFits) {
   Mesh m = tools::triangulated(tools::make_refined_sphere(2));
   tools::add_vertex_normals(&m);

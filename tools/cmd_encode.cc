@@ -367,7 +367,7 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
     std::printf("attribute   %s (spec 15): %u values, %s, %s; %llu bytes (mapping %llu, values %llu), %.2f bits/value\n",
                 a.name.c_str(), a.value_count, a.per_corner ? "per corner" : "one per vertex",
                 a.exact        ? "exact binary32"
-                : a.octahedral ? "unit normals, octahedral (spec 15.8)"
+                : a.octahedral ? "unit normals, octahedral (spec 15.7)"
                                : ("grid step " + shortest_number(a.step)).c_str(),
                 static_cast<unsigned long long>(a.chunk_bytes), static_cast<unsigned long long>(a.mapping_bytes),
                 static_cast<unsigned long long>(a.value_bytes),

@@ -1933,7 +1933,7 @@ std::vector<uint8_t> exact_values(size_t floats) {
 
 void write_attribute_valid(VectorWriter* w) {
   using namespace qmc::tools;
-  qmc::EncodeOptions options;  // what `qmc encode` wrote before normals took 15.8's coding
+  qmc::EncodeOptions options;  // what `qmc encode` wrote before normals took 15.7's coding
   options.octahedral_normals = false;
   Mesh sphere = perturbed(triangulated(make_refined_sphere(3)), 7, 0.01f);
   add_chart_texcoords(&sphere);
@@ -2010,6 +2010,14 @@ void write_attribute_valid(VectorWriter* w) {
            with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(unreferenced)), nullptr);
 }
 
+// The cube's hand-made texture coordinates: every corner a new value, exact binary32.
+AttrFields cube_texcoord_fields(const std::vector<uint32_t>& corners) {
+  AttrFields f;
+  f.mapping_stream = mapping_stream(corners, 8, 24, std::vector<qmc::MappingChoice>(24));
+  f.rest = exact_values(48);
+  return f;
+}
+
 void write_attribute_errors(VectorWriter* w) {
   using qmc::ErrorCode;
   using namespace qmc::tools;
@@ -2019,9 +2027,7 @@ void write_attribute_errors(VectorWriter* w) {
   qmc::DecodedFile decoded;
   (void)qmc::decode(cube.data(), cube.size(), &decoded);
   const std::vector<uint32_t>& corners = decoded.mesh.corners;
-  AttrFields f;
-  f.mapping_stream = mapping_stream(corners, 8, 24, std::vector<qmc::MappingChoice>(24));
-  f.rest = exact_values(48);
+  const AttrFields f = cube_texcoord_fields(corners);
   const auto attr = [&](const AttrFields& x) {
     return with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(x));
   };
@@ -2221,7 +2227,22 @@ void write_attribute_errors(VectorWriter* w) {
   invalid("invalid_attr_values_bytes_after_data", x, ErrorCode::kBadChunkPayload);
 }
 
-// Section 15.8: unit normals on the octahedral grid, predicted from the positions.
+// 15.7's prediction P_u of value 0 of a file's (per-vertex) normals, on the grid of B = 2.
+uint32_t first_normal_prediction_u(const std::vector<uint8_t>& file) {
+  qmc::DecodedFile d;
+  (void)qmc::decode(file.data(), file.size(), &d);
+  qmc::ValueCorners value_corners;
+  value_corners.build(d.mesh.corners, d.mesh.vertex_count());
+  qmc::CornerCycle cycle;
+  cycle.build(d.mesh.face_sizes, d.mesh.corners.size());
+  qmc::OctahedralFrame frame;
+  uint32_t pu = 0, pv = 0;
+  qmc::predict_octahedral(value_corners.begin(0), value_corners.end(0), d.mesh.corners, cycle, d.quantized.data(), 3,
+                          &frame, &pu, &pv);
+  return pu;
+}
+
+// Section 15.7: unit normals on the octahedral grid, predicted from the positions.
 void write_octahedral_normal_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   using namespace qmc::tools;
@@ -2296,16 +2317,7 @@ void write_octahedral_normal_vectors(VectorWriter* w) {
   }
   {
     // B = 2 (M = 3) and value 0's u residual 3 away from its prediction, on the far side.
-    qmc::DecodedFile d;
-    (void)qmc::decode(smooth.data(), smooth.size(), &d);
-    qmc::ValueCorners value_corners;
-    value_corners.build(d.mesh.corners, d.mesh.vertex_count());
-    qmc::CornerCycle cycle;
-    cycle.build(d.mesh.face_sizes, d.mesh.corners.size());
-    qmc::OctahedralFrame frame;
-    uint32_t pu = 0, pv = 0;
-    qmc::predict_octahedral(value_corners.begin(0), value_corners.end(0), d.mesh.corners, cycle, d.quantized.data(), 3,
-                            &frame, &pu, &pv);
+    const uint32_t pu = first_normal_prediction_u(smooth);
     qmc::RangeEncoder rc;
     qmc::OctahedralModel model;
     qmc::code_octahedral_residual(&rc, &model, 2, 0, 0, qmc::SignedResidual{3, pu == 0});
@@ -2456,6 +2468,51 @@ void write_face_label_vectors(VectorWriter* w) {
   }
 }
 
+// Points an independent decoder written from spec 15 raised: a skipped
+// chunk's name still counts (15.1 check 2), and a residual of half the
+// octahedral grid is valid (15.7: 13.5.6's overflow rule does not apply).
+void write_attribute_review_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  using namespace qmc::tools;
+  qmc::EncodeOptions options;
+  options.octahedral_normals = false;
+  const std::vector<uint8_t> cube = encode_with(make_cube(), options, "cube");
+  qmc::DecodedFile decoded;
+  (void)qmc::decode(cube.data(), cube.size(), &decoded);
+  const AttrFields f = cube_texcoord_fields(decoded.mesh.corners);
+  AttrFields skipped = f;
+  skipped.coding = 2;
+  const std::vector<uint8_t> first = with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(skipped));
+  w->invalid("invalid_attr_name_of_skipped_chunk_repeated",
+             with_chunk_before(first, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(f)), ErrorCode::kBadChunkPayload);
+
+  Mesh sphere = perturbed(triangulated(make_refined_sphere(2)), 11, 0.02f);
+  add_vertex_normals(&sphere);
+  const std::vector<uint8_t> smooth = encode_with(sphere, qmc::EncodeOptions{}, "octahedral sphere");
+  Chunks c = split_chunks(smooth);
+  const size_t at = find_chunk(c, qmc::kChunkAttribute);
+  const size_t bits_at = attr_field_offsets(c[at].payload).after_coding;
+  const uint32_t pu = first_normal_prediction_u(smooth);
+  qmc::DecodedFile d;
+  (void)qmc::decode(smooth.data(), smooth.size(), &d);
+  qmc::RangeEncoder rc;
+  qmc::OctahedralModel model;
+  uint32_t activity = 0;
+  for (size_t i = 0; i < d.mesh.vertex_count(); ++i) {
+    const int bucket = qmc::octahedral_bucket(activity);
+    const qmc::SignedResidual u = i == 0 ? qmc::SignedResidual{2, pu >= 2} : qmc::SignedResidual{};
+    qmc::code_octahedral_residual(&rc, &model, 2, bucket, 0, u);
+    qmc::code_octahedral_residual(&rc, &model, 2, bucket, 1, qmc::SignedResidual{});
+    activity = u.magnitude;
+  }
+  const std::vector<uint8_t> stream = rc.finish();
+  std::vector<uint8_t>& p = c[at].payload;
+  p.resize(bits_at);
+  p.push_back(2);
+  p.insert(p.end(), stream.begin(), stream.end());
+  w->valid("valid_attr_octahedral_residual_half_the_grid", join_chunks(c), nullptr);
+}
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: qmc-make-vectors DIR   (writes DIR/MANIFEST and DIR/vectors/*.qmc)\n");
@@ -2486,6 +2543,7 @@ int main(int argc, char** argv) {
   write_attribute_errors(&w);
   write_octahedral_normal_vectors(&w);
   write_face_label_vectors(&w);
+  write_attribute_review_vectors(&w);
   w.finish();
   return 0;
 }

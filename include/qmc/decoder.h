@@ -87,7 +87,7 @@ struct GeometryImageData {
 // described by attribute_codings[i]).
 struct AttributeCoding {
   uint8_t mapping = 0;  // 0 per vertex, 1 per corner (15.1)
-  uint8_t coding = 0;   // 0 predicted on a grid (15.4), 1 exact binary32 (15.5), 3 octahedral normals (15.8)
+  uint8_t coding = 0;   // 0 predicted on a grid (15.4), 1 exact binary32 (15.5), 3 octahedral normals (15.7)
   std::array<float, 3> origin{};   // coding 0: value = origin + q x step, per component
   std::array<double, 3> step{};
   std::array<uint32_t, 3> top{};   // coding 3: 2^B - 1 twice, then 0

@@ -109,11 +109,11 @@ struct EncodeOptions {
   // kept as exact binary32. A progressive file or a geometry image cannot
   // carry attributes: encode() refuses a mesh that has any.
   int texcoord_bits = 12;  // step 1/4095 of the range: 1/4 texel of a 1024-texel texture
-  int normal_bits = 10;    // unit normals: octahedral, B bits (15.8), about 0.1 degree
+  int normal_bits = 10;    // unit normals: octahedral, B bits (15.7), about 0.1 degree
   int colour_bits = 10;
   int generic_bits = 12;
   bool exact_attributes = false;
-  // Unit normals take section 15.8's octahedral coding; false keeps them on
+  // Unit normals take section 15.7's octahedral coding; false keeps them on
   // 15.4's grid of three components (as the first aTTR vectors were made).
   bool octahedral_normals = true;
   // Called during long operations (the progressive pipeline) with a stage
@@ -190,7 +190,7 @@ struct AttributeStats {
   std::string name;
   bool per_corner = false;       // mapping 1 (else one value per vertex)
   bool exact = false;            // coding 1 (else predicted on a grid)
-  bool octahedral = false;       // coding 3: unit normals, octahedral (15.8)
+  bool octahedral = false;       // coding 3: unit normals, octahedral (15.7)
   uint32_t value_count = 0;
   double step = 0;               // the grid's step (coding 0); coding 3: 2 / (2^B - 1)
   uint64_t mapping_bytes = 0, value_bytes = 0;  // the mapping stream; the values (grid fields included)

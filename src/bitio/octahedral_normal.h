@@ -1,5 +1,5 @@
 // Unit normals on an octahedral grid, predicted from the decoded positions
-// (spec/qmc-format.md section 15.8): the prediction's frame, its grid point,
+// (spec/qmc-format.md section 15.7): the prediction's frame, its grid point,
 // the output of a grid point, and the decisions of one value. Shared by the
 // encoder and the decoder so the two cannot drift apart.
 #pragma once
@@ -19,13 +19,13 @@ inline constexpr int kOctahedralMinBits = 2, kOctahedralMaxBits = 16;
 inline constexpr uint32_t kOctahedralCorners = 16;  // corners of a value that predict it
 inline constexpr int kOctahedralBuckets = 8;
 
-// 15.8's frame: axis t goes up, with sign sigma.
+// 15.7's frame: axis t goes up, with sign sigma.
 struct OctahedralFrame {
   int t = 2;
   int sigma = 1;
 };
 
-// floor(x / 2^s) for any sign (15.8).
+// floor(x / 2^s) for any sign (15.7).
 inline int64_t floor_shift(int64_t x, int s) { return x >= 0 ? x >> s : -((-x - 1) >> s) - 1; }
 
 // The corners of every value, in corner order (m: the value of each corner).
@@ -63,7 +63,7 @@ struct CornerCycle {
   }
 };
 
-// 15.8's prediction of a value from the positions q (3 per vertex) at its
+// 15.7's prediction of a value from the positions q (3 per vertex) at its
 // corners [first, last): the frame and the grid point (pu, pv) of M.
 inline void predict_octahedral(const uint32_t* first, const uint32_t* last, const std::vector<uint32_t>& corners,
                                const CornerCycle& cycle, const uint32_t* q, uint32_t m_steps, OctahedralFrame* frame,
@@ -112,7 +112,7 @@ inline void predict_octahedral(const uint32_t* first, const uint32_t* last, cons
   *pv = uint32_t(((y + l) * m + l) / (2 * l));
 }
 
-// 15.8's output of grid point (gu, gv) of M in `frame`.
+// 15.7's output of grid point (gu, gv) of M in `frame`.
 inline void octahedral_output(uint32_t gu, uint32_t gv, uint32_t m_steps, OctahedralFrame frame, float out[3]) {
   const double m = double(m_steps);
   const double u = (2.0 * double(gu) - m) / m, v = (2.0 * double(gv) - m) / m;
@@ -128,7 +128,7 @@ inline void octahedral_output(uint32_t gu, uint32_t gv, uint32_t m_steps, Octahe
   out[frame.t] = float(double(frame.sigma) * w / length);
 }
 
-// 15.8's probabilities of one payload, all starting at 1024.
+// 15.7's probabilities of one payload, all starting at 1024.
 struct OctahedralModel {
   uint16_t cls[2][kOctahedralBuckets][kOctahedralMaxBits];
   uint16_t sign[2];
@@ -140,10 +140,10 @@ struct OctahedralModel {
   }
 };
 
-// 15.8's bucket of a value: the activity |r_u| + |r_v| of the value before.
+// 15.7's bucket of a value: the activity |r_u| + |r_v| of the value before.
 inline int octahedral_bucket(uint32_t activity) { return std::min(bit_length(activity), kOctahedralBuckets - 1); }
 
-// 15.8's residual of component e (0: u, 1: v) of one value: decoded, or
+// 15.7's residual of component e (0: u, 1: v) of one value: decoded, or
 // `value` coded.
 template <class Coder>
 SignedResidual code_octahedral_residual(Coder* coder, OctahedralModel* model, int bits, int bucket, int e,

@@ -39,7 +39,7 @@ uint64_t corner_count(const Mesh& faces) { return faces.corners.size(); }
 
 // Checks 1-3 of 15.1.
 Status read_identity(ByteReader* in, const Mesh& faces, uint32_t vertex_count,
-                     const std::vector<MeshAttribute>& earlier, Header* h, MeshAttribute* out) {
+                     const std::vector<std::string>& earlier, Header* h, MeshAttribute* out) {
   uint64_t v = 0, k = 0;
   if (!in->get_varint(&v) || v != vertex_count)
     return bad(*h, "vertex_count missing, malformed or not CONN's " + std::to_string(vertex_count));
@@ -51,8 +51,8 @@ Status read_identity(ByteReader* in, const Mesh& faces, uint32_t vertex_count,
   out->name.assign(reinterpret_cast<const char*>(in->cursor()), length);
   in->skip(length);
   h->label = "aTTR \"" + out->name + "\"";
-  for (const MeshAttribute& e : earlier)
-    if (e.name == out->name) return bad(*h, "a second attribute of this name");
+  for (const std::string& name : earlier)
+    if (name == out->name) return bad(*h, "a second attribute of this name (skipped ones count, check 2)");
   uint8_t kind = 0;
   if (!in->get_u8(&kind) || !in->get_u8(&h->components) || !in->get_u8(&h->mapping))
     return bad(*h, "kind, components or mapping missing");
@@ -179,16 +179,16 @@ Status decode_grid_values(ByteReader* in, const Header& h, const Mesh& faces, co
 
 Status truncated_in_value(const Header& h, size_t i) {
   return Status(ErrorCode::kTruncated,
-                h.label + ": the range-coded stream ends inside value " + std::to_string(i) + " (section 15.8)");
+                h.label + ": the range-coded stream ends inside value " + std::to_string(i) + " (section 15.7)");
 }
 
-// Section 15.8: unit normals on the octahedral grid of B bits, each in the
+// Section 15.7: unit normals on the octahedral grid of B bits, each in the
 // frame of its prediction from the positions q (coder order).
 Status decode_octahedral_values(ByteReader* in, const Header& h, const Mesh& faces, const std::vector<uint32_t>& m,
                                 const std::vector<uint32_t>& q, AttributeCoding* coding, std::vector<float>* values) {
   uint8_t bits = 0;
   if (!in->get_u8(&bits) || bits < kOctahedralMinBits || bits > kOctahedralMaxBits)
-    return bad(h, "bits missing or outside 2..16", "15.8");
+    return bad(h, "bits missing or outside 2..16", "15.7");
   coding->top = {uint32_t((1u << bits) - 1), uint32_t((1u << bits) - 1), 0};
   const uint32_t steps = coding->top[0];
   RangeDecoder rc(in->cursor(), in->remaining());
@@ -216,7 +216,7 @@ Status decode_octahedral_values(ByteReader* in, const Header& h, const Mesh& fac
       if (g < 0 || g > int64_t(steps))
         return Status(ErrorCode::kBadSymbol, h.label + ": value " + std::to_string(i) + " " + (e ? "v" : "u") +
                                                  " decodes to " + std::to_string(g) + ", outside 0.." +
-                                                 std::to_string(steps) + " (section 15.8)");
+                                                 std::to_string(steps) + " (section 15.7)");
       grid[e] = uint32_t(g);
       activity += r.magnitude;
     }
@@ -240,7 +240,7 @@ void read_exact_values(ByteReader* in, size_t count, std::vector<float>* values)
 }  // namespace
 
 Status decode_attribute(const uint8_t* payload, size_t size, const Mesh& faces, uint32_t vertex_count,
-                        const std::vector<uint32_t>& quantized, const std::vector<MeshAttribute>& earlier,
+                        const std::vector<uint32_t>& quantized, const std::vector<std::string>& earlier,
                         OutputBudget* budget, MeshAttribute* out, AttributeCoding* coding, bool* skipped) {
   *out = MeshAttribute{};
   *coding = AttributeCoding{};

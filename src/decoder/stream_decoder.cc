@@ -29,6 +29,7 @@ struct StreamDecoder::State {
   bool signature_seen = false, header_seen = false, connectivity_seen = false, positions_seen = false;
   bool complete = false;
   bool order_seen = false;  // oRDR (section 4.5)
+  std::vector<std::string> attribute_names;  // of every aTTR so far, skipped ones included (15.1)
   uint32_t vertex_count = 0;
   uint64_t base_bytes = 0;  // CONN and POSN chunks of a progressive file
   LoopEdges level_edges;    // section 12.3: edges of the finest level so far
@@ -277,10 +278,12 @@ Status StreamDecoder::State::handle_attribute(const uint8_t* payload, uint32_t l
   if (Status s = check_mesh_extension("aTTR", "15.1"); !s.ok()) return s;
   MeshAttribute attribute;
   AttributeCoding coding;
-  if (Status s = decode_attribute(payload, length, file.mesh, vertex_count, file.quantized, file.mesh.attributes,
-                                  &budget, &attribute, &coding, skipped);
-      !s.ok() || *skipped)
+  if (Status s = decode_attribute(payload, length, file.mesh, vertex_count, file.quantized, attribute_names, &budget,
+                                  &attribute, &coding, skipped);
+      !s.ok())
     return s;
+  attribute_names.push_back(attribute.name);
+  if (*skipped) return Status::Ok();
   file.mesh.attributes.push_back(std::move(attribute));
   file.attribute_codings.push_back(coding);
   return Status::Ok();

@@ -19,7 +19,7 @@ namespace {
 
 constexpr uint8_t kMappingPerVertex = 0, kMappingPerCorner = 1;
 constexpr uint8_t kCodingGrid = 0, kCodingExact = 1, kCodingOctahedral = 3;
-// 15.7: normals within this of unit length take coding 3.
+// 15.8: normals within this of unit length take coding 3.
 constexpr double kUnitTolerance = 1e-3;
 constexpr uint32_t kNone = UINT32_MAX;
 // The longest list S_v the encoder searches for a value of the vertex's own
@@ -35,7 +35,7 @@ int bits_for(AttributeKind kind, const EncodeOptions& options) {
   }
 }
 
-// 15.7: mapping 0 when each vertex's corners refer to one value that no
+// 15.8: mapping 0 when each vertex's corners refer to one value that no
 // other vertex refers to, and every vertex has one. Fills value_of_vertex.
 bool one_value_per_vertex(const std::vector<uint32_t>& corner_values, const Mesh& file_mesh, size_t vertex_count,
                           size_t value_count, std::vector<uint32_t>* value_of_vertex) {
@@ -132,7 +132,7 @@ std::vector<uint8_t> encode_grid_values(const std::vector<float>& table, uint32_
   return out;
 }
 
-// 15.7: normals all of unit length (within kUnitTolerance) fit coding 3.
+// 15.8: normals all of unit length (within kUnitTolerance) fit coding 3.
 bool unit_normals(const MeshAttribute& a) {
   if (a.kind != AttributeKind::kNormal || a.components != 3) return false;
   for (size_t i = 0; i < a.value_count(); ++i) {
@@ -142,8 +142,8 @@ bool unit_normals(const MeshAttribute& a) {
   return true;
 }
 
-// 15.7: the grid point, of the four around the octahedral projection of n in
-// `frame`, whose output (15.8) is nearest to n in angle.
+// 15.8: the grid point, of the four around the octahedral projection of n in
+// `frame`, whose output (15.7) is nearest to n in angle.
 void nearest_octahedral(const float* n, OctahedralFrame frame, uint32_t steps, uint32_t grid[2]) {
   const double x = n[(frame.t + 1) % 3], y = n[(frame.t + 2) % 3], z = double(frame.sigma) * n[frame.t];
   const double l1 = std::fabs(x) + std::fabs(y) + std::fabs(z);
@@ -170,7 +170,7 @@ void nearest_octahedral(const float* n, OctahedralFrame frame, uint32_t steps, u
     }
 }
 
-// 15.8: bits, then the residuals of every value in its predicted frame; m
+// 15.7: bits, then the residuals of every value in its predicted frame; m
 // is the value of every corner, q the positions' integers in file order.
 std::vector<uint8_t> encode_octahedral_values(const std::vector<float>& table, int bits, const Mesh& mesh,
                                               const std::vector<uint32_t>& m, const std::vector<uint32_t>& q) {

@@ -16,7 +16,7 @@ namespace qmc {
 // labels (vertex_count of them); corner_source[k] is the input corner that
 // file corner k is.
 // quantized holds the POSN integers in file order (3 per vertex), from which
-// unit normals are predicted (coding 3, 15.8); empty leaves them on a grid.
+// unit normals are predicted (coding 3, 15.7); empty leaves them on a grid.
 Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, size_t vertex_count,
                         const std::vector<uint32_t>& quantized, const std::vector<uint64_t>& corner_source,
                         const EncodeOptions& options, std::vector<uint8_t>* payload, AttributeStats* stats);

@@ -225,7 +225,7 @@ uint8_t minor_version_for(const FileConnectivity& conn, int position_method) {
   return method == ConnectivityMethod::kPolygon ? 2 : method == ConnectivityMethod::kQuad ? 1 : 0;
 }
 
-// Section 15.7: the input corner of every file corner.
+// Section 15.8: the input corner of every file corner.
 Status corner_sources(const Mesh& mesh, const FileConnectivity& conn, std::vector<uint64_t>* source) {
   std::vector<uint32_t> rotation;
   if (Status s = face_rotations(mesh, conn.mesh, conn.file_vertex, conn.face_source, &rotation); !s.ok()) return s;
@@ -242,7 +242,7 @@ Status corner_sources(const Mesh& mesh, const FileConnectivity& conn, std::vecto
 }
 
 // Section 15: an aTTR chunk per attribute, right after POSN. Normals are
-// predicted from the integers the decoder gets from `positions` (15.8),
+// predicted from the integers the decoder gets from `positions` (15.7),
 // decoded here: the POSN payload may hold another grid than the one asked
 // for (method 0 when every vertex is on one point).
 Status add_attributes(const Mesh& mesh, const EncodeOptions& options, const FileConnectivity& conn,

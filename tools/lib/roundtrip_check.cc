@@ -74,7 +74,7 @@ std::vector<std::array<double, 3>> attribute_tolerances(const DecodedFile& decod
   std::vector<std::array<double, 3>> out;
   for (const AttributeCoding& c : decoded.attribute_codings) {
     std::array<double, 3> t{};
-    // Coding 3 (15.8): the grid point is one of the four around the input's
+    // Coding 3 (15.7): the grid point is one of the four around the input's
     // octahedral projection, |du|, |dv| <= 2 / M; the map back to the unit
     // sphere stretches that by less than 3 per component.
     if (c.coding == 3) t.fill(12.0 / double(c.top[0]));
