@@ -167,6 +167,26 @@ QMC_API int qmc_decoder_corner_attribute_count(const qmc_decoder* decoder);
 QMC_API int qmc_decoder_corner_attribute(const qmc_decoder* decoder, int index, qmc_corner_attribute* out);
 QMC_API void qmc_corner_attribute_free(qmc_corner_attribute* attribute); /* frees its arrays, zeroes it */
 
+/* Section 16: labels of the faces (fLBL): OBJ objects, groups, materials,
+ * smoothing groups. Face f of the QMC_FINEST mesh has label face_values[f],
+ * an index below value_count, or value_count for none. face_values is freed
+ * with qmc_free. The strings stay owned by the decoder, valid until its next
+ * feed, finish or destroy; they may hold any bytes (length given). */
+typedef struct qmc_face_labels {
+  char name[256];          /* NUL-terminated */
+  uint32_t value_count;
+  uint32_t reference_count;
+  uint32_t face_count;
+  uint32_t* face_values;
+} qmc_face_labels;
+
+QMC_API int qmc_decoder_face_labels_count(const qmc_decoder* decoder);
+QMC_API int qmc_decoder_face_labels(const qmc_decoder* decoder, int index, qmc_face_labels* out);
+/* Value `value` (0 .. value_count - 1) of labels `index`, or, with reference
+ * set, reference `value`; NULL if out of range. */
+QMC_API const char* qmc_decoder_face_label_string(const qmc_decoder* decoder, int index, int reference,
+                                                  uint32_t value, uint32_t* length);
+
 /* Spec 10.2, 12.9, 13.10: the canonical output of the file decoded so far,
  * whose SHA-256 the conformance manifest lists. *bytes is freed with qmc_free. */
 QMC_API int qmc_decoder_canonical_output(const qmc_decoder* decoder, uint8_t** bytes, size_t* size);

@@ -299,6 +299,39 @@ int qmc_decoder_corner_attribute(const qmc_decoder* decoder, int index, qmc_corn
   return QMC_OK;
 }
 
+int qmc_decoder_face_labels_count(const qmc_decoder* decoder) {
+  if (!decoder || !decoder->status.ok()) return 0;
+  return int(decoder->stream.file().mesh.face_labels.size());
+}
+
+int qmc_decoder_face_labels(const qmc_decoder* decoder, int index, qmc_face_labels* out) {
+  if (!decoder || !out) return QMC_INVALID_ARGUMENT;
+  std::memset(out, 0, sizeof(*out));
+  if (!decoder->status.ok()) return int(decoder->status.code());
+  if (index < 0 || index >= qmc_decoder_face_labels_count(decoder)) return QMC_INVALID_ARGUMENT;
+  const qmc::FaceLabels& l = decoder->stream.file().mesh.face_labels[size_t(index)];
+  out->face_values =
+      static_cast<uint32_t*>(std::malloc(l.face_values.empty() ? 1 : l.face_values.size() * sizeof(uint32_t)));
+  if (!out->face_values) return QMC_LIMIT_EXCEEDED;
+  if (!l.face_values.empty())
+    std::memcpy(out->face_values, l.face_values.data(), l.face_values.size() * sizeof(uint32_t));
+  std::memcpy(out->name, l.name.data(), l.name.size() < 255 ? l.name.size() : 255);
+  out->value_count = uint32_t(l.values.size());
+  out->reference_count = uint32_t(l.references.size());
+  out->face_count = uint32_t(l.face_values.size());
+  return QMC_OK;
+}
+
+const char* qmc_decoder_face_label_string(const qmc_decoder* decoder, int index, int reference, uint32_t value,
+                                          uint32_t* length) {
+  if (!decoder || !decoder->status.ok() || index < 0 || index >= qmc_decoder_face_labels_count(decoder)) return nullptr;
+  const qmc::FaceLabels& l = decoder->stream.file().mesh.face_labels[size_t(index)];
+  const std::vector<std::string>& table = reference ? l.references : l.values;
+  if (value >= table.size()) return nullptr;
+  if (length) *length = uint32_t(table[value].size());
+  return table[value].c_str();
+}
+
 int qmc_decoder_canonical_output(const qmc_decoder* decoder, uint8_t** bytes, size_t* size) {
   if (!decoder || !bytes || !size) return QMC_INVALID_ARGUMENT;
   *bytes = nullptr;

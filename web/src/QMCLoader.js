@@ -15,8 +15,9 @@
 // chunk has arrived; onLoad gets the finest. Geometry userData carries level,
 // levelCount, vertexCount, faceCount, the polygon structure (faceSizes,
 // corners), a geometry image's attributes (its normals also become the
-// 'normal' attribute), the corner attributes of spec 15, bytesReceived and
-// decodeMs. A file with texture coordinates or normals per corner (spec 15)
+// 'normal' attribute), the corner attributes of spec 15, the face labels of
+// spec 16 (a "material" label also makes the geometry's groups), bytesReceived
+// and decodeMs. A file with texture coordinates or normals per corner (spec 15)
 // gives a non-indexed geometry with 'uv' and 'normal', three corners a
 // triangle, since a seam gives one vertex several values.
 import { BufferAttribute, BufferGeometry, Loader } from 'three';
@@ -143,10 +144,27 @@ export class QMCLoader extends Loader {
 
 function toGeometry(mesh, info) {
   const geometry = cornerGeometry(mesh) ?? indexedGeometry(mesh);
+  addMaterialGroups(mesh, geometry);
   geometry.userData = { level: mesh.level, vertexCount: mesh.vertexCount, faceCount: mesh.faceCount,
                         faceSizes: mesh.faceSizes, corners: mesh.corners, attributes: mesh.attributes,
-                        cornerAttributes: mesh.cornerAttributes, ...info };
+                        cornerAttributes: mesh.cornerAttributes, faceLabels: mesh.faceLabels, ...info };
   return geometry;
+}
+
+// Spec 16: faces labelled "material" become the geometry's groups, one per run
+// of faces with one material, materialIndex the label's index (values.length:
+// none), over the fan triangles both geometries draw in face order.
+function addMaterialGroups(mesh, geometry) {
+  const material = (mesh.faceLabels ?? []).find((l) => l.name === 'material');
+  if (!material) return;
+  let start = 0;
+  for (let f = 0; f < mesh.faceSizes.length; ++f) {
+    const count = 3 * (mesh.faceSizes[f] - 2);
+    const last = geometry.groups[geometry.groups.length - 1];
+    if (last && last.materialIndex === material.faceValues[f]) last.count += count;
+    else geometry.addGroup(start, count, material.faceValues[f]);
+    start += count;
+  }
 }
 
 function indexedGeometry(mesh) {

@@ -14,7 +14,9 @@
 // attributes (a geometry image's planes after X Y Z: normals, curvature ...)
 // and cornerAttributes (spec 15: texture coordinates, normals, colours, each
 // { name, kind, components, values: Float32Array, cornerValues: Uint32Array },
-// corner k's value at values[components * cornerValues[k]]).
+// corner k's value at values[components * cornerValues[k]]) and faceLabels
+// (spec 16: OBJ objects, groups, materials; each { name, values, references:
+// arrays of strings, faceValues: Uint32Array, values.length meaning none }).
 // Rejections throw a QMCError whose `identifier` is spec section 9's.
 import createQmcModule from '../dist/qmc_decoder.mjs';
 
@@ -28,6 +30,7 @@ const MESH_SIZE = 32; // qmc_mesh on wasm32: four uint32, four pointers
 const SUMMARY_SIZE = 88;
 const ATTRIBUTE_SIZE = 12; // qmc_attribute on wasm32: kind, count, pointer
 const CORNER_ATTRIBUTE_SIZE = 280; // qmc_corner_attribute on wasm32: name[256], four uint32, two pointers
+const FACE_LABELS_SIZE = 272; // qmc_face_labels on wasm32: name[256], three uint32, a pointer
 export const FINEST = -1;
 
 export class QMCError extends Error {
@@ -164,6 +167,7 @@ class StreamDecoder {
       const mesh = readMesh(w, out, level === FINEST ? this.completeLevel : level);
       mesh.attributes = level === FINEST ? this.attributes() : [];
       mesh.cornerAttributes = level === FINEST ? this.cornerAttributes() : [];
+      mesh.faceLabels = level === FINEST ? this.faceLabels() : [];
       return mesh;
     } finally {
       w._qmc_mesh_free(out);
@@ -209,6 +213,36 @@ class StreamDecoder {
       }
       return attributes;
     } finally {
+      w._free(out);
+    }
+  }
+
+  // Spec 16: the labels of the faces of the file's mesh (fLBL).
+  faceLabels() {
+    const w = this.qmc.wasm;
+    const out = w._malloc(FACE_LABELS_SIZE);
+    const length = w._malloc(4);
+    try {
+      const labels = [];
+      const text = new TextDecoder();
+      const strings = (i, reference, count) => Array.from({ length: count }, (_, v) => {
+        const at = w._qmc_decoder_face_label_string(this.handle, i, reference, v, length);
+        return text.decode(w.HEAPU8.slice(at, at + w.HEAPU32[length >> 2]));
+      });
+      for (let i = 0; i < w._qmc_decoder_face_labels_count(this.handle); ++i) {
+        this.check(w._qmc_decoder_face_labels(this.handle, i, out));
+        const [valueCount, referenceCount, faceCount, faceValues] = w.HEAPU32.subarray((out + 256) >> 2, ((out + 256) >> 2) + 4);
+        labels.push({
+          name: w.UTF8ToString(out, 256),
+          values: strings(i, 0, valueCount),
+          references: strings(i, 1, referenceCount),
+          faceValues: new Uint32Array(w.HEAPU32.buffer.slice(faceValues, faceValues + 4 * faceCount)),
+        });
+        w._qmc_free(faceValues);
+      }
+      return labels;
+    } finally {
+      w._free(length);
       w._free(out);
     }
   }

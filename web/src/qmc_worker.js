@@ -31,7 +31,8 @@ const files = new Map(); // id -> { stream, shownLevel, decodeMs }
 function transferables(mesh) {
   return [mesh.positions.buffer, mesh.indices.buffer, mesh.faceSizes.buffer, mesh.corners.buffer,
           ...mesh.attributes.map((a) => a.values.buffer),
-          ...(mesh.cornerAttributes ?? []).flatMap((a) => [a.values.buffer, a.cornerValues.buffer])];
+          ...(mesh.cornerAttributes ?? []).flatMap((a) => [a.values.buffer, a.cornerValues.buffer]),
+          ...(mesh.faceLabels ?? []).map((l) => l.faceValues.buffer)];
 }
 
 function post(type, id, file, mesh) {

@@ -76,6 +76,19 @@ test('texture coordinates with a seam and per-vertex normals: cornerAttributes (
   assert.deepEqual(qmc.decode(vector('valid_cube_8bit.qmc')).cornerAttributes, []);
 });
 
+test('face labels: a material per face with its library, a group (spec 16)', () => {
+  const mesh = qmc.decode(vector('valid_flbl_material_group.qmc'));
+  assert.deepEqual(mesh.faceLabels.map((l) => l.name), ['material', 'group']);
+  const [material, group] = mesh.faceLabels;
+  assert.deepEqual(material.values, ['red', 'green', 'blue']);
+  assert.deepEqual(material.references, ['m.mtl']);
+  assert.deepEqual(group.values, ['left', '']);
+  assert.equal(material.faceValues.length, mesh.faceSizes.length);
+  for (const v of material.faceValues) assert.ok(v <= 3);
+  assert.ok(material.faceValues.some((v) => v === 3) && material.faceValues.some((v) => v < 3));
+  assert.deepEqual(qmc.decode(vector('valid_cube_8bit.qmc')).faceLabels, []);
+});
+
 test('hostile files of under 130 bytes are refused by the default limits, not allocated (spec 8.1)', () => {
   const hostile = (name) => readFileSync(new URL(`../../fuzz/regressions/decode_file/${name}`, import.meta.url));
   for (const name of ['loop_base_claims_2p32_vertices', 'loop_base_claims_200M_vertices', 'gim_unmasked_33M_triangles']) {
