@@ -134,14 +134,12 @@ def select(vectors, only, skip_ordr, skip_attr=False, skip_flbl=False):
     for v in vectors:
         if only and not fnmatch.fnmatchcase(v.name, only):
             continue
-        reason = None
-        if skip_ordr and v.name.startswith(ORDR_PREFIXES):
-            reason = "oRDR vector (--skip-ordr, spec 10.1)"
-        if skip_attr and v.name.startswith(ATTR_PREFIXES):
-            reason = "aTTR vector (--skip-attr, spec 10.1)"
-        if skip_flbl and v.name.startswith(FLBL_PREFIXES):
-            reason = "fLBL vector (--skip-flbl, spec 10.1)"
-        chosen.append((v, reason))
+        skipped = [f"{chunk} vector (--skip-{flag}, spec 10.1)"
+                   for skip, prefixes, chunk, flag in ((skip_ordr, ORDR_PREFIXES, "oRDR", "ordr"),
+                                                      (skip_attr, ATTR_PREFIXES, "aTTR", "attr"),
+                                                      (skip_flbl, FLBL_PREFIXES, "fLBL", "flbl"))
+                   if skip and v.name.startswith(prefixes)]
+        chosen.append((v, skipped[0] if skipped else None))
     return chosen
 
 

@@ -2010,10 +2010,13 @@ void write_attribute_valid(VectorWriter* w) {
            with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(unreferenced)), nullptr);
 }
 
-// The cube's hand-made texture coordinates: every corner a new value, exact binary32.
-AttrFields cube_texcoord_fields(const std::vector<uint32_t>& corners) {
+// Hand-made texture coordinates of a file of the cube: every corner a new
+// value (in the file's corner order), exact binary32.
+AttrFields cube_texcoord_fields(const std::vector<uint8_t>& cube) {
+  qmc::DecodedFile decoded;
+  (void)qmc::decode(cube.data(), cube.size(), &decoded);
   AttrFields f;
-  f.mapping_stream = mapping_stream(corners, 8, 24, std::vector<qmc::MappingChoice>(24));
+  f.mapping_stream = mapping_stream(decoded.mesh.corners, 8, 24, std::vector<qmc::MappingChoice>(24));
   f.rest = exact_values(48);
   return f;
 }
@@ -2027,7 +2030,7 @@ void write_attribute_errors(VectorWriter* w) {
   qmc::DecodedFile decoded;
   (void)qmc::decode(cube.data(), cube.size(), &decoded);
   const std::vector<uint32_t>& corners = decoded.mesh.corners;
-  const AttrFields f = cube_texcoord_fields(corners);
+  const AttrFields f = cube_texcoord_fields(cube);
   const auto attr = [&](const AttrFields& x) {
     return with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(x));
   };
@@ -2477,9 +2480,7 @@ void write_attribute_review_vectors(VectorWriter* w) {
   qmc::EncodeOptions options;
   options.octahedral_normals = false;
   const std::vector<uint8_t> cube = encode_with(make_cube(), options, "cube");
-  qmc::DecodedFile decoded;
-  (void)qmc::decode(cube.data(), cube.size(), &decoded);
-  const AttrFields f = cube_texcoord_fields(decoded.mesh.corners);
+  const AttrFields f = cube_texcoord_fields(cube);
   AttrFields skipped = f;
   skipped.coding = 2;
   const std::vector<uint8_t> first = with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(skipped));

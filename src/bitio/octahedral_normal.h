@@ -69,16 +69,16 @@ inline void predict_octahedral(const uint32_t* first, const uint32_t* last, cons
                                const CornerCycle& cycle, const uint32_t* q, uint32_t m_steps, OctahedralFrame* frame,
                                uint32_t* pu, uint32_t* pv) {
   last = first + std::min<ptrdiff_t>(last - first, kOctahedralCorners);
-  int64_t edge[kOctahedralCorners][2][3];
-  int64_t largest = 0;
+  int64_t edge[kOctahedralCorners][2][3];  // per corner, a = q[n] - q[c] and b = q[p] - q[c]
+  int64_t largest = 0;  // of x >= 0 and -x - 1 < 0: floor(x / 2^s) fits in 21 bits iff largest >> s does
   for (const uint32_t* k = first; k != last; ++k) {
-    const uint32_t c = corners[*k], n = corners[cycle.next[*k]], p = corners[cycle.previous[*k]];
-    for (int a = 0; a < 3; ++a) {
-      int64_t* e = edge[k - first][0];
-      e[a] = int64_t(q[3 * size_t(n) + a]) - int64_t(q[3 * size_t(c) + a]);
-      e[3 + a] = int64_t(q[3 * size_t(p) + a]) - int64_t(q[3 * size_t(c) + a]);
-      largest = std::max({largest, e[a] < 0 ? -e[a] - 1 : e[a], e[3 + a] < 0 ? -e[3 + a] - 1 : e[3 + a]});
-    }
+    const uint32_t c = corners[*k], ends[2] = {corners[cycle.next[*k]], corners[cycle.previous[*k]]};
+    for (int side = 0; side < 2; ++side)
+      for (int a = 0; a < 3; ++a) {
+        const int64_t x = int64_t(q[3 * size_t(ends[side]) + a]) - int64_t(q[3 * size_t(c) + a]);
+        edge[k - first][side][a] = x;
+        largest = std::max(largest, x < 0 ? -x - 1 : x);
+      }
   }
   int s = 0;
   while ((largest >> s) >= (int64_t(1) << 20)) ++s;  // floor(x / 2^s) in -2^20 .. 2^20 - 1

@@ -253,8 +253,11 @@ Status add_attributes(const Mesh& mesh, const EncodeOptions& options, const File
   QuantizationInfo info;
   std::vector<uint32_t> quantized;
   std::vector<float> decoded;
-  if (Status s = decode_positions(positions.data(), positions.size(), conn.mesh, uint32_t(mesh.vertex_count()), &info,
-                                  &quantized, &decoded);
+  bool normals = false;  // only normals are predicted from the positions
+  for (const MeshAttribute& a : mesh.attributes) normals = normals || a.kind == AttributeKind::kNormal;
+  if (Status s = normals ? decode_positions(positions.data(), positions.size(), conn.mesh,
+                                            uint32_t(mesh.vertex_count()), &info, &quantized, &decoded)
+                         : Status::Ok();
       !s.ok())
     return Status(ErrorCode::kInvalidArgument, "internal: the encoder's POSN does not decode: " + s.to_string());
   for (const MeshAttribute& attribute : mesh.attributes) {
