@@ -179,7 +179,7 @@ TEST(PolygonSpiraleReversi, ContextRunSeesTheDecodersGates) {
     ASSERT_EQ(traverse_polygon_surface(model, &t), "");
     RecordedGates full(t), contexts(t);
     PolygonSurface surface;
-    ASSERT_TRUE(polygon_spirale_reversi(t.component_faces, t.first_degree, &full, &surface).ok());
+    ASSERT_TRUE(polygon_spirale_reversi(t.component_faces, t.first_degree, &full, 0, &surface).ok());
     ASSERT_TRUE(polygon_spirale_contexts(t.component_faces, t.first_degree, &contexts).ok());
     EXPECT_EQ(contexts.gates, full.gates);
     EXPECT_EQ(full.gates.size(), t.shapes.size());

@@ -140,6 +140,50 @@ TEST(PredictedPositions, SearchExaminesAtMostEightCorners) {
   }
 }
 
+// A mesh of triangles only finds its corners' neighbours without per-corner
+// tables. The same triangles with a quad on four further vertices take the
+// general path; every prediction of the triangles' vertices is the same.
+TEST(PredictedPositions, TrianglesOnlyMeshPredictsAsTheGeneralTablesDo) {
+  tools::RandomSoupOptions soup;
+  soup.vertices = 60;
+  soup.faces = 400;  // some vertices of more than 12 corners: sorted links
+  soup.min_degree = soup.max_degree = 3;
+  for (const Mesh& triangles : {tools::make_random_soup(7, soup), tools::triangulated(tools::make_torus(9, 5)),
+                                tools::make_vertex_star(20), tools::make_book(5)}) {
+    const uint32_t n = uint32_t(triangles.vertex_count());
+    Mesh mixed = triangles;
+    mixed.face_sizes.push_back(4);
+    mixed.corners.insert(mixed.corners.end(), {n, n + 1, n + 2, n + 3});
+    VertexCorners fast, general;
+    fast.build(n, triangles.face_sizes, triangles.corners);
+    general.build(n + 4, mixed.face_sizes, mixed.corners);
+    for (uint32_t k = 0; k < triangles.corners.size(); ++k) {
+      ASSERT_EQ(fast.face(k), general.face(k));
+      ASSERT_EQ(fast.degree(k), 3u);
+      for (int step = -3; step <= 3; ++step) ASSERT_EQ(fast.along(k, step), general.along(k, step)) << k << " " << step;
+    }
+    std::vector<uint32_t> q;
+    std::vector<int32_t> residual;
+    for (uint32_t i = 0; i < 3 * (n + 4); ++i) {
+      q.push_back(uint32_t((uint64_t(i) * 2654435761u) % 4096));
+      residual.push_back(int32_t(i % 7) - 3);
+    }
+    for (uint32_t v = 0; v < n; ++v) {
+      VertexPrediction a, b;
+      predict_vertex(fast, v, q.data(), residual.data(), kTop, &a);
+      predict_vertex(general, v, q.data(), residual.data(), kTop, &b);
+      ASSERT_EQ(a.candidates, b.candidates) << "vertex " << v;
+      for (int c = 0; c < a.candidates; ++c) {
+        EXPECT_EQ(a.weight[c], b.weight[c]);
+        for (int axis = 0; axis < 3; ++axis) EXPECT_EQ(a.candidate[c][axis], b.candidate[c][axis]);
+      }
+      for (int axis = 0; axis < 3; ++axis) EXPECT_EQ(a.fallback[axis], b.fallback[axis]);
+      EXPECT_EQ(a.neighbour_activity, b.neighbour_activity);
+      EXPECT_EQ(a.scale, b.scale);
+    }
+  }
+}
+
 // 14.4: the mask decisions round trip, the last bit implied when no other is set.
 TEST(PredictedPositions, CandidateMaskDecisions) {
   PositionResidualModel encoder_model(kTop), decoder_model(kTop);

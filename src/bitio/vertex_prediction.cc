@@ -92,28 +92,36 @@ void add_strip(const VertexCorners& m, uint32_t corner, int direction, uint32_t 
 
 void VertexCorners::build(uint32_t vertex_count, const std::vector<uint32_t>& face_sizes,
                           const std::vector<uint32_t>& corners) {
-  corners_ = &corners;
-    face_start_.assign(face_sizes.size() + 1, 0);
-    face_of_.allocate(corners.size());
-    next_.allocate(corners.size());
-    previous_.allocate(corners.size());
-    for (size_t f = 0; f < face_sizes.size(); ++f) {
-      const uint32_t start = face_start_[f], end = start + face_sizes[f];
-      face_start_[f + 1] = end;
-      for (uint32_t k = start; k < end; ++k) {
-        face_of_[k] = uint32_t(f);
-        next_[k] = k + 1 < end ? k + 1 : start;
-        previous_[k] = k > start ? k - 1 : end - 1;
-      }
+  corners_ = corners.data();
+  triangles_only_ = std::all_of(face_sizes.begin(), face_sizes.end(), [](uint32_t d) { return d == 3; });
+  if (!triangles_only_) build_faces(face_sizes, corners.size());
+  first_.assign(size_t(vertex_count) + 1, 0);
+  for (uint32_t v : corners) ++first_[v + 1];
+  for (size_t v = 0; v < vertex_count; ++v) first_[v + 1] += first_[v];
+  // first_[v + 1] is v's end; filling back to front moves it to v's start,
+  // one place too far on, without a second table of cursors.
+  corner_of_.allocate(corners.size());
+  for (uint32_t k = uint32_t(corners.size()); k-- > 0;) corner_of_[--first_[corners[k] + 1]] = k;
+  std::copy(first_.begin() + 1, first_.end(), first_.begin());
+  first_[vertex_count] = uint32_t(corners.size());
+  build_links(true, &triangle_link_first_, &triangle_links_);
+  build_links(false, &polygon_link_first_, &polygon_links_);
+}
+
+void VertexCorners::build_faces(const std::vector<uint32_t>& face_sizes, size_t corner_count) {
+  face_start_.assign(face_sizes.size() + 1, 0);
+  face_of_.allocate(corner_count);
+  next_.allocate(corner_count);
+  previous_.allocate(corner_count);
+  for (size_t f = 0; f < face_sizes.size(); ++f) {
+    const uint32_t start = face_start_[f], end = start + face_sizes[f];
+    face_start_[f + 1] = end;
+    for (uint32_t k = start; k < end; ++k) {
+      face_of_[k] = uint32_t(f);
+      next_[k] = k + 1 < end ? k + 1 : start;
+      previous_[k] = k > start ? k - 1 : end - 1;
     }
-    first_.assign(size_t(vertex_count) + 1, 0);
-    for (uint32_t v : corners) ++first_[v + 1];
-    for (size_t v = 0; v < vertex_count; ++v) first_[v + 1] += first_[v];
-    corner_of_.allocate(corners.size());
-    std::vector<uint32_t> next(first_.begin(), first_.end() - 1);
-    for (uint32_t k = 0; k < corners.size(); ++k) corner_of_[next[corners[k]]++] = k;
-    build_links(true, &triangle_link_first_, &triangle_links_);
-    build_links(false, &polygon_link_first_, &polygon_links_);
+  }
 }
 
 // Each corner k of a vertex u of many corners links u to the vertices the

@@ -57,12 +57,17 @@ class VertexCorners {
   const uint32_t* end(uint32_t v) const { return corner_of_.data() + first_[v + 1]; }
   // Face of a corner, its degree, and the vertex `step` corners further
   // along the face's cycle (|step| <= 3 in spec 14.3, either sign).
-  uint32_t face(uint32_t corner) const { return face_of_[corner]; }
-  uint32_t degree(uint32_t corner) const { return face_start_[face_of_[corner] + 1] - face_start_[face_of_[corner]]; }
+  // A mesh of triangles only keeps no per-corner tables: corner k is
+  // corner k mod 3 of face k / 3.
+  uint32_t face(uint32_t corner) const { return triangles_only_ ? corner / 3 : face_of_[corner]; }
+  uint32_t degree(uint32_t corner) const {
+    return triangles_only_ ? 3 : face_start_[face_of_[corner] + 1] - face_start_[face_of_[corner]];
+  }
   uint32_t along(uint32_t corner, int step) const {
+    if (triangles_only_) return corners_[corner + kTriangleStep[step + 3][corner % 3]];
     for (; step > 0; --step) corner = next_[corner];
     for (; step < 0; ++step) corner = previous_[corner];
-    return (*corners_)[corner];
+    return corners_[corner];
   }
 
   // A face-edge neighbour w of a vertex u and the corner of u it is next to.
@@ -93,12 +98,19 @@ class VertexCorners {
 
  private:
   static constexpr int kScannedCorners = 12;  // vertices of more corners get sorted links
+  // In a mesh of triangles only: [step + 3][corner mod 3], what to add to a
+  // corner to go `step` corners along its triangle.
+  static constexpr int8_t kTriangleStep[7][3] = {{0, 0, 0},  {1, 1, -2}, {2, -1, -1}, {0, 0, 0},
+                                                 {1, 1, -2}, {2, -1, -1}, {0, 0, 0}};
+  void build_faces(const std::vector<uint32_t>& face_sizes, size_t corner_count);
   void build_links(bool triangles, std::vector<uint32_t>* first, std::vector<Link>* links) const;
 
   std::vector<uint32_t> triangle_link_first_, polygon_link_first_;  // per vertex; one more at the end
   // Of the vertices of more than kScannedCorners corners, sorted by neighbour, then corner.
   std::vector<Link> triangle_links_, polygon_links_;
-  const std::vector<uint32_t>* corners_ = nullptr;
+  const uint32_t* corners_ = nullptr;
+  bool triangles_only_ = false;
+  // Of meshes with a face of more than 3 corners only:
   FilledTable<uint32_t> next_, previous_;  // per corner, the next and previous corner of its face
   std::vector<uint32_t> face_start_;       // per face, its first corner; one more at the end
   FilledTable<uint32_t> face_of_;          // per corner

@@ -5,7 +5,9 @@
 // before anything is reserved for it.
 #include "decoder/polygon_connectivity_decoder.h"
 
+#include <algorithm>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bitio/bit_reader.h"
@@ -19,6 +21,9 @@
 
 namespace qmc {
 namespace {
+
+// Faces reserved per byte of coding 7's symbol stream before decoding it.
+constexpr uint64_t kReservedFacesPerSymbolByte = 32;
 
 Status payload_error(const std::string& why) { return Status(ErrorCode::kBadChunkPayload, "CONN: " + why); }
 Status symbol_error(const std::string& why) { return Status(ErrorCode::kBadSymbol, "CONN: " + why); }
@@ -407,7 +412,12 @@ Status decode_context_coded(BitReader* in, const PolygonHeader& h, uint32_t vert
   if (h.groups == 0 && components.coded > 0) return symbol_error("face symbols but no symbol group");
   CodedFaces faces(h.symbols, size_t(h.symbol_bytes), h.groups);
   if (Status s = faces.start(); !s.ok()) return s;
-  if (Status s = polygon_spirale_reversi(components.faces, components.first_degree, &faces, surface); !s.ok())
+  // 512 (B + 8) faces may be far more than the decisions in the stream
+  // actually build before it ends (5.4.10), so only what a well-compressed
+  // mesh takes is reserved (bunny: 13 faces a byte); the rest grows.
+  const uint64_t expected = std::min<uint64_t>(surface_faces, kReservedFacesPerSymbolByte * (uint64_t(h.symbol_bytes) + 8));
+  if (Status s = polygon_spirale_reversi(components.faces, components.first_degree, &faces, size_t(expected), surface);
+      !s.ok())
     return s;
   return read_records(in, surface->face_degree, surface->labels, vertex_count, records, loose);
 }
@@ -441,15 +451,18 @@ Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t ve
     return symbol_error("face_count " + std::to_string(face_count) + " is not the " + std::to_string(real) +
                         " real surface faces plus " + std::to_string(loose.face_count()) + " loose faces");
 
-  mesh->face_sizes.clear();
-  mesh->corners.clear();
-  mesh->face_sizes.reserve(face_count);
-  mesh->corners.reserve(surface.corners.size() + loose.corners.size());
+  // The real faces with final labels, compacted within the surface's own
+  // tables (a face never moves up), which then become the mesh's.
+  size_t faces_kept = 0, corners_kept = 0;
   for (size_t f = 0, begin = 0; f < degree.size(); begin += degree[f], ++f) {
     if (records.is_virtual[f]) continue;
-    mesh->face_sizes.push_back(degree[f]);
-    for (uint32_t k = 0; k < degree[f]; ++k) mesh->corners.push_back(final[surface.corners[begin + k]]);
+    for (uint32_t k = 0; k < degree[f]; ++k) surface.corners[corners_kept++] = final[surface.corners[begin + k]];
+    surface.face_degree[faces_kept++] = degree[f];
   }
+  surface.face_degree.resize(faces_kept);
+  surface.corners.resize(corners_kept);
+  mesh->face_sizes = std::move(surface.face_degree);
+  mesh->corners = std::move(surface.corners);
   mesh->face_sizes.insert(mesh->face_sizes.end(), loose.face_sizes.begin(), loose.face_sizes.end());
   mesh->corners.insert(mesh->corners.end(), loose.corners.begin(), loose.corners.end());
   info->components = uint32_t(components.faces.size());

@@ -42,7 +42,10 @@ class PolygonSpiraleReversi {
   // faces of the largest component; a face has at least 3 corners.
   PolygonSpiraleReversi(size_t node_capacity, size_t face_capacity) {
     nodes_.reserve(node_capacity);
-    face_vertices_.reserve(std::max(node_capacity, 3 * face_capacity));
+    faces_at_.reserve(node_capacity);
+    inner_.reserve(node_capacity);
+    // Some room beyond 3 corners a face for larger faces (closed holes).
+    face_vertices_.reserve(std::max(node_capacity, 3 * face_capacity + face_capacity / 8));
     face_degrees_.reserve(face_capacity);
   }
 
@@ -317,18 +320,20 @@ Status PolygonSpiraleReversi::label_component(uint32_t d, size_t coded, PolygonS
   }
   // First face (c0, c1, c2, .., c(d-1)) = loop labels (1, 0, d - 1, .., 2).
   surface->face_degree.push_back(d);
-  surface->corners.push_back(base + 1);
-  surface->corners.push_back(base);
-  for (uint32_t i = d - 1; i >= 2; --i) surface->corners.push_back(base + i);
-  // Coded faces in traversal order: the reverse of the order undone.
-  size_t end = face_vertices_.size();
-  for (size_t k = coded; k-- > 0;) {
-    const uint32_t degree = face_degrees_[k];
-    const size_t begin = end - degree;
-    surface->face_degree.push_back(degree);
-    for (size_t i = begin; i < end; ++i) surface->corners.push_back(label[find(face_vertices_[i])]);
-    end = begin;
-  }
+  surface->face_degree.insert(surface->face_degree.end(), face_degrees_.rbegin(), face_degrees_.rend());
+  std::vector<uint32_t> first_face{base + 1, base};
+  for (uint32_t i = d - 1; i >= 2; --i) first_face.push_back(base + i);
+  // Coded faces in traversal order, the reverse of the order undone: the
+  // labels in place, all reversed, then each face turned back.
+  for (uint32_t& v : face_vertices_) v = label[find(v)];
+  std::reverse(face_vertices_.begin(), face_vertices_.end());
+  for (size_t k = coded, begin = 0; k-- > 0; begin += face_degrees_[k])
+    std::reverse(face_vertices_.begin() + begin, face_vertices_.begin() + begin + face_degrees_[k]);
+  face_vertices_.insert(face_vertices_.begin(), first_face.begin(), first_face.end());
+  if (surface->corners.capacity() == 0)  // coding 7's first component: its faces stay where they are
+    surface->corners.swap(face_vertices_);
+  else
+    surface->corners.insert(surface->corners.end(), face_vertices_.begin(), face_vertices_.end());
   surface->labels = next_label;
   return Status::Ok();
 }
@@ -433,12 +438,11 @@ Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const st
 }
 
 Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
-                               FaceSymbolSource* source, PolygonSurface* surface) {
+                               FaceSymbolSource* source, size_t expected_faces, PolygonSurface* surface) {
   *surface = PolygonSurface{};
-  // Nothing reserved: a face count that 512 (B + 8) allows may still be far
-  // more faces than the decisions actually in the stream build before it
-  // ends, so memory grows with the faces decoded (5.4.10).
-  return run_spirale_reversi(components, first_degree, source, true, 0, 0, surface);
+  surface->face_degree.reserve(expected_faces);
+  // Nodes: about one a vertex, fewer than the faces of a closed mesh.
+  return run_spirale_reversi(components, first_degree, source, true, expected_faces, expected_faces, surface);
 }
 
 Status polygon_spirale_contexts(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,

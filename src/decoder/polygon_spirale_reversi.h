@@ -37,9 +37,11 @@ class FaceSymbolSource {
 Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
                                const FaceShapes& shapes, PolygonSurface* surface);
 // The same, the faces taken from `source` in the order they are applied,
-// with each vertex's faces counted for the gate contexts.
+// with each vertex's faces counted for the gate contexts. Room for
+// `expected_faces` faces (of 3 corners) is reserved up front, the rest
+// grows as faces are decoded.
 Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
-                               FaceSymbolSource* source, PolygonSurface* surface);
+                               FaceSymbolSource* source, size_t expected_faces, PolygonSurface* surface);
 // Coding 7's encoder (5.4.10): the same run for the gate contexts only,
 // each component checked to close but no surface built or labelled (the
 // encoder's self-check decodes the whole payload afterwards).
