@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "bench_common.h"
+#include "cold_heap.h"
 #include "draco_runner.h"
 #include "mesh_io.h"
 #include "meshopt_runner.h"
@@ -68,8 +69,10 @@ double mean(const std::vector<double>& values) {
 // One sample per round (the mean of its repetitions), median over rounds.
 struct Timings {
   std::vector<double> encode_s, decode_s;
+  std::vector<double> cold_decode_s;  // one decode a round from a cold heap (bench/cold_heap.h)
   double encode_ms() const { return 1e3 * median(encode_s); }
   double decode_ms() const { return 1e3 * median(decode_s); }
+  double cold_decode_ms() const { return 1e3 * median(cold_decode_s); }
   void add(const std::vector<double>& encode_repetitions, const std::vector<double>& decode_repetitions) {
     encode_s.push_back(mean(encode_repetitions));
     decode_s.push_back(mean(decode_repetitions));
@@ -162,6 +165,15 @@ void qmc_round(const qmc::Mesh& mesh, int bits, int repetitions, QmcFigures* q) 
     q->error = "decoded a mesh of another size";
     return;
   }
+  decoded = {};
+  qmc::bench::hand_heap_back();
+  const auto start = std::chrono::steady_clock::now();
+  const qmc::Status cold = qmc::decode(file.data(), file.size(), &decoded, qmc::DecoderLimits::unlimited());
+  q->time.cold_decode_s.push_back(seconds_since(start));
+  if (!cold.ok()) {
+    q->error = "decode from a cold heap: " + cold.to_string();
+    return;
+  }
   q->time.add(encode_s, decode_s);
   q->file_bytes = file.size();
   q->conn_bytes = chunk_bytes(stats, qmc::kChunkConnectivity);
@@ -190,6 +202,7 @@ void draco_round(const qmc::Mesh& mesh, const qmc::bench::DracoOptions& options,
   d->bytes = r.bytes;
   d->losses = draco_losses(r);
   d->time.add(r.encode_seconds, r.decode_seconds);
+  if (options.cold_heap_decode) d->time.cold_decode_s.push_back(r.cold_decode_seconds);
 }
 
 qmc::bench::DracoOptions draco_options(int bits, int level, bool polygons, bool at_origin) {
@@ -238,7 +251,9 @@ struct Repetitions {
 // Every codec once, in a fixed order.
 void run_round(const qmc::Mesh& mesh, const Repetitions& n, Case* c) {
   qmc_round(mesh, c->bits, n.qmc, &c->qmc);
-  draco_round(mesh, draco_options(c->bits, 10, c->polygons, false), n.cl10, &c->cl10);
+  qmc::bench::DracoOptions cl10 = draco_options(c->bits, 10, c->polygons, false);
+  cl10.cold_heap_decode = true;
+  draco_round(mesh, cl10, n.cl10, &c->cl10);
   draco_round(mesh, draco_options(c->bits, 7, c->polygons, false), n.cl7, &c->cl7);
   meshopt_round(mesh, c->bits, n.meshopt, &c->meshopt);
 }
@@ -280,6 +295,9 @@ double whole_ratio(const Case& c) {
 double decode_speed_ratio(const Case& c) {
   return qmc_ok(c) && c.cl10.error.empty() ? c.cl10.time.decode_ms() / c.qmc.time.decode_ms() : -1;
 }
+double cold_decode_speed_ratio(const Case& c) {
+  return qmc_ok(c) && c.cl10.error.empty() ? c.cl10.time.cold_decode_ms() / c.qmc.time.cold_decode_ms() : -1;
+}
 double encode_time_ratio(const Case& c) {
   return qmc_ok(c) && c.cl10.error.empty() ? c.qmc.time.encode_ms() / c.cl10.time.encode_ms() : -1;
 }
@@ -318,6 +336,23 @@ std::string verdict(const Target& t, const Case& c) {
   return t.met(r) ? "pass" : "**FAIL**";
 }
 
+// Not a target of the issue: the same speed-up for a decode from a cold heap.
+std::string cold_heap_summary(const std::vector<Case>& cases) {
+  size_t above = 0, measured = 0;
+  double log_sum = 0;
+  for (const Case& c : cases) {
+    const double r = cold_decode_speed_ratio(c);
+    if (c.vertices <= kDecodeSpeedMinVertices || r < 0) continue;
+    ++measured;
+    above += r >= kDecodeSpeedTarget;
+    log_sum += std::log(r);
+  }
+  if (measured == 0) return {};
+  return format("- Decode from a cold heap (not a target; the first decode of a process, see below): qmc >= %.0fx "
+                "Draco cl10's speed in %zu of %zu cases above %zu vertices; geometric mean %.3f.\n",
+                kDecodeSpeedTarget, above, measured, kDecodeSpeedMinVertices, std::exp(log_sum / double(measured)));
+}
+
 std::string summary(const std::vector<Case>& cases) {
   std::string s;
   for (const Target& t : targets()) {
@@ -343,7 +378,7 @@ std::string summary(const std::vector<Case>& cases) {
     if (missing) s += format("; %zu not measured (a codec failed: see the notes)", missing);
     s += ".\n";
   }
-  return s;
+  return s + cold_heap_summary(cases);
 }
 
 // ---------------------------------------------------------------------------
@@ -378,15 +413,18 @@ std::string sizes_table(const std::vector<Case>& cases) {
 std::string times_table(const std::vector<Case>& cases) {
   const std::vector<Target> t = targets();
   std::string s =
-      "| mesh | bits | vertices | qmc decode ms | Draco cl10 decode ms | speed-up (Draco ms / qmc ms) | >= 2 (> 10k vertices) | qmc "
+      "| mesh | bits | vertices | qmc decode ms | Draco cl10 decode ms | speed-up (Draco ms / qmc ms) | >= 2 (> 10k vertices) | "
+      "cold heap: qmc / Draco cl10 decode ms | cold heap speed-up | qmc "
       "encode ms | Draco cl10 encode ms | qmc / Draco | <= 1.5 | Draco cl7 decode / encode ms | meshopt + zstd "
       "decode / encode ms |\n"
-      "| --- | ---: | ---: | ---: | ---: | ---: | --- | ---: | ---: | ---: | --- | ---: | ---: |\n";
+      "| --- | ---: | ---: | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: | ---: | --- | ---: | ---: |\n";
   for (const Case& c : cases) {
-    s += format("| %s | %d | %zu | %s | %s | %s | %s | %s | %s | %s | %s | %s / %s | %s / %s |\n", c.name.c_str(),
-                c.bits, c.vertices, ms_cell(c.qmc.error, c.qmc.time.decode_ms()).c_str(),
+    s += format("| %s | %d | %zu | %s | %s | %s | %s | %s / %s | %s | %s | %s | %s | %s | %s / %s | %s / %s |\n",
+                c.name.c_str(), c.bits, c.vertices, ms_cell(c.qmc.error, c.qmc.time.decode_ms()).c_str(),
                 ms_cell(c.cl10.error, c.cl10.time.decode_ms()).c_str(), ratio_cell(decode_speed_ratio(c)).c_str(),
-                verdict(t[3], c).c_str(), ms_cell(c.qmc.error, c.qmc.time.encode_ms()).c_str(),
+                verdict(t[3], c).c_str(), ms_cell(c.qmc.error, c.qmc.time.cold_decode_ms()).c_str(),
+                ms_cell(c.cl10.error, c.cl10.time.cold_decode_ms()).c_str(),
+                ratio_cell(cold_decode_speed_ratio(c)).c_str(), ms_cell(c.qmc.error, c.qmc.time.encode_ms()).c_str(),
                 ms_cell(c.cl10.error, c.cl10.time.encode_ms()).c_str(), ratio_cell(encode_time_ratio(c)).c_str(),
                 verdict(t[4], c).c_str(), ms_cell(c.cl7.error, c.cl7.time.decode_ms()).c_str(),
                 ms_cell(c.cl7.error, c.cl7.time.encode_ms()).c_str(),
@@ -482,7 +520,13 @@ std::string document(const std::vector<Case>& cases, const Options& opt, double 
          "decode is zstd plus its two decoders, to integer buffers. Decode ratio = Draco cl10 decode time / "
          "qmc's (higher is better); encode ratio = qmc / Draco cl10 (lower is better). Mesh sets: quad/ meshes "
          "(and any with a face of more than 3 corners) are held to the polygon target, the others to the "
-         "triangle target.\n\n";
+         "triangle target.\n\n"
+         "Decodes repeated in one process reuse the pages the previous one touched. The first decode of a "
+         "process (a `qmc decode` run, a viewer opening its first file) takes a page fault for every page it "
+         "writes first, which on this virtual machine costs microseconds each. The **cold heap** columns time "
+         "one more decode per round and codec (qmc and Draco cl10) after `malloc_trim(0)` has handed every free "
+         "page of the heap back to the system (bench/cold_heap.h), so that it faults in all the memory it "
+         "touches, as in a new process.\n\n";
   doc += "## Summary against issue 13's targets\n\n" + summary(cases) + "\n";
   doc += "## Sizes (bytes)\n\n" + sizes_table(cases) + "\n";
   doc += "## Times (ms, medians)\n\n" + times_table(cases) + "\n";

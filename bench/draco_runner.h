@@ -31,6 +31,9 @@ struct DracoOptions {
   // plus Draco's header. Draco has no separate connectivity stream; its
   // positions cost the real file's bytes minus this one's.
   bool positions_at_origin = false;
+  // After the timed runs, one more decode from a heap handed back to the
+  // system (bench/cold_heap.h), timed into cold_decode_seconds.
+  bool cold_heap_decode = false;
 };
 
 struct DracoResult {
@@ -41,6 +44,7 @@ struct DracoResult {
   // draco::Mesh is not timed). decode: DecodeMeshFromBuffer only (turning
   // the draco::Mesh back into a qmc::Mesh is not timed).
   std::vector<double> encode_seconds, decode_seconds;
+  double cold_decode_seconds = 0;  // with cold_heap_decode
   // As a polygon mesh when polygons were preserved, else triangles. Vertex
   // order is Draco's; vertices may be split (non-manifold) or missing
   // (unreferenced), so compare with nearest_vertex_error.
