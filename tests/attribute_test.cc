@@ -365,6 +365,35 @@ TEST(AttributePly, NormalsColoursAndFaceTexcoordsRoundTrip) {
                 std::round(decoded.values[3 * size_t(decoded.corner_values[k]) + c]));
 }
 
+// `v x y z r g b`: a colour per vertex, through a .qmc file and back onto
+// the v lines; on only some vertices, or as 7 numbers, kept out with a note.
+TEST(AttributeObj, VertexColoursRoundTrip) {
+  const std::string text = "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nv 1 1 0 0.25 0.5 0.75\nf 1 2 3\nf 3 2 4\n";
+  Mesh m;
+  std::vector<std::string> notes;
+  ASSERT_TRUE(tools::read_mesh_from_memory(text, "obj", &m, &notes).ok());
+  EXPECT_TRUE(notes.empty()) << notes.front();
+  ASSERT_EQ(m.attributes.size(), 1u);
+  EXPECT_EQ(m.attributes[0].name, "colour");
+  EXPECT_EQ(m.attributes[0].kind, AttributeKind::kColour);
+  EXPECT_EQ(m.attributes[0].values, (std::vector<float>{1, 0, 0, 0, 1, 0, 0, 0, 1, 0.25f, 0.5f, 0.75f}));
+  EXPECT_EQ(m.attributes[0].corner_values, m.corners);
+  const DecodedFile d = decode_or_fail(encode_or_fail(m, EncodeOptions{}));
+  EXPECT_TRUE(tools::check_round_trip(m, d).ok());
+  std::string written;
+  ASSERT_TRUE(tools::write_mesh_to_memory(m, "obj", &written).ok());
+  EXPECT_EQ(written, "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nv 1 1 0 0.25 0.5 0.75\nf 1 2 3\nf 3 2 4\n");
+  for (const std::string partial : {"v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0 1\nf 1 2 3\n",
+                                    "v 0 0 0 1 0 0 1\nv 1 0 0 0 1 0 1\nv 0 1 0 0 0 1 1\nf 1 2 3\n"}) {
+    Mesh p;
+    notes.clear();
+    ASSERT_TRUE(tools::read_mesh_from_memory(partial, "obj", &p, &notes).ok());
+    EXPECT_TRUE(p.attributes.empty());
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0].rfind("ignored per-vertex colours on v lines", 0), 0u) << notes[0];
+  }
+}
+
 TEST(AttributeObj, CornersWithoutAnIndexLeaveTheValuesOutWithANote) {
   const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3\n";
   Mesh m;

@@ -233,15 +233,23 @@ contains decode-groups-mtllib "$work/groups_back.obj" "^mtllib m.mtl$"
 contains decode-groups-usemtl "$work/groups_back.obj" "^usemtl red$"
 check decode-groups-off-refused 3 "$qmc" decode "$work/groups.qmc" "$work/groups_back.off"
 # What the format cannot carry yet is an error naming it and the flag that drops it ...
-{ echo "v 0 0 0 1 0 0"; echo "v 1 0 0 0 1 0"; echo "v 0 1 0 0 0 1"; echo "f 1 2 3"; echo "l 1 2"; } >"$work/colours.obj"
+{ echo "v 0 0 0 1 0 0"; echo "v 1 0 0 0 1 0"; echo "v 0 1 0 0 0 1 1"; echo "f 1 2 3"; echo "l 1 2"; } >"$work/colours.obj"
 check encode-colours-refused 3 "$qmc" encode "$work/colours.obj" "$work/colours.qmc"
 contains encode-colours-refused-names-flag "$work/err" "pass --drop-unsupported"
-contains encode-colours-refused-colours "$work/err" "  ignored per-vertex colours on v lines: 3"
+contains encode-colours-refused-colours "$work/err" "  ignored per-vertex colours on v lines of 7 numbers: 1"
+contains encode-colours-refused-partial "$work/err" "  ignored per-vertex colours on v lines: only 2 of 3 vertices have one"
 check encode-colours-refused-no-output 0 test ! -e "$work/colours.qmc"
 # ... and with the flag, a list of what was dropped.
 check encode-colours-noted 0 "$qmc" encode "$work/colours.obj" "$work/colours.qmc" --drop-unsupported
-contains encode-colours-noted-colours "$work/err" "dropped (--drop-unsupported): .*colours.obj: ignored per-vertex colours on v lines: 3"
+contains encode-colours-noted-colours "$work/err" "dropped (--drop-unsupported): .*colours.obj: ignored per-vertex colours on v lines: only 2 of 3"
 contains encode-colours-noted-l "$work/err" "ignored polyline (l) elements: 1"
+# Colours on every v line travel (spec 15, kind colour) and are written back.
+{ echo "v 0 0 0 1 0 0"; echo "v 1 0 0 0 1 0"; echo "v 0 1 0 0 0 1"; echo "f 1 2 3"; } >"$work/rgb.obj"
+check encode-vertex-colours 0 "$qmc" encode "$work/rgb.obj" "$work/rgb.qmc"
+check verify-vertex-colours 0 "$qmc" verify "$work/rgb.obj" "$work/rgb.qmc"
+contains verify-vertex-colours-checked "$work/out" "attribute colour: at every corner"
+check decode-vertex-colours 0 "$qmc" decode "$work/rgb.qmc" "$work/rgb_back.obj"
+contains decode-vertex-colours-v "$work/rgb_back.obj" "^v 0 1 0 0 0 1$"
 check encode-colours-quiet 0 "$qmc" encode "$work/colours.obj" "$work/colours.qmc" --quiet --drop-unsupported
 cp "$work/err" "$work/quiet.err"
 check encode-colours-quiet-says-nothing 0 test ! -s "$work/quiet.err"

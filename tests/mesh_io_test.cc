@@ -203,7 +203,7 @@ TEST(MeshIo, ObjReadsAllFaceFormsAndWarns) {
   EXPECT_TRUE(has_warning(warnings, "normal (vn) values: only 6 of 19 face corners")) << joined(warnings);
   EXPECT_TRUE(mesh.attributes.empty());
   EXPECT_TRUE(has_warning(warnings, "w (homogeneous weight) values on v lines: 1")) << joined(warnings);
-  EXPECT_TRUE(has_warning(warnings, "colours on v lines: 1")) << joined(warnings);
+  EXPECT_TRUE(has_warning(warnings, "colours on v lines: only 1 of 4 vertices have one")) << joined(warnings);
   EXPECT_TRUE(has_warning(warnings, "(l) elements: 1")) << joined(warnings);
   EXPECT_TRUE(has_warning(warnings, "(p) elements: 1")) << joined(warnings);
   EXPECT_TRUE(has_warning(warnings, "unknown keyword 'curv': 1")) << joined(warnings);

@@ -373,6 +373,7 @@ class ObjParser {
                                     mesh);
         !s.ok())
       return s;
+    finish_vertex_colours(mesh);
     for (ObjLabel& label : labels_)
       if (label.used) mesh->face_labels.push_back(label.finish());
     return finish_attribute(&normals_, "normal", AttributeKind::kNormal, "normal (vn)", mesh);
@@ -501,6 +502,25 @@ class ObjParser {
     return Status::Ok();
   }
 
+  // `v x y z r g b` on every vertex: the attribute "colour", one value a
+  // vertex. On only some vertices they are kept out, with a note.
+  void finish_vertex_colours(Mesh* mesh) {
+    const size_t coloured = vertex_colours_.size() / 3;
+    if (coloured == 0) return;
+    if (coloured != mesh->vertex_count()) {
+      warnings_->note("ignored per-vertex colours on v lines: only " + std::to_string(coloured) + " of " +
+                      std::to_string(mesh->vertex_count()) + " vertices have one");
+      return;
+    }
+    MeshAttribute a;
+    a.name = "colour";
+    a.kind = AttributeKind::kColour;
+    a.components = 3;
+    a.values = std::move(vertex_colours_);
+    a.corner_values = mesh->corners;
+    mesh->attributes.push_back(std::move(a));
+  }
+
   Status parse_vertex(uint64_t line, Mesh* mesh) {
     size_t values = tokens_.size() - 1;
     if (values < 3) {
@@ -518,8 +538,15 @@ class ObjParser {
     }
     if (values == 4) {
       warnings_->add("ignored w (homogeneous weight) values on v lines");
-    } else if (values == 6 || values == 7) {
-      warnings_->add("ignored per-vertex colours on v lines");
+    } else if (values == 6) {  // x y z r g b: a colour per vertex
+      for (size_t i = 4; i <= 6; ++i) {
+        float value = 0;
+        if (std::string problem = parse_coordinate(tokens_[i], &value); !problem.empty())
+          return invalid(at_line(name_, line) + problem + " in a vertex colour");
+        vertex_colours_.push_back(value);
+      }
+    } else if (values == 7) {
+      warnings_->add("ignored per-vertex colours on v lines of 7 numbers");
     } else if (values > 3) {
       warnings_->add("ignored extra values on v lines");
     }
@@ -593,6 +620,7 @@ class ObjParser {
   WarningTally* warnings_;
   std::vector<std::string_view> tokens_;
   ObjValues texcoords_, normals_;
+  std::vector<float> vertex_colours_;  // r g b of each v line that has them
   ObjLabel labels_[4] = {{"o", "object"}, {"g", "group"}, {"usemtl", "material"}, {"s", "smoothing"}};
   size_t unknown_kinds_ = 0;
   uint64_t largest_index_ = kNoIndex;
@@ -1760,14 +1788,6 @@ class TextSink {
   bool failed_ = false;
 };
 
-void put_vertex_line(const Mesh& mesh, size_t v, TextSink* out) {
-  for (int axis = 0; axis < 3; ++axis) {
-    out->put(" ");
-    out->put_float(mesh.positions[3 * v + axis]);
-  }
-  out->put("\n");
-}
-
 // The attribute OBJ writes as vt (kind texture coordinate) or vn (normal), or null.
 const MeshAttribute* obj_attribute(const Mesh& mesh, AttributeKind kind) {
   for (const MeshAttribute& a : mesh.attributes)
@@ -1785,6 +1805,27 @@ void put_value_lines(const MeshAttribute* a, const char* keyword, TextSink* out)
     }
     out->put("\n");
   }
+}
+
+// Spec 15's attributes as PLY holds them: one value per vertex (every
+// corner of a vertex refers to one value), or texcoords per corner.
+bool one_value_per_vertex(const Mesh& mesh, const MeshAttribute& a, std::vector<uint32_t>* value_of) {
+  value_of->assign(mesh.vertex_count(), UINT32_MAX);
+  for (size_t k = 0; k < mesh.corners.size(); ++k) {
+    uint32_t& v = (*value_of)[mesh.corners[k]];
+    if (v != UINT32_MAX && v != a.corner_values[k]) return false;
+    v = a.corner_values[k];
+  }
+  return true;
+}
+
+// The attribute OBJ writes on its v lines (r g b after x y z), or null: the
+// first colour of 3 components with one value per vertex.
+const MeshAttribute* obj_vertex_colour(const Mesh& mesh) {
+  std::vector<uint32_t> value_of;
+  for (const MeshAttribute& a : mesh.attributes)
+    if (a.kind == AttributeKind::kColour && a.components == 3 && one_value_per_vertex(mesh, a, &value_of)) return &a;
+  return nullptr;
 }
 
 // The OBJ statement of a face label (spec 16) the reader makes, or "".
@@ -1805,9 +1846,21 @@ void write_obj(const Mesh& mesh, TextSink* out) {
       for (const std::string& r : l.references) out->put(" " + r);
       out->put("\n");
     }
+  const MeshAttribute* colour = obj_vertex_colour(mesh);
+  std::vector<uint32_t> colour_of;
+  if (colour) one_value_per_vertex(mesh, *colour, &colour_of);
   for (size_t v = 0; v < mesh.vertex_count(); ++v) {
     out->put("v");
-    put_vertex_line(mesh, v, out);
+    for (int axis = 0; axis < 3; ++axis) {
+      out->put(" ");
+      out->put_float(mesh.positions[3 * v + axis]);
+    }
+    // A vertex no face uses has no colour in the mesh: 0 0 0, as in PLY.
+    for (uint32_t c = 0; colour && c < 3; ++c) {
+      out->put(" ");
+      out->put_float(colour_of[v] == UINT32_MAX ? 0.f : colour->values[3 * size_t(colour_of[v]) + c]);
+    }
+    out->put("\n");
   }
   const MeshAttribute* texcoord = obj_attribute(mesh, AttributeKind::kTextureCoordinate);
   const MeshAttribute* normal = obj_attribute(mesh, AttributeKind::kNormal);
@@ -1868,17 +1921,6 @@ void write_off(const Mesh& mesh, TextSink* out) {
   put_face_lines(mesh, out);
 }
 
-// Spec 15's attributes as PLY holds them: one value per vertex (every
-// corner of a vertex refers to one value), or texcoords per corner.
-bool one_value_per_vertex(const Mesh& mesh, const MeshAttribute& a, std::vector<uint32_t>* value_of) {
-  value_of->assign(mesh.vertex_count(), UINT32_MAX);
-  for (size_t k = 0; k < mesh.corners.size(); ++k) {
-    uint32_t& v = (*value_of)[mesh.corners[k]];
-    if (v != UINT32_MAX && v != a.corner_values[k]) return false;
-    v = a.corner_values[k];
-  }
-  return true;
-}
 
 // The PLY properties of an attribute (names, in component order).
 std::vector<const char*> ply_property_names(const MeshAttribute& a) {
@@ -1960,18 +2002,18 @@ void write_ply(const Mesh& mesh, TextSink* out) {
 }
 
 // What the format cannot write is an error, never a silent loss: OBJ writes
-// one texture-coordinate and one normal attribute, PLY per-vertex normals,
+// one texture-coordinate, one normal and one per-vertex colour attribute, PLY per-vertex normals,
 // colours, alpha and texcoords (per corner too), OFF none.
 Status check_attributes_fit(const Mesh& mesh, const std::string& format) {
   for (const MeshAttribute& a : mesh.attributes) {
     const bool obj_kind = a.kind == AttributeKind::kTextureCoordinate || a.kind == AttributeKind::kNormal;
-    if (format == "obj" && obj_kind && obj_attribute(mesh, a.kind) == &a) continue;
+    if (format == "obj" && ((obj_kind && obj_attribute(mesh, a.kind) == &a) || obj_vertex_colour(mesh) == &a)) continue;
     std::vector<uint32_t> value_of;
     if (format == "ply" && !ply_property_names(a).empty() &&
         (one_value_per_vertex(mesh, a, &value_of) || (a.kind == AttributeKind::kTextureCoordinate && a.components == 2)))
       continue;
     return invalid("the mesh has attribute \"" + a.name + "\", which ." + format +
-                   (format == "obj"   ? " cannot hold besides the first texture coordinates and normals"
+                   (format == "obj"   ? " cannot hold besides the first texture coordinates, normals and vertex colours"
                     : format == "ply" ? " cannot hold (PLY: normals, colour and alpha one per vertex, texcoord)"
                                       : " output cannot hold; write .obj, .ply or .qmc"));
   }
