@@ -161,7 +161,7 @@ int main(int argc, char** argv) {
     if (progress) std::fprintf(stderr, "\r[%zu/%zu] %-40s", m + 1, meshes.size(), name.c_str());
     qmc::Mesh mesh;
     std::vector<std::string> warnings;
-    if (qmc::Status s = qmc::tools::read_mesh(path, &mesh, &warnings); !s.ok()) {
+    if (qmc::Status s = qmc::bench::read_geometry(path, &mesh, &warnings); !s.ok()) {
       std::fprintf(stderr, "\nqmc_baseline: %s\n", s.to_string().c_str());
       return 3;
     }

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "mesh_io.h"
 #include "qmc/decoder.h"
 
 namespace qmc::bench {
@@ -59,6 +60,13 @@ std::string display_name(const std::string& path) {
   if (slash == std::string::npos || slash == 0) return path;
   const size_t parent = path.find_last_of('/', slash - 1);
   return parent == std::string::npos ? path : path.substr(parent + 1);
+}
+
+Status read_geometry(const std::string& path, Mesh* mesh, std::vector<std::string>* notes) {
+  Status status = tools::read_mesh(path, mesh, notes);
+  mesh->attributes.clear();
+  mesh->face_labels.clear();
+  return status;
 }
 
 }  // namespace qmc::bench

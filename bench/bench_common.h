@@ -47,4 +47,9 @@ size_t end_of_connectivity(const EncodeStats& stats);
 // `faces` faces.
 bool decode_connectivity_only(const std::vector<uint8_t>& file, size_t conn_end, size_t faces);
 
+// A mesh file as the geometry benchmarks compare it: positions and faces,
+// without its attributes and face labels (spec 15, 16), which the peers are
+// not given there (attributes.md compares those).
+Status read_geometry(const std::string& path, Mesh* mesh, std::vector<std::string>* notes);
+
 }  // namespace qmc::bench

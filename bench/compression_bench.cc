@@ -496,6 +496,8 @@ std::string parts_table(const std::vector<Case>& cases) {
 std::string document(const std::vector<Case>& cases, const Options& opt, double seconds) {
   // Built by concatenation: format() has a bounded buffer.
   std::string doc =
+      "Every mesh is read as its positions and faces (bench/bench_common.h, `read_geometry`: texture "
+      "coordinates, normals, colours and face labels are left out; attributes.md compares those). "
       "Every codec rounds positions to the same grid, Draco's: one step for all axes, the largest side of the "
       "bounding box / (2^bits - 1). **qmc**: `qmc::encode` with default options but `position_bits` "
       "(uniform grid, automatic connectivity and POSN method), decoded by `qmc::decode` with "
@@ -587,7 +589,7 @@ int main(int argc, char** argv) {
   std::vector<Case> cases;
   for (const std::string& path : opt.meshes) {
     qmc::Mesh mesh;
-    if (qmc::Status s = qmc::tools::read_mesh(path, &mesh, nullptr); !s.ok()) fail(path + ": " + s.to_string());
+    if (qmc::Status s = qmc::bench::read_geometry(path, &mesh, nullptr); !s.ok()) fail(path + ": " + s.to_string());
     const std::string name = qmc::bench::display_name(path);
     for (int bits : opt.bits) {
       if (progress) std::fprintf(stderr, "\r%-40s %2d bits", name.c_str(), bits);

@@ -67,7 +67,7 @@ Run run(const Mesh& mesh, const EncodeOptions& options, int runs, std::string* e
 Mesh load(const std::string& corpus, const std::string& name) {
   Mesh mesh;
   std::vector<std::string> warnings;
-  if (Status s = tools::read_mesh(corpus + "/" + name, &mesh, &warnings); !s.ok()) fail(kProgram, s.to_string());
+  if (Status s = bench::read_geometry(corpus + "/" + name, &mesh, &warnings); !s.ok()) fail(kProgram, s.to_string());
   return mesh;
 }
 

@@ -327,7 +327,7 @@ int main(int argc, char** argv) {
   };
   for (const std::string& path : opt.meshes) {
     qmc::Mesh mesh;
-    if (qmc::Status s = qmc::tools::read_mesh(path, &mesh, nullptr); !s.ok()) fail(s.to_string());
+    if (qmc::Status s = qmc::bench::read_geometry(path, &mesh, nullptr); !s.ok()) fail(s.to_string());
     bench(qmc::bench::display_name(path), mesh);
   }
   if (opt.sphere_levels >= 0) {

@@ -112,7 +112,7 @@ struct TestMesh {
 
 qmc::Mesh refined_cow(const std::string& path) {
   qmc::Mesh triangles, quads;
-  if (qmc::Status s = qmc::tools::read_mesh(path, &triangles, nullptr); !s.ok()) fail(s.to_string());
+  if (qmc::Status s = qmc::bench::read_geometry(path, &triangles, nullptr); !s.ok()) fail(s.to_string());
   if (qmc::Status s = qmc::tools::catmull_clark(triangles, &quads); !s.ok()) fail(path + ": " + s.to_string());
   return quads;
 }

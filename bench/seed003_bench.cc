@@ -384,7 +384,7 @@ MeshRun bench_mesh(const std::string& path, bool timed, const Options& opt) {
   MeshRun m;
   m.name = qmc::bench::display_name(path);
   qmc::Mesh input;
-  if (qmc::Status s = qmc::tools::read_mesh(path, &input, nullptr); !s.ok()) {
+  if (qmc::Status s = qmc::bench::read_geometry(path, &input, nullptr); !s.ok()) {
     m.error = "read: " + s.to_string();
     return m;
   }

@@ -479,7 +479,7 @@ int main(int argc, char** argv) {
     const std::string name = qmc::bench::display_name(path);
     if (progress) std::fprintf(stderr, "\r[%zu/%zu] %-40s", i + 1, opt.meshes.size(), name.c_str());
     qmc::Mesh mesh;
-    if (qmc::Status s = qmc::tools::read_mesh(path, &mesh, nullptr); !s.ok()) fail(path + ": " + s.to_string());
+    if (qmc::Status s = qmc::bench::read_geometry(path, &mesh, nullptr); !s.ok()) fail(path + ": " + s.to_string());
     rows.push_back(bench_mesh(name, mesh, opt));
   }
   if (progress) std::fprintf(stderr, "\r%60s\r", "");
