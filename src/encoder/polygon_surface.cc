@@ -148,24 +148,28 @@ std::string close_holes(PolygonSurfaceModel* s) {
 
 // Faces of each component (through twins), components in order of their
 // first face.
+// The faces of the component of face f0, in breadth-first order from it,
+// marked `id` in `component` (where none is marked `id` yet).
+std::vector<uint32_t> faces_reached(const PolygonSurfaceModel& s, uint32_t f0, uint32_t id,
+                                    std::vector<uint32_t>* component) {
+  std::vector<uint32_t> faces{f0};
+  (*component)[f0] = id;
+  for (size_t i = 0; i < faces.size(); ++i)
+    for (uint32_t h = s.face_begin[faces[i]]; h < s.face_begin[faces[i] + 1]; ++h) {
+      const uint32_t g = s.face_of[s.twin[h]];
+      if ((*component)[g] != id) {
+        (*component)[g] = id;
+        faces.push_back(g);
+      }
+    }
+  return faces;
+}
+
 std::vector<std::vector<uint32_t>> components_of(const PolygonSurfaceModel& s) {
   std::vector<uint32_t> component(s.face_count(), kNone);
   std::vector<std::vector<uint32_t>> out;
-  for (uint32_t f0 = 0; f0 < s.face_count(); ++f0) {
-    if (component[f0] != kNone) continue;
-    out.emplace_back();
-    std::vector<uint32_t>& faces = out.back();
-    component[f0] = uint32_t(out.size() - 1);
-    faces.push_back(f0);
-    for (size_t i = 0; i < faces.size(); ++i)
-      for (uint32_t h = s.face_begin[faces[i]]; h < s.face_begin[faces[i] + 1]; ++h) {
-        const uint32_t g = s.face_of[s.twin[h]];
-        if (component[g] == kNone) {
-          component[g] = component[f0];
-          faces.push_back(g);
-        }
-      }
-  }
+  for (uint32_t f0 = 0; f0 < s.face_count(); ++f0)
+    if (component[f0] == kNone) out.push_back(faces_reached(s, f0, uint32_t(out.size()), &component));
   return out;
 }
 
@@ -333,6 +337,43 @@ void cut_handle(PolygonSurfaceModel* s, const std::vector<uint32_t>& cycle) {
   ++s->handles;
 }
 
+// Cuts every handle, one per component and round, in the order of the
+// components' first faces. A cut keeps its component whole (the cycle does
+// not separate it) and raises its Euler characteristic by 2; only that
+// component's faces are listed again, in the order a new search of the whole
+// surface would list them, so the cycles found are the same.
+std::string cut_handles(PolygonSurfaceModel* s) {
+  std::vector<std::vector<uint32_t>> components = components_of(*s);
+  std::vector<uint32_t> mark(s->vertex_count(), kNone);
+  std::vector<int64_t> chi(components.size());
+  for (uint32_t c = 0; c < components.size(); ++c) chi[c] = euler_characteristic(*s, components[c], &mark, c);
+  // Per face, the last listing that reached it: each listing has its own
+  // number, so nothing is cleared between them.
+  std::vector<uint32_t> listed(s->face_count(), kNone);
+  uint32_t listing = 0;
+  CycleScratch scratch;
+  for (int round = 0;; ++round) {
+    bool cut = false;
+    for (uint32_t c = 0; c < components.size(); ++c) {
+      if (chi[c] == 2) continue;
+      if (chi[c] > 2 || chi[c] % 2 != 0) return "internal: a component has Euler characteristic " + std::to_string(chi[c]);
+      const std::vector<uint32_t> cycle = non_separating_cycle(*s, components[c], &scratch);
+      scratch.clear(*s, components[c]);
+      if (cycle.size() < 3) return "internal: no cycle found through a handle";
+      cut_handle(s, cycle);
+      cut = true;
+      const size_t faces = components[c].size() + 2;  // the two faces that close the cut
+      listed.resize(s->face_count(), kNone);
+      components[c] = faces_reached(*s, components[c][0], listing++, &listed);
+      if (components[c].size() != faces) return "internal: a handle's cut separated its component";
+      chi[c] += 2;
+    }
+    if (!cut) break;
+    if (round > 1 << 20) return "internal: handle cutting does not end";
+  }
+  return {};
+}
+
 }  // namespace
 
 std::string build_polygon_surface(const Mesh& mesh, PolygonSurfaceModel* s) {
@@ -359,27 +400,7 @@ std::string build_polygon_surface(const Mesh& mesh, PolygonSurfaceModel* s) {
   // corners are unchanged and so is the pairing.
   if (s->vertex_copies > 0) pair_unique_edges(s);
   if (std::string why = close_holes(s); !why.empty()) return why;
-  std::vector<uint32_t> mark(s->vertex_count(), kNone);
-  CycleScratch scratch;
-  for (int round = 0;; ++round) {
-    bool cut = false;
-    const auto components = components_of(*s);
-    mark.assign(s->vertex_count(), kNone);
-    for (uint32_t c = 0; c < components.size(); ++c) {
-      const int64_t chi = euler_characteristic(*s, components[c], &mark, c);
-      if (chi == 2) continue;
-      if (chi > 2 || chi % 2 != 0) return "internal: a component has Euler characteristic " + std::to_string(chi);
-      const std::vector<uint32_t> cycle = non_separating_cycle(*s, components[c], &scratch);
-      scratch.clear(*s, components[c]);
-      if (cycle.size() < 3) return "internal: no cycle found through a handle";
-      cut_handle(s, cycle);
-      cut = true;
-      mark.resize(s->vertex_count(), kNone);
-    }
-    if (!cut) break;
-    if (round > 1 << 20) return "internal: handle cutting does not end";
-  }
-  return {};
+  return cut_handles(s);
 }
 
 }  // namespace qmc
