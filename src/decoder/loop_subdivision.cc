@@ -47,6 +47,9 @@ Status number_edges(const LoopMesh& mesh, LoopEdges* e) {
   const uint32_t faces = mesh.face_count();
   EdgeHash hash(size_t(faces) * 3 / 2 + 3);
   e->face_edge.resize(size_t(faces) * 3);
+  // A closed mesh has 3F / 2 edges; a boundary adds to them as they come.
+  for (std::vector<uint32_t>* per_edge : {&e->a, &e->b, &e->c, &e->d, &e->face0, &e->corner0, &e->face1, &e->corner1})
+    per_edge->reserve(size_t(faces) * 3 / 2 + 3);
   for (uint32_t f = 0; f < faces; ++f) {
     const uint32_t* t = &mesh.triangles[3 * size_t(f)];
     for (uint32_t k = 0; k < 3; ++k) {
