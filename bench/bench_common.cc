@@ -69,4 +69,21 @@ Status read_geometry(const std::string& path, Mesh* mesh, std::vector<std::strin
   return status;
 }
 
+size_t drop_unused_vertices(Mesh* mesh) {
+  constexpr uint32_t kUnused = UINT32_MAX;
+  std::vector<uint32_t> new_index(mesh->vertex_count(), kUnused);
+  for (uint32_t v : mesh->corners) new_index[v] = 0;
+  uint32_t kept = 0;
+  for (size_t v = 0; v < new_index.size(); ++v) {
+    if (new_index[v] == kUnused) continue;
+    new_index[v] = kept;
+    for (int a = 0; a < 3; ++a) mesh->positions[3 * size_t(kept) + a] = mesh->positions[3 * v + a];
+    ++kept;
+  }
+  const size_t dropped = new_index.size() - kept;
+  mesh->positions.resize(3 * size_t(kept));
+  for (uint32_t& v : mesh->corners) v = new_index[v];
+  return dropped;
+}
+
 }  // namespace qmc::bench

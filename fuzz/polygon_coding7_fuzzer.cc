@@ -28,7 +28,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (v >= vertices) __builtin_trap();
   mesh.positions.assign(3 * size_t(vertices), 0.f);
   qmc::PolygonEncoding again;
-  if (!qmc::encode_polygon_connectivity(mesh, qmc::kPolygonContextCoded, true, &again).empty()) __builtin_trap();
+  if (!qmc::encode_polygon_connectivity(mesh, qmc::kPolygonContextCoded, true, true, &again).empty()) __builtin_trap();
   // The encoder's payload: method, vertex_count, face_count, then the data.
   qmc::ByteReader header(again.payload.data(), again.payload.size());
   uint8_t method = 0;

@@ -45,6 +45,39 @@ TEST(Encoder, RelabelsVerticesByFirstReference) {
   EXPECT_FLOAT_EQ(d.mesh.positions[12], 5.f);  // unreferenced vertex last
 }
 
+// The polygon coder's vertices no face uses get the last labels in the
+// encoder's order (spec 5.4.9), each predicted from the vertex before: by
+// default along a Z-order curve, so points on a line come out sorted along
+// it; or in the input's order.
+TEST(Encoder, VerticesOfNoFaceFollowACurve) {
+  Mesh m;
+  m.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  m.face_sizes = {3};
+  m.corners = {0, 1, 2};
+  constexpr uint32_t kPoints = 40;
+  for (uint32_t i = 0; i < kPoints; ++i) {
+    const float x = float((i * 17) % kPoints);  // a shuffle of 0 .. 39
+    m.positions.insert(m.positions.end(), {x, 7, 7});
+  }
+  for (bool along_curve : {true, false}) {
+    EncodeOptions o;
+    o.connectivity = ConnectivityChoice::kPolygon;
+    o.unused_vertices_along_curve = along_curve;
+    std::vector<uint8_t> bytes;
+    EncodeStats stats;
+    ASSERT_TRUE(encode(m, o, &bytes, &stats).ok());
+    ASSERT_EQ(stats.file_vertex.size(), 3 + kPoints);
+    for (uint32_t k = 0; k < kPoints; ++k)
+      if (along_curve)
+        EXPECT_EQ(m.positions[3 * size_t(stats.file_vertex[3 + k])], float(k)) << "label " << 3 + k;
+      else
+        EXPECT_EQ(stats.file_vertex[3 + k], 3 + k) << "label " << 3 + k;
+    DecodedFile d;
+    ASSERT_TRUE(decode(bytes.data(), bytes.size(), &d).ok());
+    EXPECT_TRUE(tools::check_round_trip(m, d, tools::Correspondence{stats.file_vertex, stats.face_source}).ok());
+  }
+}
+
 TEST(Encoder, StatsNameTheFileVertexOrder) {
   std::vector<uint8_t> bytes;
   EncodeStats stats;

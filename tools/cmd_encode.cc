@@ -297,11 +297,23 @@ std::string shortest_number(double v) {
   return text;
 }
 
+size_t vertices_of_no_face(const Mesh& mesh) {
+  std::vector<uint8_t> used(mesh.vertex_count(), 0);
+  for (uint32_t v : mesh.corners)
+    if (v < used.size()) used[v] = 1;
+  return size_t(std::count(used.begin(), used.end(), uint8_t(0)));
+}
+
 void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& stats,
                   const tools::RoundTripReport& check, uint64_t input_bytes) {
   const double v = mesh.vertex_count() ? double(mesh.vertex_count()) : 1.0;
   std::printf("input       %s: %zu vertices, %zu faces, %s\n", args.input.c_str(), mesh.vertex_count(),
               mesh.face_count(), human_bytes(input_bytes).c_str());
+  if (const size_t unused = vertices_of_no_face(mesh); unused > 0)
+    std::printf("            %zu vertices no face uses: kept, with the last labels%s\n", unused,
+                stats.method == ConnectivityMethod::kPolygon && args.options.unused_vertices_along_curve
+                    ? ", along a curve (spec 5.4.9)"
+                    : "");
   if (stats.method == ConnectivityMethod::kQuad) {
     const QuadCoderStats& q = stats.quad;
     std::printf("connectivity quad coder (seed 001: Q1-Q13, Spirale Reversi), %s, %s:",

@@ -51,6 +51,7 @@ qmc::EncodeOptions format_1_4_options() {
   options.position_grid = qmc::PositionGrid::kPerAxis;
   options.position_method = qmc::PositionMethod::kDeltas;
   options.polygon_context_coding = false;
+  options.unused_vertices_along_curve = false;
   return options;
 }
 
@@ -1726,7 +1727,7 @@ void write_context_coded_valid(VectorWriter* w) {
   for (uint64_t seed = 1;; ++seed) {
     const Mesh disk = qmc::tools::make_random_quad_disk(seed, 60);
     qmc::PolygonEncoding encoding;
-    if (!qmc::encode_polygon_connectivity(disk, qmc::kPolygonContextCoded, true, &encoding).empty()) continue;
+    if (!qmc::encode_polygon_connectivity(disk, qmc::kPolygonContextCoded, true, true, &encoding).empty()) continue;
     if (encoding.symbol_counts[7] == 0) continue;
     w->valid("valid_polygon_coding7_three_detours", encode_polygons(disk, qmc::kPolygonContextCoded), &disk);
     break;

@@ -89,6 +89,10 @@ struct EncodeOptions {
   // Whether the smallest may be coding 7 (format 1.6, 5.4.10); false keeps
   // a file readable by 1.5 decoders.
   bool polygon_context_coding = true;
+  // Polygon coder only: vertices no face uses take the last labels along a
+  // Z-order curve, so that each is predicted from a near one (5.4.9); false
+  // keeps them in input order, as the encoder did before.
+  bool unused_vertices_along_curve = true;
   std::vector<std::string> texts;            // written as teXt chunks ("key=value")
   // Write an oRDR chunk (section 4.5) so that the decoder restores the
   // input's order of vertices, faces and corners exactly; nothing is

@@ -153,7 +153,8 @@ std::string quad_connectivity(const Mesh& mesh, int forced_coding, FileConnectiv
 std::string polygon_connectivity(const Mesh& mesh, const EncodeOptions& options, FileConnectivity* c,
                                  PolygonCoderStats* stats) {
   PolygonEncoding enc;
-  if (std::string why = encode_polygon_connectivity(mesh, options.polygon_coding, options.polygon_context_coding, &enc);
+  if (std::string why = encode_polygon_connectivity(mesh, options.polygon_coding, options.polygon_context_coding,
+                                                    options.unused_vertices_along_curve, &enc);
       !why.empty())
     return why;
   c->method = ConnectivityMethod::kPolygon;

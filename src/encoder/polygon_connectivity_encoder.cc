@@ -17,6 +17,7 @@
 #include "decoder/polygon_spirale_reversi.h"
 #include "encoder/polygon_surface.h"
 #include "encoder/polygon_traversal_encoder.h"
+#include "encoder/vertex_order.h"
 #include "qmc/format.h"
 
 namespace qmc {
@@ -208,7 +209,8 @@ void derive_records(const PolygonSurfaceModel& s, const PolygonTraversal& t, Rec
 
 }  // namespace
 
-std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool context_coding, PolygonEncoding* out) {
+std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool context_coding, bool unused_along_curve,
+                                        PolygonEncoding* out) {
   *out = PolygonEncoding{};
   PolygonSurfaceModel surface;
   if (std::string why = build_polygon_surface(mesh, &surface); !why.empty()) return why;
@@ -218,8 +220,8 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
   std::vector<uint32_t> parent;
   derive_records(surface, traversal, &records, &parent);
 
-  // Final labels: classes by smallest surface label, then the other input
-  // vertices in input order.
+  // Final labels: classes by smallest surface label, then the vertices of
+  // loose faces only in input order, then those of no face along a curve.
   std::vector<uint32_t> final(traversal.labels);
   uint32_t classes = 0;
   for (uint32_t v = 0; v < traversal.labels; ++v) final[v] = find(parent, v) == v ? classes++ : final[find(parent, v)];
@@ -232,8 +234,14 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
     out->file_vertex[final[l]] = label_vertex[l];
     input_final[label_vertex[l]] = final[l];
   }
+  std::vector<uint8_t> used(mesh.vertex_count(), 0);
+  for (uint32_t v : mesh.corners) used[v] = 1;
+  std::vector<uint32_t> rest[2];  // used by loose faces only (input order); by no face (curve order)
   for (uint32_t v = 0; v < mesh.vertex_count(); ++v)
-    if (input_final[v] == kNone) {
+    if (input_final[v] == kNone) rest[used[v] ? 0 : 1].push_back(v);
+  if (unused_along_curve) sort_along_curve(mesh, &rest[1]);
+  for (const std::vector<uint32_t>& part : rest)
+    for (uint32_t v : part) {
       input_final[v] = uint32_t(out->file_vertex.size());
       out->file_vertex.push_back(v);
     }

@@ -29,6 +29,9 @@ struct PolygonEncoding {
 // Returns "" or why the mesh cannot go through method 2. `forced` is a
 // coding 0..5 or 7, or -1 for the smallest.
 // `context_coding`: coding 7 may be the smallest (5.4.10, format 1.6).
-std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool context_coding, PolygonEncoding* out);
+// `unused_along_curve`: vertices no face uses follow a Z-order curve
+// (sort_along_curve), else the input's order.
+std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool context_coding, bool unused_along_curve,
+                                        PolygonEncoding* out);
 
 }  // namespace qmc

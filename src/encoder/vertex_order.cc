@@ -4,6 +4,9 @@
 // coding need not send it.
 #include "encoder/vertex_order.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace qmc {
 
 static constexpr uint32_t kUnlabelled = UINT32_MAX;
@@ -36,6 +39,45 @@ Mesh relabel(const Mesh& mesh, const VertexOrder& order) {
   for (uint32_t v : order.file_vertex)
     for (int a = 0; a < 3; ++a) out.positions.push_back(mesh.positions[3 * size_t(v) + a]);
   return out;
+}
+
+namespace {
+
+// 21 bits of x, y and z interleaved (Morton code).
+uint64_t interleave3(uint32_t x, uint32_t y, uint32_t z) {
+  uint64_t key = 0;
+  for (int b = 20; b >= 0; --b)
+    key = (key << 3) | (uint64_t((x >> b) & 1) << 2) | (uint64_t((y >> b) & 1) << 1) | uint64_t((z >> b) & 1);
+  return key;
+}
+
+}  // namespace
+
+void sort_along_curve(const Mesh& mesh, std::vector<uint32_t>* vertices) {
+  if (vertices->size() < 2) return;
+  float lo[3], hi[3];
+  for (int a = 0; a < 3; ++a) lo[a] = hi[a] = mesh.positions[3 * size_t((*vertices)[0]) + a];
+  for (uint32_t v : *vertices)
+    for (int a = 0; a < 3; ++a) {
+      const float x = mesh.positions[3 * size_t(v) + a];
+      if (x < lo[a]) lo[a] = x;  // NaN compares false and leaves the box alone
+      if (x > hi[a]) hi[a] = x;
+    }
+  const double side = std::max({double(hi[0]) - lo[0], double(hi[1]) - lo[1], double(hi[2]) - lo[2]});
+  const double cells = double((1u << 21) - 1);
+  const double scale = side > 0 && std::isfinite(side) ? cells / side : 0;
+  std::vector<std::pair<uint64_t, uint32_t>> keyed;
+  keyed.reserve(vertices->size());
+  for (uint32_t v : *vertices) {
+    uint32_t cell[3];
+    for (int a = 0; a < 3; ++a) {
+      const double t = (double(mesh.positions[3 * size_t(v) + a]) - lo[a]) * scale;
+      cell[a] = t >= 0 && t <= cells ? uint32_t(t) : 0;  // NaN too
+    }
+    keyed.emplace_back(interleave3(cell[0], cell[1], cell[2]), v);
+  }
+  std::sort(keyed.begin(), keyed.end());  // pairs: ties in input order
+  for (size_t i = 0; i < keyed.size(); ++i) (*vertices)[i] = keyed[i].second;
 }
 
 }  // namespace qmc
