@@ -394,6 +394,31 @@ TEST(AttributeObj, VertexColoursRoundTrip) {
   }
 }
 
+// A coloured vertex no face uses keeps its colour: a value per vertex
+// travels with mapping 0 (spec 15.6), which ties value l to vertex l, and
+// verify checks it, as no corner does. Exact colours, so the v lines read
+// back as they were written.
+TEST(AttributeObj, VertexColourOfAVertexInNoFaceTravels) {
+  const std::string text = "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nv 5 5 5 0.25 0.75 0.125\nf 1 2 3\n";
+  Mesh m;
+  std::vector<std::string> notes;
+  ASSERT_TRUE(tools::read_mesh_from_memory(text, "obj", &m, &notes).ok());
+  EncodeOptions exact;
+  exact.exact_attributes = true;
+  DecodedFile d = decode_or_fail(encode_or_fail(m, exact));
+  ASSERT_EQ(d.attribute_codings.size(), 1u);
+  EXPECT_EQ(d.attribute_codings[0].mapping, 0);
+  EXPECT_TRUE(tools::check_round_trip(m, d).ok());
+  std::string written;
+  ASSERT_TRUE(tools::write_mesh_to_memory(d.mesh, "obj", &written).ok());
+  EXPECT_NE(written.find("v 5 5 5 0.25 0.75 0.125\n"), std::string::npos) << written;
+  // The check fails when that value is not the vertex's.
+  d.mesh.attributes[0].values[3 * 3 + 1] = 0.5f;
+  const tools::RoundTripReport r = tools::check_round_trip(m, d);
+  EXPECT_FALSE(r.ok());
+  EXPECT_NE(r.face_mismatch.find("vertex 3, in no face"), std::string::npos) << r.face_mismatch;
+}
+
 TEST(AttributeObj, CornersWithoutAnIndexLeaveTheValuesOutWithANote) {
   const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3\n";
   Mesh m;

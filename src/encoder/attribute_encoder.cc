@@ -36,9 +36,14 @@ int bits_for(AttributeKind kind, const EncodeOptions& options) {
 }
 
 // 15.8: mapping 0 when each vertex's corners refer to one value that no
-// other vertex refers to, and every vertex has one. Fills value_of_vertex.
-bool one_value_per_vertex(const std::vector<uint32_t>& corner_values, const Mesh& file_mesh, size_t vertex_count,
-                          size_t value_count, std::vector<uint32_t>* value_of_vertex) {
+// other vertex refers to, and every vertex has one. A vertex no corner uses
+// has the value of its own input number (a value per vertex, as OBJ and PLY
+// give them: value v is vertex v's), which mapping 0 keeps tied to it;
+// mapping 1 would keep the value but not its vertex. Fills value_of_vertex.
+bool one_value_per_vertex(const std::vector<uint32_t>& corner_values, const Mesh& file_mesh,
+                          const std::vector<uint32_t>& file_vertex, size_t value_count,
+                          std::vector<uint32_t>* value_of_vertex) {
+  const size_t vertex_count = file_vertex.size();
   if (value_count != vertex_count) return false;
   value_of_vertex->assign(vertex_count, kNone);
   std::vector<uint32_t> owner(value_count, kNone);
@@ -52,7 +57,14 @@ bool one_value_per_vertex(const std::vector<uint32_t>& corner_values, const Mesh
       return false;
     }
   }
-  return std::find(value_of_vertex->begin(), value_of_vertex->end(), kNone) == value_of_vertex->end();
+  for (size_t v = 0; v < vertex_count; ++v) {
+    if ((*value_of_vertex)[v] != kNone) continue;
+    const uint32_t x = file_vertex[v];  // a vertex no corner uses
+    if (x >= value_count || owner[x] != kNone) return false;
+    (*value_of_vertex)[v] = x;
+    owner[x] = uint32_t(v);
+  }
+  return true;
 }
 
 // 15.3: values numbered by first reference over the corners in coder order,
@@ -230,16 +242,16 @@ std::string attribute_problem(const Mesh& mesh, size_t i, bool exact) {
   return {};
 }
 
-Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, size_t vertex_count,
+Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, const std::vector<uint32_t>& file_vertex,
                         const std::vector<uint32_t>& quantized, const std::vector<uint64_t>& corner_source,
                         const EncodeOptions& options, std::vector<uint8_t>* payload, AttributeStats* stats) {
   const uint32_t c = attribute.components;
-  const size_t value_count = attribute.value_count();
+  const size_t value_count = attribute.value_count(), vertex_count = file_vertex.size();
   std::vector<uint32_t> corner_values(corner_source.size());
   for (size_t k = 0; k < corner_source.size(); ++k) corner_values[k] = attribute.corner_values[corner_source[k]];
   // The table in file order: by vertex (mapping 0) or by first reference.
   std::vector<uint32_t> source_value, m;
-  const bool per_vertex = one_value_per_vertex(corner_values, file_mesh, vertex_count, value_count, &source_value);
+  const bool per_vertex = one_value_per_vertex(corner_values, file_mesh, file_vertex, value_count, &source_value);
   if (!per_vertex) {
     const std::vector<uint32_t> number = first_reference_numbering(corner_values, value_count);
     source_value.resize(value_count);

@@ -13,11 +13,11 @@ namespace qmc {
 
 // The aTTR payload of `attribute` (an attribute of the input mesh, already
 // validated). file_mesh holds the faces in coder order with file vertex
-// labels (vertex_count of them); corner_source[k] is the input corner that
-// file corner k is.
+// labels; file_vertex[l] is the input vertex of file label l (one entry a
+// vertex); corner_source[k] is the input corner that file corner k is.
 // quantized holds the POSN integers in file order (3 per vertex), from which
 // unit normals are predicted (coding 3, 15.7); empty leaves them on a grid.
-Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, size_t vertex_count,
+Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, const std::vector<uint32_t>& file_vertex,
                         const std::vector<uint32_t>& quantized, const std::vector<uint64_t>& corner_source,
                         const EncodeOptions& options, std::vector<uint8_t>* payload, AttributeStats* stats);
 

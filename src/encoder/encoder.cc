@@ -264,7 +264,7 @@ Status add_attributes(const Mesh& mesh, const EncodeOptions& options, const File
   for (const MeshAttribute& attribute : mesh.attributes) {
     std::vector<uint8_t> payload;
     AttributeStats stats;
-    if (Status s = encode_attribute(attribute, conn.mesh, mesh.vertex_count(), quantized, source, options, &payload,
+    if (Status s = encode_attribute(attribute, conn.mesh, conn.file_vertex, quantized, source, options, &payload,
                                     &stats);
         !s.ok())
       return s;

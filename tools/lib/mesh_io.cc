@@ -1811,11 +1811,18 @@ void put_value_lines(const MeshAttribute* a, const char* keyword, TextSink* out)
 // corner of a vertex refers to one value), or texcoords per corner.
 bool one_value_per_vertex(const Mesh& mesh, const MeshAttribute& a, std::vector<uint32_t>* value_of) {
   value_of->assign(mesh.vertex_count(), UINT32_MAX);
+  std::vector<uint8_t> referenced(a.value_count(), 0);
   for (size_t k = 0; k < mesh.corners.size(); ++k) {
     uint32_t& v = (*value_of)[mesh.corners[k]];
     if (v != UINT32_MAX && v != a.corner_values[k]) return false;
     v = a.corner_values[k];
+    referenced[v] = 1;
   }
+  // A vertex no face uses has the value of its own number when there is a
+  // value a vertex (as the readers and spec 15.6's mapping 0 give them).
+  if (a.value_count() == mesh.vertex_count())
+    for (size_t v = 0; v < mesh.vertex_count(); ++v)
+      if ((*value_of)[v] == UINT32_MAX && !referenced[v]) (*value_of)[v] = uint32_t(v);
   return true;
 }
 
@@ -1855,7 +1862,7 @@ void write_obj(const Mesh& mesh, TextSink* out) {
       out->put(" ");
       out->put_float(mesh.positions[3 * v + axis]);
     }
-    // A vertex no face uses has no colour in the mesh: 0 0 0, as in PLY.
+    // A vertex with no colour in the mesh (its value is not its own): 0 0 0, as in PLY.
     for (uint32_t c = 0; colour && c < 3; ++c) {
       out->put(" ");
       out->put_float(colour_of[v] == UINT32_MAX ? 0.f : colour->values[3 * size_t(colour_of[v]) + c]);

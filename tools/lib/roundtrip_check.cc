@@ -166,6 +166,33 @@ bool same_labels(const Mesh& original, const Mesh& decoded, size_t f, size_t src
   return true;
 }
 
+// A vertex no face uses keeps its value of an attribute with a value a
+// vertex, numbered as the vertices (what OBJ and PLY readers give): that
+// value is checked here, as no corner carries it.
+std::string compare_values_of_faceless_vertices(const Mesh& original, const Mesh& decoded,
+                                                const std::vector<uint32_t>& label,
+                                                const std::vector<std::array<double, 3>>& tolerance) {
+  const size_t n = original.vertex_count();
+  std::vector<uint8_t> in_a_face(n, 0);
+  for (uint32_t v : original.corners) in_a_face[v] = 1;
+  for (size_t j = 0; j < original.attributes.size(); ++j) {
+    const MeshAttribute& in = original.attributes[j];
+    const MeshAttribute& out = decoded.attributes[j];
+    bool by_vertex = in.value_count() == n;
+    for (size_t k = 0; by_vertex && k < original.corners.size(); ++k) by_vertex = in.corner_values[k] == original.corners[k];
+    if (!by_vertex) continue;
+    for (size_t v = 0; v < n; ++v) {
+      if (in_a_face[v]) continue;
+      const size_t y = label[v];
+      if (out.value_count() != n) return "attribute \"" + in.name + "\": vertex " + std::to_string(v) + ", in no face, lost its value";
+      for (uint32_t a = 0; a < in.components; ++a)
+        if (!same_value(in.values[in.components * v + a], out.values[out.components * y + a], tolerance[j][a]))
+          return "attribute \"" + in.name + "\": vertex " + std::to_string(v) + ", in no face, has another value";
+    }
+  }
+  return {};
+}
+
 std::string compare_faces(const Mesh& original, const DecodedFile& file, const Correspondence& c,
                           const std::vector<uint32_t>& label) {
   const Mesh& decoded = file.mesh;
@@ -192,7 +219,7 @@ std::string compare_faces(const Mesh& original, const DecodedFile& file, const C
       return "face " + std::to_string(f) + " (input face " + std::to_string(src) + ") has other labels";
     k += n;
   }
-  return {};
+  return compare_values_of_faceless_vertices(original, decoded, label, tolerance);
 }
 
 }  // namespace
