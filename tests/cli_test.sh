@@ -47,7 +47,7 @@ check compare-missing 3 "$qmc" compare "$work/torus.obj" "$work/nope.obj"
 check info 0 "$qmc" info "$work/torus.qmc"
 contains info-chunks "$work/out" "CONN"
 contains info-method "$work/out" "polygon coder (spec 5.4)"
-contains info-predicted "$work/out" "predicted (spec 14), uniform grid"
+contains info-predicted "$work/out" "predicted (spec 14, method 3: graded start), uniform grid"
 check info-json 0 "$qmc" info --json "$work/torus.qmc"
 contains info-json-valid "$work/out" '"connectivity":"polygon"'
 # Spec 14.1's grids as a user states them.
@@ -61,7 +61,12 @@ check encode-per-axis-deltas 0 "$qmc" encode "$work/torus.obj" "$work/deltas.qmc
 contains encode-per-axis-deltas-reported "$work/out" "deltas (spec 6), per-axis grid"
 check info-deltas 0 "$qmc" info "$work/deltas.qmc"
 contains info-deltas-method "$work/out" "deltas (spec 6), 12 bits/axis"
-# --format 1.N: files older decoders read (spec 11: 1.5 without polygon coding 7, 1.4 without predicted positions).
+# --format 1.N: files older decoders read (spec 11: 1.6 with POSN method 1 for 3, 1.5 also without polygon
+# coding 7, 1.4 also without predicted positions).
+check format-1.6 0 "$qmc" encode "$work/torus.obj" "$work/f16.qmc" --format 1.6 --quiet
+check format-1.6-info 0 "$qmc" info "$work/f16.qmc"
+contains format-1.6-written "$work/out" "format 1.6"
+contains format-1.6-method-1 "$work/out" "predicted (spec 14, method 1)"
 check format-1.5 0 "$qmc" encode "$work/torus.obj" "$work/f15.qmc" --format 1.5 --quiet
 check format-1.5-info 0 "$qmc" info "$work/f15.qmc"
 contains format-1.5-written "$work/out" "format 1.5"
@@ -124,7 +129,7 @@ contains progressive-levels "$work/out" "edge points"
 contains progressive-error "$work/out" "PSNR"
 check progressive-info 0 "$qmc" info "$work/prog.qmc"
 contains progressive-info-levels "$work/out" "progressive  2 Loop levels"
-contains progressive-info-format "$work/out" "format 1.6"  # its base mesh: polygon coding 7 (5.4.10)
+contains progressive-info-format "$work/out" "format 1.6"  # its base mesh: polygon coding 7 (5.4.10), deltas
 check progressive-decode-base 0 "$qmc" decode "$work/prog.qmc" "$work/l0.obj" --level 0
 contains progressive-decode-base-note "$work/out" "level 0 of 2"
 check progressive-decode-finest 0 "$qmc" decode "$work/prog.qmc" "$work/l2.obj"

@@ -35,7 +35,7 @@ TEST(Container, FileStartsWithSignatureThenQhdr) {
   EXPECT_EQ(load_u32be(&f[8]), kChunkHeader);
   EXPECT_EQ(load_u32le(&f[12]), 2u);
   EXPECT_EQ(f[16], kFormatMajor);
-  EXPECT_EQ(f[17], 5u);  // the cube's positions are predicted (spec 14), defined by 1.5
+  EXPECT_EQ(f[17], 7u);  // the cube's positions are predicted, method 3 (spec 14.4.1, 14.5), defined by 1.7
 }
 
 TEST(Container, ChunkListIsQhdrConnPosnQend) {

@@ -198,6 +198,28 @@ TEST(PredictedPositions, CandidateMaskDecisions) {
   EXPECT_FALSE(dec.overrun());
 }
 
+// 14.4.1's example: in method 3, bucket 5's "class > j" starts at 150 for
+// j = 0 (e = -4, clamped to -3), 1200 for j = 4 (e = 0), 1700 for j = 5 and
+// 1950 from j = 7 on; the same in every group. Method 1 starts all at 1024.
+TEST(PredictedPositions, GradedClassStartFollowsTheBucket) {
+  const PositionResidualModel flat(kTop), graded(kTop, ClassStart::kGraded);
+  for (int g = 0; g < kPositionGroups; ++g) {
+    EXPECT_EQ(graded.cls[g][5][0], 150);
+    EXPECT_EQ(graded.cls[g][5][2], 300);
+    EXPECT_EQ(graded.cls[g][5][3], 700);
+    EXPECT_EQ(graded.cls[g][5][4], 1200);
+    EXPECT_EQ(graded.cls[g][5][5], 1700);
+    EXPECT_EQ(graded.cls[g][5][6], 1900);
+    EXPECT_EQ(graded.cls[g][5][7], 1950);
+    EXPECT_EQ(graded.cls[g][5][29], 1950);
+    EXPECT_EQ(graded.cls[g][0][0], 1700);  // bucket 0: e = 0 - 0 + 1 = 1
+    for (int b = 0; b < kPositionBuckets; ++b)
+      for (int j = 0; j < kPositionMaxClass; ++j) EXPECT_EQ(flat.cls[g][b][j], 1024);
+  }
+  EXPECT_EQ(graded.sign[0], 1024);
+  EXPECT_EQ(graded.use[0][0], 1024);
+}
+
 std::vector<uint8_t> encode_with(const Mesh& mesh, const EncodeOptions& options, EncodeStats* stats = nullptr) {
   std::vector<uint8_t> out;
   const Status s = encode(mesh, options, &out, stats);
@@ -229,10 +251,14 @@ TEST(PredictedPositions, RoundTripsGeneratedMeshes) {
       EncodeOptions options;
       options.position_bits = bits;
       options.position_method = PositionMethod::kPredicted;
+      // Method 3 (1.7) under 1,000 vertices (14.5), or method 1 (1.5, 1.6 with coding 7).
+      options.graded_class_start = bits != 12;
       EncodeStats stats;
       const DecodedFile file = decode_all(encode_with(meshes[i], options, &stats));
-      EXPECT_EQ(stats.positions.method, 1);
-      EXPECT_EQ(file.version_minor, stats.polygon.coding == kPolygonContextCoded ? 6 : 5);
+      EXPECT_EQ(stats.positions.method, options.graded_class_start && meshes[i].vertex_count() < 1000 ? 3 : 1);
+      EXPECT_EQ(file.quantization.method, stats.positions.method);
+      EXPECT_EQ(file.version_minor,
+                stats.positions.method == 3 ? 7 : stats.polygon.coding == kPolygonContextCoded ? 6 : 5);
       const tools::RoundTripReport r = tools::check_round_trip(meshes[i], file);
       EXPECT_TRUE(r.faces_equal) << "mesh " << i << ": " << r.face_mismatch;
       EXPECT_TRUE(r.positions_within_bound) << "mesh " << i << " at " << bits << " bits: " << r.position_mismatch;
@@ -243,19 +269,33 @@ TEST(PredictedPositions, RoundTripsGeneratedMeshes) {
     }
 }
 
-// On the per-axis grid both methods carry the same integers: identical output.
+// 14.5: the encoder starts graded (method 3) under 1,000 vertices only.
+TEST(PredictedPositions, GradedStartUnderAThousandVertices) {
+  for (const auto& [rings, expected] : {std::pair{30u, 3}, std::pair{40u, 1}}) {  // 900 and 1,200 vertices
+    EncodeStats stats;
+    const DecodedFile file = decode_all(encode_with(tools::make_torus(rings, 30), EncodeOptions{}, &stats));
+    EXPECT_EQ(file.mesh.vertex_count(), 30u * rings);
+    EXPECT_EQ(stats.positions.method, expected);
+    EXPECT_EQ(file.quantization.method, expected);
+  }
+}
+
+// On the per-axis grid every method carries the same integers: identical output.
 TEST(PredictedPositions, PerAxisGridGivesMethodZerosPositions) {
   const Mesh torus = tools::make_torus(12, 7, 2.f, 0.3f);
   EncodeOptions options;
   options.position_grid = PositionGrid::kPerAxis;
   options.position_method = PositionMethod::kDeltas;
   const DecodedFile deltas = decode_all(encode_with(torus, options));
-  options.position_method = PositionMethod::kPredicted;
-  const DecodedFile predicted = decode_all(encode_with(torus, options));
   EXPECT_EQ(deltas.quantization.method, 0);
-  EXPECT_EQ(predicted.quantization.method, 1);
-  EXPECT_EQ(deltas.quantized, predicted.quantized);
-  EXPECT_EQ(deltas.mesh.positions, predicted.mesh.positions);
+  options.position_method = PositionMethod::kPredicted;
+  for (bool graded : {false, true}) {
+    options.graded_class_start = graded;
+    const DecodedFile predicted = decode_all(encode_with(torus, options));
+    EXPECT_EQ(predicted.quantization.method, graded ? 3 : 1);
+    EXPECT_EQ(deltas.quantized, predicted.quantized);
+    EXPECT_EQ(deltas.mesh.positions, predicted.mesh.positions);
+  }
 }
 
 // The uniform grid is Draco's: the largest side in 2^bits - 1 steps.

@@ -78,8 +78,10 @@ const char kHelp[] =
     "  --gim-store-blank   also code the samples of blank pixels (smooth planes\n"
     "                      for image tools, at some cost in bytes)\n"
     "  --format 1.N        write nothing that decoders older than 1.N cannot read:\n"
-    "                      1.5 leaves out polygon coding 7, 1.4 also predicted\n"
-    "                      positions (deltas on the per-axis grid); default 1.6\n"
+    "                      1.6 writes predicted positions as method 1 instead\n"
+    "                      of 3, 1.5 also leaves out polygon coding 7, 1.4 also\n"
+    "                      predicted positions (deltas on the per-axis grid);\n"
+    "                      default 1.7\n"
     "  --uv-bits N         texture coordinates (spec 15) on a grid of 2^N - 1 steps\n"
     "                      over their range (default 12: 1/4 texel of a 1024\n"
     "                      texture)\n"
@@ -101,8 +103,9 @@ const char kHelp[] =
 
 // The newest format minor version this encoder writes, and the oldest that
 // --format accepts: 1.4 decoders read method-0 positions, 1.5 decoders
-// predicted positions and LEVL code 2 but not polygon coding 7 (spec 11).
-constexpr int kNewestMinor = 6, kOldestTargetMinor = 4;
+// predicted positions (method 1) and LEVL code 2 but not polygon coding 7,
+// 1.6 decoders that but not POSN method 3 (spec 11).
+constexpr int kNewestMinor = 7, kOldestTargetMinor = 4;
 
 struct EncodeArgs {
   std::string input, output;
@@ -209,6 +212,8 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
 // error naming the option that needs a newer version.
 int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   EncodeOptions& o = args->options;
+  if (args->newest_minor >= 7) return -1;
+  o.graded_class_start = false;
   if (args->newest_minor >= 6) return -1;
   if (o.polygon_coding == kPolygonContextCoded) return usage_error("encode", "polygon coding 7 needs --format 1.6");
   o.polygon_context_coding = false;
@@ -245,7 +250,7 @@ int parse(int argc, char** argv, EncodeArgs* args) {
     if (name == "--format") {
       if (value.size() != 3 || value.compare(0, 2, "1.") != 0 || value[2] < '0' + kOldestTargetMinor ||
           value[2] > '0' + kNewestMinor)
-        return usage_error("encode", "--format takes 1.4, 1.5 or 1.6, got '" + value + "'");
+        return usage_error("encode", "--format takes 1.4, 1.5, 1.6 or 1.7, got '" + value + "'");
       args->newest_minor = value[2] - '0';
       continue;
     }
@@ -362,11 +367,13 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
   const PositionStats& ps = stats.positions;
   std::printf("positions   %s, %s grid, step %.6g%s; bound %.6g, max error %.6g (%.3g of largest bbox side), "
               "rms %.6g\n",
-              ps.method == 1 ? "predicted (spec 14)" : "deltas (spec 6)",
+              ps.method == 3 ? "predicted (spec 14, method 3: graded start)"
+              : ps.method == 1 ? "predicted (spec 14, method 1)"
+                               : "deltas (spec 6)",
               ps.step[0] == ps.step[1] && ps.step[1] == ps.step[2] ? "uniform" : "per-axis", ps.step[0],
               ps.step[0] == ps.step[1] && ps.step[1] == ps.step[2] ? "" : " (x)", ps.error_bound, check.max_error,
               check.max_error / side, check.rms_error);
-  if (ps.method == 1) {
+  if (ps.method >= 1) {
     static const char* const kKinds[4] = {"previous vertex", "neighbour mean", "one rule", "several rules"};
     std::printf("             by prediction (spec 14.3):");
     for (int k = 0; k < 4; ++k)
@@ -402,7 +409,7 @@ void print_progressive_report(const EncodeArgs& args, const Mesh& input, const E
     if (j == 0)
       std::printf("            base  %9u %9u  %11s  %6s  %9s  %10llu     -  (CONN + POSN: %s coder, %s positions)\n",
                   l.vertices, l.faces, "-", "-", "-", static_cast<unsigned long long>(l.bytes),
-                  connectivity_method_name(stats.method), stats.positions.method == 1 ? "predicted" : "delta");
+                  connectivity_method_name(stats.method), stats.positions.method >= 1 ? "predicted" : "delta");
     else
       std::printf("            %4zu  %9u %9u  %11u  %6.2f  %9.3g  %10llu  %4u%s\n", j, l.vertices, l.faces,
                   l.edge_points, 100.0 * l.zeros / (l.edge_points ? l.edge_points : 1), l.step,
@@ -466,7 +473,7 @@ int refuse_dropping(const EncodeArgs& args, const std::vector<std::string>& note
   }
   if (ignored.empty()) return -1;
   if (!args.drop_unsupported) {
-    std::fprintf(stderr, "qmc encode: %s holds what format 1.6 cannot carry yet:\n", args.input.c_str());
+    std::fprintf(stderr, "qmc encode: %s holds what format 1.7 cannot carry yet:\n", args.input.c_str());
     for (const std::string& what : ignored) std::fprintf(stderr, "  %s\n", what.c_str());
     std::fprintf(stderr, "qmc encode: pass --drop-unsupported to encode the mesh without it\n");
     return kExitError;

@@ -48,7 +48,8 @@ void print_predicted_positions(const DecodedFile& f) {
   const QuantizationInfo& q = f.quantization;
   const bool uniform = q.step[0] == q.step[1] && q.step[1] == q.step[2];
   const double bound = 0.5 * std::sqrt(q.step[0] * q.step[0] + q.step[1] * q.step[1] + q.step[2] * q.step[2]);
-  std::printf("positions    predicted (spec 14), %s grid, step %.9g", uniform ? "uniform" : "per-axis", q.step[0]);
+  std::printf("positions    predicted (spec 14, method %d%s), %s grid, step %.9g", q.method,
+              q.method == 3 ? ": graded start" : "", uniform ? "uniform" : "per-axis", q.step[0]);
   if (!uniform) std::printf(" %.9g %.9g", q.step[1], q.step[2]);
   std::printf(", tops %u %u %u, origin (%g %g %g); error bound %.6g\n", q.top[0], q.top[1], q.top[2], q.min[0],
               q.min[1], q.min[2], bound);
@@ -59,7 +60,10 @@ void print_predicted_positions(const DecodedFile& f) {
   grid.top = q.top;
   grid.q = f.quantized;
   PositionStats stats;
-  const size_t payload = encode_predicted_positions(grid, f.mesh, &stats).size();
+  const size_t payload =
+      encode_predicted_positions(grid, f.mesh, &stats, CandidateChoice::kFewestBits,
+                                 q.method == 3 ? ClassStart::kGraded : ClassStart::kFlat)
+          .size();
   static const char* const kKinds[4] = {"previous vertex", "neighbour mean", "one rule", "several rules"};
   std::printf("             re-encoded here: %zu bytes;", payload);
   for (int k = 0; k < 4; ++k)
@@ -99,7 +103,7 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
     std::printf("positions    deltas (spec 6), %d bits/axis, box (%g %g %g) - (%g %g %g)\n", f.quantization.bits,
                 f.quantization.min[0], f.quantization.min[1], f.quantization.min[2], f.quantization.max[0],
                 f.quantization.max[1], f.quantization.max[2]);
-  if (f.quantization.method == 1) print_predicted_positions(f);
+  if (f.quantization.method >= 1) print_predicted_positions(f);
   if (!f.gim.present)
     std::printf("order        %s\n", f.order_restored ? order_description(f.order_flags).c_str()
                                                      : "coder order (no oRDR chunk)");

@@ -44,10 +44,19 @@
 
 namespace {
 
+// The vectors published up to format 1.6 were written with POSN method 1
+// where they predict positions (format 1.7's method 3 came later); they
+// stay so.
+qmc::EncodeOptions format_1_6_options() {
+  qmc::EncodeOptions options;
+  options.graded_class_start = false;
+  return options;
+}
+
 // The vectors published up to format 1.4 were written with method 0 on the
 // per-axis grid (section 6), then the encoder's only choice; they stay so.
 qmc::EncodeOptions format_1_4_options() {
-  qmc::EncodeOptions options;
+  qmc::EncodeOptions options = format_1_6_options();
   options.position_grid = qmc::PositionGrid::kPerAxis;
   options.position_method = qmc::PositionMethod::kDeltas;
   options.polygon_context_coding = false;
@@ -82,21 +91,22 @@ std::vector<uint8_t> encode(const Mesh& mesh, int bits, std::vector<std::string>
   return out;
 }
 
-// A file whose CONN payload is replaced (invalid streams on a valid file).
-class ConnReplacer {
+// A valid file with one chunk's payload replaced (the CONN chunk unless
+// told), for invalid streams.
+class ChunkReplacer {
  public:
-  explicit ConnReplacer(const std::vector<uint8_t>& file)
-      : base_(split_chunks(file)), conn_(find_chunk(base_, qmc::kChunkConnectivity)) {}
+  explicit ChunkReplacer(const std::vector<uint8_t>& file, uint32_t type = qmc::kChunkConnectivity)
+      : base_(split_chunks(file)), at_(find_chunk(base_, type)) {}
   std::vector<uint8_t> operator()(std::vector<uint8_t> payload) const {
     Chunks c = base_;
-    c[conn_].payload = std::move(payload);
+    c[at_].payload = std::move(payload);
     return join_chunks(c);
   }
-  const std::vector<uint8_t>& payload() const { return base_[conn_].payload; }
+  const std::vector<uint8_t>& payload() const { return base_[at_].payload; }
 
  private:
   Chunks base_;
-  size_t conn_;
+  size_t at_;
 };
 
 class VectorWriter {
@@ -306,7 +316,7 @@ void write_order_errors(VectorWriter* w) {
 void write_connectivity_errors(VectorWriter* w) {
   using qmc::ErrorCode;
   const Mesh tetra = qmc::tools::make_tetrahedron();
-  const ConnReplacer with_conn(encode(tetra, 12));
+  const ChunkReplacer with_conn(encode(tetra, 12));
   std::vector<uint8_t> p = with_conn.payload();
   p[0] = 9;
   w->invalid("invalid_conn_unknown_method", with_conn(p), ErrorCode::kUnsupportedFeature);
@@ -545,7 +555,7 @@ std::vector<uint8_t> quad_conn(uint64_t vertices, uint64_t faces, uint8_t flags,
 
 void write_quad_errors(VectorWriter* w) {
   using qmc::ErrorCode;
-  const ConnReplacer with_conn(encode_quads(qmc::tools::make_cube()));
+  const ChunkReplacer with_conn(encode_quads(qmc::tools::make_cube()));
   // Types are listed in stream (encoder) order; the decoder applies them last to first.
   w->invalid("invalid_quad_no_boundary_for_q5", with_conn(quad_conn(8, 2, 0, 0, {1, 5})), ErrorCode::kBadSymbol);
   w->invalid("invalid_quad_empty_loop_stack", with_conn(quad_conn(8, 2, 0, 0, {3, 1})), ErrorCode::kBadSymbol);
@@ -650,7 +660,7 @@ void pillow(qmc::BitWriter* b, int first_degree_minus_3 = 1, int type = 1,
 
 void write_polygon_errors(VectorWriter* w) {
   using qmc::ErrorCode;
-  const ConnReplacer with_conn(encode_polygons(qmc::tools::make_cube()));
+  const ChunkReplacer with_conn(encode_polygons(qmc::tools::make_cube()));
   auto ok = [](qmc::BitWriter* b) { pillow(b); };
   // The pillow itself decodes (vertex_count 8: four of the cube's vertices are used by no face).
   w->valid("polygon_pillow_plain", with_conn(polygon_conn(8, 2, 0, 0, ok)), nullptr);
@@ -1410,24 +1420,29 @@ void write_hardening_vectors(VectorWriter* w) {
   w->invalid("invalid_gim_faces_unjustified", join_chunks(c), qmc::ErrorCode::kLimitExceeded);
 }
 
+// Encodes with `options`, which must give the POSN method `method`.
+std::vector<uint8_t> encode_posn_method(const Mesh& mesh, const qmc::EncodeOptions& options, int method) {
+  std::vector<uint8_t> out;
+  qmc::EncodeStats stats;
+  if (qmc::Status s = qmc::encode(mesh, options, &out, &stats); !s.ok() || stats.positions.method != method) {
+    std::fprintf(stderr, "qmc-make-vectors: POSN method %d: %s\n", method, s.to_string().c_str());
+    std::exit(3);
+  }
+  return out;
+}
+
 // Section 14 (format 1.5): predicted positions, POSN method 1.
 std::vector<uint8_t> encode_predicted(const Mesh& mesh, int bits,
                                       qmc::ConnectivityChoice connectivity = qmc::ConnectivityChoice::kAuto,
                                       qmc::PositionGrid grid = qmc::PositionGrid::kUniform) {
-  qmc::EncodeOptions options;
+  qmc::EncodeOptions options = format_1_6_options();
   options.position_bits = bits;
   options.connectivity = connectivity;
   options.position_grid = grid;
   options.position_method = qmc::PositionMethod::kPredicted;
   options.candidate_choice = qmc::CandidateChoice::kNearest;  // the choice when these vectors were made
   options.polygon_context_coding = false;                      // format 1.5's codings
-  std::vector<uint8_t> out;
-  qmc::EncodeStats stats;
-  if (qmc::Status s = qmc::encode(mesh, options, &out, &stats); !s.ok() || stats.positions.method != 1) {
-    std::fprintf(stderr, "qmc-make-vectors: predicted positions: %s\n", s.to_string().c_str());
-    std::exit(3);
-  }
-  return out;
+  return encode_posn_method(mesh, options, 1);
 }
 
 // A random walk on a sphere: positions a predictor cannot guess exactly.
@@ -1708,7 +1723,7 @@ void write_context_coded_valid(VectorWriter* w) {
   const Mesh soup = make_random_soup(21, soup_options);
   w->valid("valid_polygon_coding7_soup", encode_polygons(soup, qmc::kPolygonContextCoded), &soup);
   // What `qmc encode` writes by default: coding 7 with predicted positions (1.6).
-  qmc::EncodeOptions options;
+  qmc::EncodeOptions options = format_1_6_options();
   options.position_method = qmc::PositionMethod::kPredicted;
   options.candidate_choice = qmc::CandidateChoice::kFewestBits;
   options.polygon_coding = qmc::kPolygonContextCoded;
@@ -1744,7 +1759,7 @@ void write_context_coded_valid(VectorWriter* w) {
 
 void write_context_coded_errors(VectorWriter* w) {
   using qmc::ErrorCode;
-  const ConnReplacer with_conn(encode_polygons(qmc::tools::make_cube()));
+  const ChunkReplacer with_conn(encode_polygons(qmc::tools::make_cube()));
   // The pillow of 5.4 (two quads on four vertices) with coding 7: Q1 applied with no loop.
   const std::vector<uint8_t> q1 = coding7_symbols(qmc::kGroupQuads, [](qmc::RangeEncoder* r, qmc::PolygonSymbolModel* m) {
     qmc::code_face_symbol(r, m, qmc::GateContext{}, 0);
@@ -1934,7 +1949,7 @@ std::vector<uint8_t> exact_values(size_t floats) {
 
 void write_attribute_valid(VectorWriter* w) {
   using namespace qmc::tools;
-  qmc::EncodeOptions options;  // what `qmc encode` wrote before normals took 15.7's coding
+  qmc::EncodeOptions options = format_1_6_options();  // what `qmc encode` wrote before normals took 15.7's coding
   options.octahedral_normals = false;
   Mesh sphere = perturbed(triangulated(make_refined_sphere(3)), 7, 0.01f);
   add_chart_texcoords(&sphere);
@@ -2025,7 +2040,7 @@ AttrFields cube_texcoord_fields(const std::vector<uint8_t>& cube) {
 void write_attribute_errors(VectorWriter* w) {
   using qmc::ErrorCode;
   using namespace qmc::tools;
-  qmc::EncodeOptions options;
+  qmc::EncodeOptions options = format_1_6_options();
   options.octahedral_normals = false;
   const std::vector<uint8_t> cube = encode_with(make_cube(), options, "cube");
   qmc::DecodedFile decoded;
@@ -2250,7 +2265,7 @@ uint32_t first_normal_prediction_u(const std::vector<uint8_t>& file) {
 void write_octahedral_normal_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   using namespace qmc::tools;
-  qmc::EncodeOptions options;  // what `qmc encode` writes
+  qmc::EncodeOptions options = format_1_6_options();  // what `qmc encode` writes
   Mesh sphere = perturbed(triangulated(make_refined_sphere(2)), 11, 0.02f);
   add_vertex_normals(&sphere);
   const std::vector<uint8_t> smooth = encode_with(sphere, options, "octahedral sphere");
@@ -2342,7 +2357,7 @@ void write_octahedral_normal_vectors(VectorWriter* w) {
 void write_face_label_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   using namespace qmc::tools;
-  qmc::EncodeOptions options;
+  qmc::EncodeOptions options = format_1_6_options();
   Mesh torus = triangulated(make_torus(10, 6));
   add_face_labels(&torus, 1, 9);
   const std::vector<uint8_t> file = encode_with(torus, options, "labels");
@@ -2478,7 +2493,7 @@ void write_face_label_vectors(VectorWriter* w) {
 void write_attribute_review_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   using namespace qmc::tools;
-  qmc::EncodeOptions options;
+  qmc::EncodeOptions options = format_1_6_options();
   options.octahedral_normals = false;
   const std::vector<uint8_t> cube = encode_with(make_cube(), options, "cube");
   const AttrFields f = cube_texcoord_fields(cube);
@@ -2490,7 +2505,7 @@ void write_attribute_review_vectors(VectorWriter* w) {
 
   Mesh sphere = perturbed(triangulated(make_refined_sphere(2)), 11, 0.02f);
   add_vertex_normals(&sphere);
-  const std::vector<uint8_t> smooth = encode_with(sphere, qmc::EncodeOptions{}, "octahedral sphere");
+  const std::vector<uint8_t> smooth = encode_with(sphere, format_1_6_options(), "octahedral sphere");
   Chunks c = split_chunks(smooth);
   const size_t at = find_chunk(c, qmc::kChunkAttribute);
   const size_t bits_at = attr_field_offsets(c[at].payload).after_coding;
@@ -2513,6 +2528,59 @@ void write_attribute_review_vectors(VectorWriter* w) {
   p.push_back(2);
   p.insert(p.end(), stream.begin(), stream.end());
   w->valid("valid_attr_octahedral_residual_half_the_grid", join_chunks(c), nullptr);
+}
+
+// Section 14.4.1 (format 1.7): POSN method 3, method 1 with the class
+// probabilities started graded by bucket, what `qmc encode` writes.
+std::vector<uint8_t> encode_posn3(const Mesh& mesh, int bits, qmc::PositionGrid grid = qmc::PositionGrid::kUniform) {
+  qmc::EncodeOptions options;
+  options.position_bits = bits;
+  options.position_grid = grid;
+  options.position_method = qmc::PositionMethod::kPredicted;
+  options.candidate_choice = qmc::CandidateChoice::kFewestBits;
+  options.polygon_context_coding = true;
+  options.graded_class_start = true;
+  return encode_posn_method(mesh, options, 3);
+}
+
+void write_posn3_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  // Quads (polygon runs), triangles at 12 and 20 bits (classes far below and
+  // above each bucket: both ends of the table), a soup (every prediction
+  // kind, 14.3.2) and the per-axis grid.
+  const Mesh quads = perturbed(qmc::tools::make_torus(16, 10), 3, 0.005f);
+  w->valid("valid_posn3_quad_torus", encode_posn3(quads, 14), &quads);
+  const Mesh sphere = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(2)), 5, 0.01f);
+  w->valid("valid_posn3_sphere_12_bits", encode_posn3(sphere, 12), &sphere);
+  w->valid("valid_posn3_sphere_20_bits", encode_posn3(sphere, 20), &sphere);
+  qmc::tools::RandomSoupOptions soup_options;
+  soup_options.vertices = 150;
+  soup_options.faces = 120;
+  soup_options.unreferenced = 6;
+  const Mesh soup = qmc::tools::make_random_soup(31, soup_options);
+  w->valid("valid_posn3_soup", encode_posn3(soup, 10), &soup);
+  w->valid("valid_posn3_per_axis_grid", encode_posn3(quads, 12, qmc::PositionGrid::kPerAxis), &quads);
+  // 15.4: an aTTR's values start every probability at 1024 whatever POSN's method.
+  Mesh textured = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(2)), 9, 0.01f);
+  qmc::tools::add_chart_texcoords(&textured);
+  w->valid("valid_posn3_with_texcoords", encode_posn3(textured, 12), &textured);
+
+  // The rules of 14.1 and 14.4 on method 3's path.
+  const ChunkReplacer with_posn(encode_posn3(sphere, 12), qmc::kChunkPositions);
+  const std::vector<uint8_t> payload = with_posn.payload();
+  w->invalid("invalid_posn3_truncated_stream", with_posn({payload.begin(), payload.end() - 8}), ErrorCode::kTruncated);
+  std::vector<uint8_t> p = payload;
+  p.insert(p.end(), {0x55, 0x55, 0x55, 0x55, 0x55, 0x55});
+  w->invalid("invalid_posn3_bytes_after_stream", with_posn(p), ErrorCode::kBadChunkPayload);
+  // Tops of 1: a residual the grid cannot hold (header as 14.1: varint V,
+  // 0x83, grid, origin 12 bytes, step 8, three tops of 2 bytes at 12 bits).
+  std::vector<uint8_t> count;
+  qmc::put_varint(&count, sphere.vertex_count());
+  const size_t tops = count.size() + 2 + 12 + 8, stream = tops + 6;
+  p = {payload.begin(), payload.begin() + tops};
+  for (int a = 0; a < 3; ++a) qmc::put_varint(&p, 1);
+  p.insert(p.end(), payload.begin() + stream, payload.end());
+  w->invalid("invalid_posn3_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
 }
 
 int main(int argc, char** argv) {
@@ -2546,6 +2614,7 @@ int main(int argc, char** argv) {
   write_octahedral_normal_vectors(&w);
   write_face_label_vectors(&w);
   write_attribute_review_vectors(&w);
+  write_posn3_vectors(&w);
   w.finish();
   return 0;
 }

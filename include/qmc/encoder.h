@@ -93,6 +93,10 @@ struct EncodeOptions {
   // Z-order curve, so that each is predicted from a near one (5.4.9); false
   // keeps them in input order, as the encoder did before.
   bool unused_vertices_along_curve = true;
+  // Predicted positions of meshes under 1,000 vertices as POSN method 3
+  // (format 1.7, spec 14.4.1): the class probabilities start graded, 6-11 %
+  // smaller there; false writes method 1, which 1.5 and 1.6 decoders read.
+  bool graded_class_start = true;
   std::vector<std::string> texts;            // written as teXt chunks ("key=value")
   // Write an oRDR chunk (section 4.5) so that the decoder restores the
   // input's order of vertices, faces and corners exactly; nothing is
@@ -179,11 +183,11 @@ struct GimEncodeStats {
 
 // Sections 6 and 14: how the positions were coded.
 struct PositionStats {
-  int method = 0;                  // POSN method
+  int method = 0;                  // POSN method: 0 deltas, 1 or 3 predicted
   std::array<double, 3> step{};    // the grid's step per axis
   std::array<uint32_t, 3> top{};   // the largest grid coordinate per axis
   double error_bound = 0;          // Euclidean bound of the rounding: |step| / 2
-  // Method 1: vertices and information content (bits, -log2 of the coded
+  // Methods 1, 3: vertices and information content (bits, -log2 of the coded
   // decisions' probabilities) by prediction kind (section 14.3.2).
   std::array<uint32_t, 4> vertices_by_kind{};
   std::array<double, 4> bits_by_kind{};

@@ -21,7 +21,7 @@ namespace {
 Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadChunkPayload, "POSN: " + message); }
 
 // Section 14.1: the byte after vertex_count selects the method.
-constexpr uint8_t kPredictedSelector = 0x81;
+constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (14.1)
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
   for (int a = 0; a < 3; ++a)
@@ -71,13 +71,13 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
   if (count != vertex_count)
     return bad_payload("vertex_count " + std::to_string(count) + " differs from CONN's " +
                        std::to_string(vertex_count));
-  if (selector == kPredictedSelector) {
-    info->method = 1;
+  if (selector == kPredictedSelector || selector == kGradedSelector) {
+    info->method = selector - 0x80;
     return read_grid(in, info);
   }
   if (selector >= 0x80)
     return Status(ErrorCode::kUnsupportedFeature, "POSN: method " + std::to_string(selector - 0x80) +
-                                                      " is not defined (section 14.1 knows 0 and 1)");
+                                                      " is not defined (section 14.1 knows 0, 1 and 3)");
   if (selector < 1 || selector > 30) return bad_payload("quantization bits " + std::to_string(selector) + " outside 1..30");
   info->method = 0;
   info->bits = selector;
@@ -154,7 +154,8 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
 // Section 14: each vertex in label order, predicted from the decoded ones
 // (14.3), its decisions range coded (14.4).
 Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& faces, uint32_t count,
-                             const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized) {
+                             const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
+                             ClassStart start) {
   if (!range_stream_justifies(count, size))  // section 14.1
     return Status(ErrorCode::kLimitExceeded, names.chunk + ": " + std::to_string(count) + " " + names.items +
                                                  " for " + std::to_string(size) +
@@ -163,7 +164,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   VertexCorners corners;
   corners.build(count, faces.face_sizes, faces.corners);
   std::vector<int32_t> residual(3 * size_t(count));
-  std::vector<PositionResidualModel> model(1, PositionResidualModel(top));
+  std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start));
   RangeDecoder rc(stream, size);
   if (rc.bad_start())
     return Status(ErrorCode::kBadChunkPayload,
@@ -195,10 +196,10 @@ Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, 
   if (Status s = read_header(&in, vertex_count, info); !s.ok()) return s;
   quantized->clear();
   positions->clear();
-  if (info->method == 1) {
+  if (info->method >= 1) {
     const PredictedGridNames names{"POSN", "vertex", "vertices", "axis"};
     if (Status s = decode_predicted_grid(in.cursor(), in.remaining(), faces, vertex_count, info->top.data(), names,
-                                         quantized);
+                                         quantized, info->method == 3 ? ClassStart::kGraded : ClassStart::kFlat);
         !s.ok())
       return s;
   } else {

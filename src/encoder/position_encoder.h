@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "bitio/position_coding.h"
 #include "qmc/encoder.h"
 #include "qmc/mesh.h"
 #include "qmc/status.h"
@@ -39,17 +40,22 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions);
 // the range-coded stream of POSN method 1 or of an aTTR's values (15.4).
 // The caller checks 14.1's bound on the stream's length.
 std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const uint32_t top[3], const Mesh& faces,
-                                           PositionStats* stats, CandidateChoice choice);
+                                           PositionStats* stats, CandidateChoice choice,
+                                           ClassStart start = ClassStart::kFlat);
 
-// Method 1 (section 14) over the file's faces; stats may be null. Empty
-// when the vertices cost too little for 14.1's bound (all on one point).
+// Method 1, or 2 with the graded start (section 14), over the file's faces;
+// stats may be null. Empty when the vertices cost too little for 14.1's
+// bound (all on one point).
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
                                                 PositionStats* stats,
-                                                CandidateChoice choice = CandidateChoice::kFewestBits);
+                                                CandidateChoice choice = CandidateChoice::kFewestBits,
+                                                ClassStart start = ClassStart::kFlat);
 
-// The POSN payload the options ask for: method 1, method 0, or the smaller
-// of the two when both can carry the grid. Fills stats.
+// The POSN payload the options ask for: method 3 (`start` graded, under
+// 1,000 vertices) or 1, method 0, or the smaller of the two when both can
+// carry the grid. Fills stats.
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces,
-                                      PositionMethod method, CandidateChoice choice, PositionStats* stats);
+                                      PositionMethod method, CandidateChoice choice, ClassStart start,
+                                      PositionStats* stats);
 
 }  // namespace qmc
