@@ -288,8 +288,8 @@ Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_
   if (Status s = choose_connectivity(mesh, options, &conn, &st); !s.ok()) return s;
   QuantizedPositions quantized;
   if (Status s = quantize_positions(conn.mesh.positions, options, &quantized); !s.ok()) return s;
-  const std::vector<uint8_t> positions = encode_positions(quantized, conn.mesh, options.position_method, options.candidate_choice,
-                       options.graded_class_start ? ClassStart::kGraded : ClassStart::kFlat, &st.positions);
+  const std::vector<uint8_t> positions = encode_positions(quantized, conn.mesh, options.position_method,
+                                                          options.candidate_choice, class_start(options), &st.positions);
 
   out->clear();
   write_signature(out);

@@ -175,8 +175,8 @@ Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& 
   const QuantizedPositions quantized =
       quantize_positions(std::vector<float>(base_positions.begin(), base_positions.end()), options.position_bits);
   const std::vector<uint8_t> positions_payload =
-      encode_positions(quantized, conn.mesh, options.position_method, options.candidate_choice,
-                       options.graded_class_start ? ClassStart::kGraded : ClassStart::kFlat, &st->positions);
+      encode_positions(quantized, conn.mesh, options.position_method, options.candidate_choice, class_start(options),
+                       &st->positions);
   LoopMesh current;
   current.triangles = conn.mesh.corners;
   loop_base_positions(info_of(quantized), quantized.q, &current);
@@ -210,8 +210,7 @@ Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& 
   // The lowest minor version that defines everything in the file (4.1).
   out->clear();
   write_signature(out);
-  const uint8_t minor = std::max<uint8_t>(minor_version_for(conn, st->positions.method == 3 ? 3 : 0),
-                                          format_1_5 ? 5 : 3);
+  const uint8_t minor = std::max<uint8_t>(minor_version_for(conn, st->positions.method), format_1_5 ? 5 : 3);
   add_chunk(out, st, kChunkHeader, {kFormatMajor, minor});
   for (const std::string& text : options.texts)
     add_chunk(out, st, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));

@@ -43,13 +43,18 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
                                            PositionStats* stats, CandidateChoice choice,
                                            ClassStart start = ClassStart::kFlat);
 
-// Method 1, or 2 with the graded start (section 14), over the file's faces;
+// Method 1, or 3 with the graded start (section 14), over the file's faces;
 // stats may be null. Empty when the vertices cost too little for 14.1's
 // bound (all on one point).
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
                                                 PositionStats* stats,
                                                 CandidateChoice choice = CandidateChoice::kFewestBits,
                                                 ClassStart start = ClassStart::kFlat);
+
+// 14.4.1's start when the options ask for POSN method 3.
+inline ClassStart class_start(const EncodeOptions& options) {
+  return options.graded_class_start ? ClassStart::kGraded : ClassStart::kFlat;
+}
 
 // The POSN payload the options ask for: method 3 (`start` graded, under
 // 1,000 vertices) or 1, method 0, or the smaller of the two when both can
