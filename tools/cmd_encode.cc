@@ -14,6 +14,7 @@
 #include "mesh_generators.h"
 #include "qmc/decoder.h"
 #include "qmc/encoder.h"
+#include "progressive_rate.h"
 #include "roundtrip_check.h"
 
 namespace qmc::cli {
@@ -60,6 +61,18 @@ const char kHelp[] =
     "                      mesh has about 1/4^K of the input's triangles; keep\n"
     "                      it at a few hundred vertices or more (K = 2..3 on\n"
     "                      meshes of 10k-70k triangles)\n"
+    "  --finest-step-scale F  of --progressive, 1..64 (default 1): the finest\n"
+    "                      level's displacement step is the least-error step\n"
+    "                      times F, the level below's times sqrt(F): fewer\n"
+    "                      bytes, more error (spec 12.10)\n"
+    "  --target-error E    of --progressive: the smallest file whose finest level\n"
+    "                      is within relative L2 E of the input (L2 / bounding-box\n"
+    "                      diagonal, as qmc compare reports it): tries K, base\n"
+    "                      bits 10..13 and step scales 1, 2, 4, 8 (each one\n"
+    "                      that --levels, --bits or --finest-step-scale does not\n"
+    "                      fix), decodes and measures each; prints what it tried\n"
+    "  --max-bytes N       of --progressive: the file of least error within N\n"
+    "                      bytes, searched as for --target-error\n"
     "  --gim N             write a geometry image (spec 13, seeds 000 and 002)\n"
     "                      instead: the surface cut into a disk, laid on an\n"
     "                      N x N pixel grid by Floater's mean-value coordinates\n"
@@ -114,6 +127,10 @@ struct EncodeArgs {
   std::vector<std::string> drop;  // --drop NAME: attributes left out (spec 15)
   std::string roi_path;
   int newest_minor = kNewestMinor;  // --format 1.N: no feature newer than 1.N (spec 11)
+  // Rate control of --progressive (--target-error, --max-bytes), and which
+  // of its parameters the user fixed.
+  tools::RateTarget rate;
+  bool levels_given = false, bits_given = false, step_scale_given = false;
 };
 
 const CommandSpec kSpec{"encode",
@@ -122,7 +139,8 @@ const CommandSpec kSpec{"encode",
                          "--gim-float", "--gim-quads", "--gim-store-blank", "--gim-normals", "--exact-attributes"},
                         {{"--bits", "-q"}, {"--text"}, {"--connectivity"}, {"--levels"}, {"--gim"}, {"--sampling"},
                          {"--roi"}, {"--grid"}, {"--step"}, {"--max-error"}, {"--positions"}, {"--format"},
-                         {"--uv-bits"}, {"--normal-bits"}, {"--color-bits"}, {"--drop"}},
+                         {"--uv-bits"}, {"--normal-bits"}, {"--color-bits"}, {"--drop"},
+                         {"--finest-step-scale"}, {"--target-error"}, {"--max-bytes"}},
                         2,
                         2};
 
@@ -230,6 +248,30 @@ int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   return -1;
 }
 
+// --finest-step-scale, --target-error, --max-bytes (spec 12.10); -1 when valid.
+int parse_rate_option(const std::string& name, const std::string& value, EncodeArgs* args) {
+  if (!args->progressive) return usage_error("encode", name + " needs --progressive");
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(value.c_str(), &end);
+  const bool number = !value.empty() && end && *end == 0 && errno == 0 && std::isfinite(v);
+  if (name == "--finest-step-scale") {
+    if (!number || v < 1 || v > 64) return usage_error("encode", "--finest-step-scale takes a number from 1 to 64, got '" + value + "'");
+    args->options.finest_step_scale = v;
+    args->step_scale_given = true;
+  } else if (name == "--target-error") {
+    if (!number || !(v > 0) || v >= 1)
+      return usage_error("encode", "--target-error takes a relative L2 error above 0 and below 1 (e.g. 1e-4), got '" + value + "'");
+    args->rate.max_relative_l2 = v;
+  } else {
+    long n = 0;
+    if (!parse_int(value, 1, 2147483647, &n))
+      return usage_error("encode", "--max-bytes takes a whole number of bytes from 1, got '" + value + "'");
+    args->rate.max_bytes = uint64_t(n);
+  }
+  return -1;
+}
+
 int parse(int argc, char** argv, EncodeArgs* args) {
   CommandLine cl;
   if (int rc = parse_command_line(kSpec, argc, argv, &cl); rc >= 0) return rc;
@@ -260,6 +302,11 @@ int parse(int argc, char** argv, EncodeArgs* args) {
       if (!parse_int(value, 1, 8, &levels))
         return usage_error("encode", "--levels takes a whole number from 1 to 8, got '" + value + "'");
       args->options.progressive_levels = int(levels);
+      args->levels_given = true;
+      continue;
+    }
+    if (name == "--finest-step-scale" || name == "--target-error" || name == "--max-bytes") {
+      if (int rc = parse_rate_option(name, value, args); rc >= 0) return rc;
       continue;
     }
     if (name == "--text") {
@@ -292,7 +339,10 @@ int parse(int argc, char** argv, EncodeArgs* args) {
     if (!parse_int(value, kMinPositionBits, kMaxPositionBits, &bits))
       return usage_error("encode", "--bits takes a whole number from 1 to 30, got '" + value + "'");
     args->options.position_bits = int(bits);
+    args->bits_given = true;
   }
+  if (args->rate.max_relative_l2 > 0 && args->rate.max_bytes > 0)
+    return usage_error("encode", "--target-error and --max-bytes exclude each other");
   return limit_to_format(cl, args);
 }
 
@@ -521,11 +571,65 @@ int drop_attributes(const EncodeArgs& args, Mesh* mesh) {
   return -1;
 }
 
+// What the rate control tried, one line per candidate (spec 12.10).
+void print_rate_curve(const tools::RateTarget& target, const tools::RateChoice& choice) {
+  if (target.max_bytes > 0)
+    std::printf("rate        the least error within %llu bytes; tried:\n", static_cast<unsigned long long>(target.max_bytes));
+  else
+    std::printf("rate        the smallest file within relative L2 %.3g; tried:\n", target.max_relative_l2);
+  std::printf("            K  base bits  finest step scale       bytes  L2 / diagonal\n");
+  size_t unmeasured = 0;
+  for (size_t i = 0; i < choice.tried.size(); ++i) {
+    const tools::RatePoint& p = choice.tried[i];
+    if (!p.failure.empty())
+      std::printf("            %d  cannot be coded: %s\n", p.levels, p.failure.c_str());
+    else if (p.relative_l2 < 0)
+      ++unmeasured;
+    else
+      std::printf("            %d  %9d  %17.3g  %10llu  %.4g%s\n", p.levels, p.position_bits, p.step_scale,
+                  static_cast<unsigned long long>(p.bytes), p.relative_l2, int(i) == choice.chosen ? "  <- chosen" : "");
+  }
+  if (unmeasured)
+    std::printf("            and %zu more coded but not measured: %s\n", unmeasured,
+                target.max_bytes > 0 ? "larger than the limit" : "not smaller than the best");
+}
+
+// The search space: what --levels, --bits and --finest-step-scale fix stays fixed.
+tools::RateSearch rate_search_of(const EncodeArgs& args, const Mesh& mesh) {
+  tools::RateSearch search = tools::default_rate_search(mesh);
+  if (args.levels_given) search.levels = {args.options.progressive_levels};
+  if (args.bits_given) search.position_bits = {args.options.position_bits};
+  if (args.step_scale_given) search.step_scales = {args.options.finest_step_scale};
+  return search;
+}
+
+int encode_progressive_to_target(const EncodeArgs& args, const Mesh& mesh, uint64_t input_bytes) {
+  Progress progress(true);
+  tools::RateChoice choice;
+  const Status s = tools::choose_progressive(mesh, args.options, args.rate, rate_search_of(args, mesh),
+                                             [&](const std::string& what) { progress.stage("progressive: " + what); },
+                                             &choice);
+  progress.done();
+  if (!s.ok()) return fail("encode", s);
+  if (!args.quiet) print_rate_curve(args.rate, choice);
+  if (choice.chosen < 0)
+    return fail("encode", Status(ErrorCode::kInvalidArgument,
+                                 args.rate.max_bytes > 0 ? "no candidate fits in " + std::to_string(args.rate.max_bytes) +
+                                                               " bytes (the list above); nothing written"
+                                                         : "no candidate reaches the target error (the list above): "
+                                                           "allow more levels or bits, or a larger error; nothing written"));
+  if (int refused = refuse_newer_format(args, choice.bytes); refused >= 0) return refused;
+  if (Status w = write_file(args.output, choice.bytes); !w.ok()) return fail("encode", w);
+  if (!args.quiet) print_progressive_report(args, mesh, choice.stats, choice.distance, input_bytes);
+  return kExitOk;
+}
+
 int encode_progressive(EncodeArgs& args, Mesh mesh, uint64_t input_bytes) {
   size_t split = 0;
   mesh = tools::triangulated(mesh, &split);
   if (split && !args.quiet)
     std::printf("triangulated %zu polygons (fan from their first corner): --progressive takes triangles\n", split);
+  if (args.rate.max_relative_l2 > 0 || args.rate.max_bytes > 0) return encode_progressive_to_target(args, mesh, input_bytes);
   RemeshResult result;
   if (Status s = encode_remesh(args, mesh, mesh, "progressive: ", &result); !s.ok()) return fail("encode", s);
   const std::vector<uint8_t>& bytes = result.bytes;

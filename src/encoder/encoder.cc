@@ -42,30 +42,12 @@ Status validate_attributes(const Mesh& mesh, const EncodeOptions& options) {
   return Status::Ok();
 }
 
-Status validate(const Mesh& mesh, const EncodeOptions& options) {
+}  // namespace
+
+Status validate_options(const EncodeOptions& options) {
   if (options.position_bits < kMinPositionBits || options.position_bits > kMaxPositionBits)
     return invalid("position bits must be in " + std::to_string(kMinPositionBits) + ".." +
                    std::to_string(kMaxPositionBits) + ", got " + std::to_string(options.position_bits));
-  if (mesh.positions.size() % 3 != 0) return invalid("positions are not a multiple of 3 floats");
-  if (mesh.vertex_count() > UINT32_MAX || mesh.face_count() > UINT32_MAX)
-    return invalid("more than 2^32 - 1 vertices or faces");
-  for (size_t i = 0; i < mesh.positions.size(); ++i)
-    if (!std::isfinite(mesh.positions[i]))
-      return invalid("vertex " + std::to_string(i / 3) + " has a non-finite coordinate");
-  uint64_t total = 0;
-  for (size_t f = 0; f < mesh.face_sizes.size(); ++f) {
-    if (mesh.face_sizes[f] < 3)
-      return invalid("face " + std::to_string(f) + " has " + std::to_string(mesh.face_sizes[f]) +
-                     " corners; a face needs at least 3");
-    total += mesh.face_sizes[f];
-  }
-  if (total != mesh.corners.size())
-    return invalid("face sizes add up to " + std::to_string(total) + " corners but " +
-                   std::to_string(mesh.corners.size()) + " are given");
-  for (size_t k = 0; k < mesh.corners.size(); ++k)
-    if (mesh.corners[k] >= mesh.vertex_count())
-      return invalid("corner " + std::to_string(k) + " names vertex " + std::to_string(mesh.corners[k]) +
-                     " of " + std::to_string(mesh.vertex_count()));
   for (const std::string& text : options.texts)
     if (text.size() > kMaxChunkLength) return invalid("text too long for one chunk");
   if (options.polygon_coding < -1 || options.polygon_coding >= kPolygonCodingCount)
@@ -91,6 +73,35 @@ Status validate(const Mesh& mesh, const EncodeOptions& options) {
     return invalid("a progressive file's base takes section 6.1's grid of position_bits: no step or max error");
   if (options.quad_coding < -1 || options.quad_coding >= kQuadCodingCount)
     return invalid("quad coding must be -1 (smallest) or 0.." + std::to_string(kQuadCodingCount - 1));
+  if (!(options.finest_step_scale >= 1 && options.finest_step_scale <= 64))
+    return invalid("the finest level's step scale must be in 1..64 (12.10)");
+  return Status::Ok();
+}
+
+namespace {
+
+Status validate(const Mesh& mesh, const EncodeOptions& options) {
+  if (Status s = validate_options(options); !s.ok()) return s;
+  if (mesh.positions.size() % 3 != 0) return invalid("positions are not a multiple of 3 floats");
+  if (mesh.vertex_count() > UINT32_MAX || mesh.face_count() > UINT32_MAX)
+    return invalid("more than 2^32 - 1 vertices or faces");
+  for (size_t i = 0; i < mesh.positions.size(); ++i)
+    if (!std::isfinite(mesh.positions[i]))
+      return invalid("vertex " + std::to_string(i / 3) + " has a non-finite coordinate");
+  uint64_t total = 0;
+  for (size_t f = 0; f < mesh.face_sizes.size(); ++f) {
+    if (mesh.face_sizes[f] < 3)
+      return invalid("face " + std::to_string(f) + " has " + std::to_string(mesh.face_sizes[f]) +
+                     " corners; a face needs at least 3");
+    total += mesh.face_sizes[f];
+  }
+  if (total != mesh.corners.size())
+    return invalid("face sizes add up to " + std::to_string(total) + " corners but " +
+                   std::to_string(mesh.corners.size()) + " are given");
+  for (size_t k = 0; k < mesh.corners.size(); ++k)
+    if (mesh.corners[k] >= mesh.vertex_count())
+      return invalid("corner " + std::to_string(k) + " names vertex " + std::to_string(mesh.corners[k]) +
+                     " of " + std::to_string(mesh.vertex_count()));
   return validate_attributes(mesh, options);
 }
 

@@ -19,6 +19,9 @@ struct FileConnectivity {
   int polygon_coding = -1;  // method 2's coding (5.4.4)
 };
 
+// The checks of encode() that concern the options alone.
+Status validate_options(const EncodeOptions& options);
+
 // Section 5.1: the quad coder where it applies (kAuto), else the polygon
 // coder, else the indexed coding, as `options.connectivity` asks.
 Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileConnectivity* conn, EncodeStats* st);

@@ -7,6 +7,7 @@
 #include "encoder/loop_encoder.h"
 
 #include <chrono>
+#include <memory>
 #include <string>
 
 #include "decoder/loop_level_decoder.h"
@@ -89,15 +90,32 @@ void pipeline_targets(const std::vector<LoopMesh>& control, const TriangleBvh& s
 
 }  // namespace
 
-Status encode_loop_levels(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* out,
-                          EncodeStats* st) {
-  LoopEncodeStats& ls = st->loop;
+// What prepare() computes: the base connectivity in CONN's order, the
+// control meshes of steps III-VI, and the input surface for the finest
+// level's targets.
+struct ProgressiveEncoder::Prepared {
+  int levels = 0;
+  FileConnectivity conn;
+  std::vector<LoopMesh> control;
+  std::unique_ptr<TriangleBvh> surface;
+  EncodeStats stats;  // the base connectivity's and the pipeline's
+};
+
+ProgressiveEncoder::ProgressiveEncoder() = default;
+ProgressiveEncoder::~ProgressiveEncoder() = default;
+
+Status ProgressiveEncoder::prepare(const Mesh& mesh, const EncodeOptions& options) {
+  prepared_.reset();
+  auto p = std::make_unique<Prepared>();
+  if (Status s = validate_options(options); !s.ok()) return s;
+  if (options.progressive_levels < 1) return Status(ErrorCode::kInvalidArgument, "progressive levels must be 1..8");
+  LoopEncodeStats& ls = p->stats.loop;
   LoopMesh original;
   if (Status s = input_as_loop_mesh(mesh, &original); !s.ok()) return s;
-  const int levels = options.progressive_levels;
+  p->levels = options.progressive_levels;
   ls.input_vertices = uint32_t(mesh.vertex_count());
   ls.input_faces = uint32_t(mesh.face_count());
-  ls.target_base_faces = uint32_t(std::max<uint64_t>(4, mesh.face_count() >> (2 * levels)));
+  ls.target_base_faces = uint32_t(std::max<uint64_t>(4, mesh.face_count() >> (2 * p->levels)));
 
   // II. Simplification.
   report(options, "simplify", 0);
@@ -109,36 +127,56 @@ Status encode_loop_levels(const Mesh& mesh, const EncodeOptions& options, std::v
   ls.seconds_simplify = seconds_since(start);
 
   // The base connectivity first: everything after works in CONN's order.
-  FileConnectivity conn;
   LoopMesh base;
-  if (Status s = base_in_file_order(simplified, options, &conn, st, &base); !s.ok()) return s;
+  if (Status s = base_in_file_order(simplified, options, &p->conn, &p->stats, &base); !s.ok()) return s;
 
   // III. Adjustment; IV-VI. subdivision, displacement, inverse Loop.
   report(options, "fit", 0.3);
   start = Clock::now();
-  const TriangleBvh surface(loop_mesh_triangles(original));
+  p->surface = std::make_unique<TriangleBvh>(loop_mesh_triangles(original));
   FitStats fit_stats;
-  if (Status s = fit_control_mesh(surface, &base, 10, &fit_stats); !s.ok()) return s;
+  if (Status s = fit_control_mesh(*p->surface, &base, 10, &fit_stats); !s.ok()) return s;
   ls.seconds_fit = seconds_since(start);
   report(options, "remesh", 0.5);
   start = Clock::now();
-  std::vector<LoopMesh> control;
   RemeshStats remesh_stats;
-  if (Status s = remesh(original, surface, base, levels, &control, &remesh_stats); !s.ok()) return s;
+  if (Status s = remesh(original, *p->surface, base, p->levels, &p->control, &remesh_stats); !s.ok()) return s;
   ls.seconds_remesh = seconds_since(start);
+  prepared_ = std::move(p);
+  return Status::Ok();
+}
 
-  // VII. The base positions, then each level from the decoder's own result.
+// VII. The base positions, then each level from the decoder's own result.
+Status ProgressiveEncoder::code(const EncodeOptions& options, std::vector<uint8_t>* out, EncodeStats* stats) const {
+  if (!prepared_) return Status(ErrorCode::kInvalidArgument, "code() before a successful prepare()");
+  if (Status s = validate_options(options); !s.ok()) return s;
+  const Prepared& p = *prepared_;
+  if (options.progressive_levels != p.levels)
+    return Status(ErrorCode::kInvalidArgument, "prepared for " + std::to_string(p.levels) + " levels, asked for " +
+                                                   std::to_string(options.progressive_levels));
+  EncodeStats local;
+  EncodeStats& st = stats ? *stats : local;
+  st = p.stats;
+  LoopEncodeStats& ls = st.loop;
   report(options, "code", 0.8);
-  start = Clock::now();
-  const double reach = 0.02 * surface.bbox_diagonal();
+  const Clock::time_point start = Clock::now();
+  const double reach = 0.02 * p.surface->bbox_diagonal();
   const LevelTargets targets = [&](int j, const LoopMesh& fine, const std::vector<double>& normals,
                                    uint32_t coarse_vertices, std::vector<double>* out_targets) {
-    pipeline_targets(control, surface, reach, levels, &ls, j, fine, normals, coarse_vertices, out_targets);
+    pipeline_targets(p.control, *p.surface, reach, p.levels, &ls, j, fine, normals, coarse_vertices, out_targets);
   };
-  if (Status s = write_loop_file(conn, control[0].positions, levels, options, targets, out, st); !s.ok()) return s;
+  if (Status s = write_loop_file(p.conn, p.control[0].positions, p.levels, options, targets, out, &st); !s.ok())
+    return s;
   ls.seconds_code = seconds_since(start);
   report(options, "done", 1);
   return Status::Ok();
+}
+
+Status encode_loop_levels(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* out,
+                          EncodeStats* st) {
+  ProgressiveEncoder encoder;
+  if (Status s = encoder.prepare(mesh, options); !s.ok()) return s;
+  return encoder.code(options, out, st);
 }
 
 }  // namespace qmc

@@ -129,12 +129,18 @@ std::vector<uint8_t> range_code_stream(const std::vector<int8_t>& m, const LoopE
 
 }  // namespace
 
+double level_step_scale(const EncodeOptions& options, int level, int levels) {
+  if (level == levels) return options.finest_step_scale;
+  if (level == levels - 1) return std::sqrt(options.finest_step_scale);
+  return 1.0;
+}
+
 std::vector<uint8_t> encode_level(uint8_t level, const LoopEdges& coarse_edges, uint32_t coarse_vertices,
                                   const std::vector<double>& normals, const std::vector<double>& targets,
-                                  int code_choice, LoopMesh* fine, LevelCodeStats* stats) {
+                                  int code_choice, double step_scale, LoopMesh* fine, LevelCodeStats* stats) {
   const Projection p = project(coarse_vertices, *fine, normals, targets);
   LevelCode code;
-  code.step = choose_step(p);
+  code.step = choose_step(p) * step_scale;
   code.m.resize(p.r.size());
   *stats = LevelCodeStats{};
   stats->edge_points = uint32_t(p.r.size());
@@ -196,7 +202,8 @@ Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& 
     targets(j, fine, normals, current.vertex_count(), &level_targets);
     LevelCodeStats code_stats;
     level_payloads.push_back(encode_level(uint8_t(j), edges, current.vertex_count(), normals, level_targets,
-                                          options.displacement_code, &fine, &code_stats));
+                                          options.displacement_code, level_step_scale(options, j, levels), &fine,
+                                          &code_stats));
     if (Status s = check_level_range(fine, uint8_t(j)); !s.ok())
       return Status(ErrorCode::kInvalidArgument, "level " + std::to_string(j) + " leaves the binary32 range");
     format_1_5 = format_1_5 || code_stats.code == 2;

@@ -1,0 +1,183 @@
+// Rate control of progressive files; see progressive_rate.h.
+#include "progressive_rate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace qmc::tools {
+namespace {
+
+// One coded candidate and, once measured, its decoded mesh and distance.
+struct Candidate {
+  RatePoint point;
+  std::vector<uint8_t> bytes;
+  EncodeStats stats;
+  DecodedFile decoded;
+  MeshDistance distance;
+};
+
+Status code_candidate(const ProgressiveEncoder& encoder, EncodeOptions options, int bits, double scale,
+                      Candidate* c) {
+  options.position_bits = bits;
+  options.finest_step_scale = scale;
+  c->point = RatePoint{options.progressive_levels, bits, scale, 0, -1, {}};
+  if (Status s = encoder.code(options, &c->bytes, &c->stats); !s.ok()) return s;
+  c->point.bytes = c->bytes.size();
+  return Status::Ok();
+}
+
+Status measure(const Mesh& mesh, size_t samples, Candidate* c) {
+  if (Status s = decode(c->bytes.data(), c->bytes.size(), &c->decoded, DecoderLimits::unlimited()); !s.ok())
+    return Status(s.code(), "internal error, own output does not decode: " + s.message());
+  MeshDistanceOptions options;
+  options.samples = samples;
+  if (Status s = measure_mesh_distance(mesh, c->decoded.mesh, options, &c->distance); !s.ok()) return s;
+  c->point.relative_l2 = c->distance.relative(c->distance.l2);
+  return Status::Ok();
+}
+
+// The search state: every point tried, and the best candidate so far.
+class Search {
+ public:
+  Search(const Mesh& mesh, const RateTarget& target, size_t samples, RateChoice* out)
+      : mesh_(mesh), target_(target), samples_(samples), out_(out) {}
+
+  bool meets(const Candidate& c) const {
+    return target_.max_bytes > 0 ? c.point.bytes <= target_.max_bytes : c.point.relative_l2 <= target_.max_relative_l2;
+  }
+  // Whether `c` can still win: a smaller file (error target) or one that fits (size target).
+  bool worth_measuring(const Candidate& c) const {
+    return target_.max_bytes > 0 ? c.point.bytes <= target_.max_bytes : c.point.bytes < best_bytes_;
+  }
+  Status measure_and_keep(Candidate* c) {
+    if (Status s = measure(mesh_, samples_, c); !s.ok()) return s;
+    out_->tried.push_back(c->point);
+    if (meets(*c) && better(*c)) keep(c);
+    return Status::Ok();
+  }
+  void skip(const Candidate& c) { out_->tried.push_back(c.point); }
+  void fail(int levels, const Status& s) {
+    RatePoint p;
+    p.levels = levels;
+    p.failure = s.message();
+    out_->tried.push_back(p);
+  }
+
+ private:
+  bool better(const Candidate& c) const {
+    if (out_->chosen < 0) return true;
+    return target_.max_bytes > 0 ? c.point.relative_l2 < best_error_ : c.point.bytes < best_bytes_;
+  }
+  void keep(Candidate* c) {
+    out_->chosen = int(out_->tried.size()) - 1;
+    best_bytes_ = c->point.bytes;
+    best_error_ = c->point.relative_l2;
+    out_->bytes = std::move(c->bytes);
+    out_->stats = std::move(c->stats);
+    out_->decoded = std::move(c->decoded);
+    out_->distance = c->distance;
+  }
+
+  const Mesh& mesh_;
+  const RateTarget& target_;
+  size_t samples_;
+  RateChoice* out_;
+  uint64_t best_bytes_ = std::numeric_limits<uint64_t>::max();
+  double best_error_ = std::numeric_limits<double>::infinity();
+};
+
+// Error target, one K: the most accurate candidate decides whether K can
+// reach the error; then per bits the largest scale that meets it.
+Status search_error(const ProgressiveEncoder& encoder, const EncodeOptions& options, const RateSearch& s,
+                    Search* search) {
+  const int top_bits = s.position_bits.back();
+  const double finest = s.step_scales.front();
+  Candidate top;
+  if (Status st = code_candidate(encoder, options, top_bits, finest, &top); !st.ok()) return st;
+  if (Status st = search->measure_and_keep(&top); !st.ok()) return st;
+  if (!search->meets(top)) return Status::Ok();
+  for (int bits : s.position_bits) {
+    for (auto scale = s.step_scales.rbegin(); scale != s.step_scales.rend(); ++scale) {
+      if (bits == top_bits && *scale == finest) break;
+      Candidate c;
+      if (Status st = code_candidate(encoder, options, bits, *scale, &c); !st.ok()) return st;
+      if (!search->worth_measuring(c)) {
+        search->skip(c);
+        break;  // smaller scales only make larger files
+      }
+      if (Status st = search->measure_and_keep(&c); !st.ok()) return st;
+      if (search->meets(c)) break;
+    }
+  }
+  return Status::Ok();
+}
+
+// Size target, one K: per bits the smallest scale whose file fits.
+Status search_size(const ProgressiveEncoder& encoder, const EncodeOptions& options, const RateSearch& s,
+                   Search* search) {
+  for (int bits : s.position_bits) {
+    for (double scale : s.step_scales) {
+      Candidate c;
+      if (Status st = code_candidate(encoder, options, bits, scale, &c); !st.ok()) return st;
+      if (!search->worth_measuring(c)) {
+        search->skip(c);
+        continue;
+      }
+      if (Status st = search->measure_and_keep(&c); !st.ok()) return st;
+      break;
+    }
+  }
+  return Status::Ok();
+}
+
+RateSearch filled(RateSearch s, const EncodeOptions& options) {
+  if (s.levels.empty()) s.levels = {options.progressive_levels};
+  if (s.position_bits.empty()) s.position_bits = {options.position_bits};
+  if (s.step_scales.empty()) s.step_scales = {options.finest_step_scale};
+  std::sort(s.position_bits.begin(), s.position_bits.end());
+  std::sort(s.step_scales.begin(), s.step_scales.end());
+  return s;
+}
+
+}  // namespace
+
+RateSearch default_rate_search(const Mesh& mesh) {
+  RateSearch s;
+  for (int k = 1; k <= 6 && (mesh.face_count() >> (2 * k)) >= 64; ++k) s.levels.push_back(k);
+  if (s.levels.empty()) s.levels = {1};
+  s.position_bits = {10, 11, 12, 13};
+  s.step_scales = {1, 2, 4, 8};
+  return s;
+}
+
+Status choose_progressive(const Mesh& mesh, const EncodeOptions& options, const RateTarget& target,
+                          const RateSearch& search, const std::function<void(const std::string&)>& stage,
+                          RateChoice* out) {
+  *out = RateChoice{};
+  if ((target.max_relative_l2 > 0) == (target.max_bytes > 0) || !std::isfinite(target.max_relative_l2))
+    return Status(ErrorCode::kInvalidArgument, "give either an error or a size target");
+  const RateSearch s = filled(search, options);
+  Search state(mesh, target, s.samples, out);
+  Status first_failure = Status::Ok();
+  for (int levels : s.levels) {
+    EncodeOptions o = options;
+    o.progressive_levels = levels;
+    if (stage) stage("K = " + std::to_string(levels) + ": simplify, fit, remesh");
+    ProgressiveEncoder encoder;
+    if (Status st = encoder.prepare(mesh, o); !st.ok()) {
+      state.fail(levels, st);
+      if (first_failure.ok()) first_failure = st;
+      continue;
+    }
+    if (stage) stage("K = " + std::to_string(levels) + ": code and measure");
+    const Status st = target.max_bytes > 0 ? search_size(encoder, o, s, &state) : search_error(encoder, o, s, &state);
+    if (!st.ok()) return st;
+  }
+  const bool all_failed = std::all_of(out->tried.begin(), out->tried.end(),
+                                      [](const RatePoint& p) { return !p.failure.empty(); });
+  if (all_failed && !first_failure.ok()) return first_failure;
+  return Status::Ok();
+}
+
+}  // namespace qmc::tools

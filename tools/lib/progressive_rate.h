@@ -1,0 +1,68 @@
+// Rate control of progressive files (spec 12.10, informative): the number of
+// levels K, the base mesh's position bits and the finest level's step scale
+// that give the smallest file within an error, or the most accurate file
+// within a size. Every candidate is coded, decoded and measured against the
+// input as `qmc compare` measures (mesh_distance.h), so the choice rests on
+// the error the user will see, not on an estimate.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "mesh_distance.h"
+#include "qmc/decoder.h"
+#include "qmc/encoder.h"
+
+namespace qmc::tools {
+
+// Exactly one of the two is > 0.
+struct RateTarget {
+  double max_relative_l2 = 0;  // L2 / bounding-box diagonal of the input, as qmc compare reports it
+  uint64_t max_bytes = 0;      // the whole file
+};
+
+// What the search may vary; an empty list keeps the value of the options.
+struct RateSearch {
+  std::vector<int> levels;           // K
+  std::vector<int> position_bits;    // of the base mesh
+  std::vector<double> step_scales;   // EncodeOptions::finest_step_scale, ascending
+  size_t samples = MeshDistanceOptions{}.samples;  // of each error measurement
+};
+
+// The defaults: K from 1 while the base keeps at least 64 of the input's
+// triangles (at most 6), base bits 10..13, step scales 1, 2, 4, 8.
+RateSearch default_rate_search(const Mesh& mesh);
+
+struct RatePoint {
+  int levels = 0, position_bits = 0;
+  double step_scale = 1;
+  uint64_t bytes = 0;
+  double relative_l2 = -1;  // -1: not measured (it could not beat the best so far)
+  std::string failure;      // why K could not be coded (e.g. the simplified base is not a manifold)
+};
+
+struct RateChoice {
+  std::vector<RatePoint> tried;  // in the order tried
+  int chosen = -1;               // index into tried; -1 when no candidate meets the target
+  std::vector<uint8_t> bytes;    // the chosen file
+  EncodeStats stats;
+  DecodedFile decoded;
+  MeshDistance distance;
+};
+
+// Searches `search` for `target`, starting from `options` (whose
+// progressive_levels, position_bits and finest_step_scale the search sets).
+// For an error target: per K, the most accurate candidate first (largest
+// bits, scale 1); a K that misses the target with it is dropped; then the
+// cheapest candidate meeting it. Candidates larger than the best so far are
+// not measured. For a size target: per K and bits, the smallest scale whose
+// file fits, measured; the lowest error wins. Errors of the encoder other
+// than a K that cannot be coded end the search. `stage` (may be empty) hears
+// what is being done.
+Status choose_progressive(const Mesh& mesh, const EncodeOptions& options, const RateTarget& target,
+                          const RateSearch& search, const std::function<void(const std::string&)>& stage,
+                          RateChoice* out);
+
+}  // namespace qmc::tools
