@@ -152,6 +152,8 @@ check progressive-soup-rejected 3 "$qmc" encode "$work/soup.off" "$work/x.qmc" -
 contains progressive-soup-message "$work/err" "not a manifold"
 # Rate control of --progressive (spec 12.10): the smallest file within an error,
 # the most accurate within a size, what was tried printed; nothing written on a miss.
+check progressive-default-levels 0 "$qmc" encode "$work/torus.obj" "$work/rate.qmc" --progressive
+contains progressive-default-levels-says "$work/out" "levels      1: the most whose base keeps 1,000 of the 576 triangles"
 check progressive-target-error 0 "$qmc" encode "$work/torus.obj" "$work/rate.qmc" --progressive --target-error 0.02
 contains progressive-target-error-curve "$work/out" "<- chosen"
 check progressive-max-bytes 0 "$qmc" encode "$work/torus.obj" "$work/rate.qmc" --progressive --max-bytes 3000

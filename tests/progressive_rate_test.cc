@@ -129,6 +129,15 @@ TEST(ProgressiveRate, SizeTargetGivesTheMostAccurateFileThatFits) {
   EXPECT_EQ(none.chosen, -1);
 }
 
+TEST(ProgressiveRate, DefaultLevelsKeepAThousandBaseTriangles) {
+  EXPECT_EQ(tools::default_progressive_levels(69451), 3);  // stanford-bunny: base 1,085
+  EXPECT_EQ(tools::default_progressive_levels(29170), 2);  // armadillo: 1,823 (K = 3 would leave 455)
+  EXPECT_EQ(tools::default_progressive_levels(9000), 1);   // fertility
+  EXPECT_EQ(tools::default_progressive_levels(4000), 1);   // 1,000 at K = 1
+  EXPECT_EQ(tools::default_progressive_levels(100), 1);    // at least one level
+  EXPECT_EQ(tools::default_progressive_levels(size_t(1) << 40), 8);
+}
+
 TEST(ProgressiveRate, OneTargetExactly) {
   tools::RateChoice choice;
   EXPECT_EQ(tools::choose_progressive(rippled_torus(), {}, {1e-3, 1000}, small_search(), {}, &choice).code(),

@@ -57,10 +57,10 @@ const char kHelp[] =
     "                      the input surface. The input must be a manifold,\n"
     "                      consistently oriented mesh; polygons are split into\n"
     "                      triangles first (and the split is reported)\n"
-    "  --levels K          levels of --progressive, 1..8 (default 3); the base\n"
-    "                      mesh has about 1/4^K of the input's triangles; keep\n"
-    "                      it at a few hundred vertices or more (K = 2..3 on\n"
-    "                      meshes of 10k-70k triangles)\n"
+    "  --levels K          levels of --progressive, 1..8; the base mesh has\n"
+    "                      about 1/4^K of the input's triangles (default: the\n"
+    "                      most levels that keep 1,000 of them in the base, at\n"
+    "                      least 1; smaller bases lose accuracy fast)\n"
     "  --finest-step-scale F  of --progressive, 1..64 (default 1): the finest\n"
     "                      level's displacement step is the least-error step\n"
     "                      times F, the level below's times sqrt(F): fewer\n"
@@ -630,6 +630,12 @@ int encode_progressive(EncodeArgs& args, Mesh mesh, uint64_t input_bytes) {
   if (split && !args.quiet)
     std::printf("triangulated %zu polygons (fan from their first corner): --progressive takes triangles\n", split);
   if (args.rate.max_relative_l2 > 0 || args.rate.max_bytes > 0) return encode_progressive_to_target(args, mesh, input_bytes);
+  if (!args.levels_given) {
+    args.options.progressive_levels = tools::default_progressive_levels(mesh.face_count());
+    if (!args.quiet)
+      std::printf("levels      %d: the most whose base keeps 1,000 of the %zu triangles (--levels sets it)\n",
+                  args.options.progressive_levels, mesh.face_count());
+  }
   RemeshResult result;
   if (Status s = encode_remesh(args, mesh, mesh, "progressive: ", &result); !s.ok()) return fail("encode", s);
   const std::vector<uint8_t>& bytes = result.bytes;

@@ -142,6 +142,12 @@ RateSearch filled(RateSearch s, const EncodeOptions& options) {
 
 }  // namespace
 
+int default_progressive_levels(size_t triangles) {
+  int k = 1;
+  while (k < 8 && (triangles >> (2 * (k + 1))) >= 1000) ++k;
+  return k;
+}
+
 RateSearch default_rate_search(const Mesh& mesh) {
   RateSearch s;
   for (int k = 1; k <= 6 && (mesh.face_count() >> (2 * k)) >= 64; ++k) s.levels.push_back(k);

@@ -31,6 +31,12 @@ struct RateSearch {
   size_t samples = MeshDistanceOptions{}.samples;  // of each error measurement
 };
 
+// `qmc encode --progressive`'s K when --levels is not given: the most levels
+// (up to 8) whose base keeps at least 1,000 of the mesh's triangles, at least
+// 1. Smaller bases lose accuracy fast: armadillo (29,170 triangles) at K = 3
+// (456 base triangles) has 3.5 times the L2 of K = 2 (docs/results/seed003.md).
+int default_progressive_levels(size_t triangles);
+
 // The defaults: K from 1 while the base keeps at least 64 of the input's
 // triangles (at most 6), base bits 10..13, step scales 1, 2, 4, 8.
 RateSearch default_rate_search(const Mesh& mesh);
