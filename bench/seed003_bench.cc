@@ -789,9 +789,9 @@ std::string section_rd(const std::vector<MeshRun>& runs, const Options& opt) {
       opt.samples);
   s += "### Target: bytes at Draco's L2 (issue 17)\n\n"
        "qmc's file at the L2 of Draco's file at 10 and 12 bits: what `qmc encode --progressive --target-error E` "
-       "writes with E = Draco's relative L2 (tools/lib/progressive_rate.h: K from 1 while the base keeps 64 "
-       "triangles, base bits 10..13, finest step scales 1, 2, 4, 8; each candidate decoded and measured as here, "
-       "the smallest within E kept), a real file whose measured L2 is within E. For comparison, the bytes "
+       "writes with E = Draco's relative L2 (tools/lib/progressive_rate.h: K from 6 down to 1 where the base keeps "
+       "64 triangles, base bits 8..13, finest step scales 1, 2, 4, ..., 64; the candidates that can still win "
+       "decoded and measured as here, the smallest within E kept), a real file whose measured L2 is within E. For comparison, the bytes "
        "interpolated on the Pareto front of the levels of the K = 1..6 files below (12 bits, step scale 1), "
        "linearly in log(bytes) against log(L2) between the two points around that L2 ('<=' when even the "
        "cheapest is that accurate), with their ratio to Draco. Targets: qmc / Draco <= 0.6 at Draco-10's L2, "

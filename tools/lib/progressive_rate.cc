@@ -87,46 +87,76 @@ class Search {
   double best_error_ = std::numeric_limits<double>::infinity();
 };
 
+// Codes (bits, scale) and measures it if it can still beat the best; true
+// in *go_larger when only a larger scale can do better (it meets the error,
+// or is no smaller than the best).
+Status try_candidate(const ProgressiveEncoder& encoder, const EncodeOptions& options, int bits, double scale,
+                     Search* search, bool* go_larger) {
+  Candidate c;
+  if (Status st = code_candidate(encoder, options, bits, scale, &c); !st.ok()) return st;
+  *go_larger = true;
+  if (!search->worth_measuring(c)) {
+    search->skip(c);
+    return Status::Ok();
+  }
+  if (Status st = search->measure_and_keep(&c); !st.ok()) return st;
+  *go_larger = search->meets(c);
+  return Status::Ok();
+}
+
 // Error target, one K: the most accurate candidate decides whether K can
-// reach the error; then per bits the largest scale that meets it.
+// reach the error; then per bits the largest scale first (the cheapest
+// file: when it meets the error or is no smaller than the best, the other
+// scales of those bits cannot win), else a binary search for the largest
+// scale that meets it (the error grows with the scale, the bytes fall).
 Status search_error(const ProgressiveEncoder& encoder, const EncodeOptions& options, const RateSearch& s,
                     Search* search) {
-  const int top_bits = s.position_bits.back();
-  const double finest = s.step_scales.front();
   Candidate top;
-  if (Status st = code_candidate(encoder, options, top_bits, finest, &top); !st.ok()) return st;
+  if (Status st = code_candidate(encoder, options, s.position_bits.back(), s.step_scales.front(), &top); !st.ok())
+    return st;
   if (Status st = search->measure_and_keep(&top); !st.ok()) return st;
   if (!search->meets(top)) return Status::Ok();
+  const int largest = int(s.step_scales.size()) - 1;
   for (int bits : s.position_bits) {
-    for (auto scale = s.step_scales.rbegin(); scale != s.step_scales.rend(); ++scale) {
-      if (bits == top_bits && *scale == finest) break;
-      Candidate c;
-      if (Status st = code_candidate(encoder, options, bits, *scale, &c); !st.ok()) return st;
-      if (!search->worth_measuring(c)) {
-        search->skip(c);
-        break;  // smaller scales only make larger files
-      }
-      if (Status st = search->measure_and_keep(&c); !st.ok()) return st;
-      if (search->meets(c)) break;
+    bool go_larger = false;
+    if (Status st = try_candidate(encoder, options, bits, s.step_scales.back(), search, &go_larger); !st.ok())
+      return st;
+    if (go_larger) continue;
+    int lo = 0, hi = largest - 1;
+    while (lo <= hi) {
+      const int mid = (lo + hi + 1) / 2;
+      if (Status st = try_candidate(encoder, options, bits, s.step_scales[size_t(mid)], search, &go_larger); !st.ok())
+        return st;
+      if (go_larger) lo = mid + 1; else hi = mid - 1;
     }
   }
   return Status::Ok();
 }
 
-// Size target, one K: per bits the smallest scale whose file fits.
+// Size target, one K: per bits a binary search for the smallest scale whose
+// file fits (the bytes fall as the scale grows), then that file measured.
 Status search_size(const ProgressiveEncoder& encoder, const EncodeOptions& options, const RateSearch& s,
                    Search* search) {
   for (int bits : s.position_bits) {
-    for (double scale : s.step_scales) {
+    int lo = 0, hi = int(s.step_scales.size()) - 1;
+    Candidate fitting;
+    bool found = false;
+    while (lo <= hi) {
+      const int mid = (lo + hi) / 2;
       Candidate c;
-      if (Status st = code_candidate(encoder, options, bits, scale, &c); !st.ok()) return st;
-      if (!search->worth_measuring(c)) {
+      if (Status st = code_candidate(encoder, options, bits, s.step_scales[size_t(mid)], &c); !st.ok()) return st;
+      if (search->worth_measuring(c)) {
+        if (found) search->skip(fitting);
+        fitting = std::move(c);
+        found = true;
+        hi = mid - 1;
+      } else {
         search->skip(c);
-        continue;
+        lo = mid + 1;
       }
-      if (Status st = search->measure_and_keep(&c); !st.ok()) return st;
-      break;
     }
+    if (found)
+      if (Status st = search->measure_and_keep(&fitting); !st.ok()) return st;
   }
   return Status::Ok();
 }
@@ -150,10 +180,11 @@ int default_progressive_levels(size_t triangles) {
 
 RateSearch default_rate_search(const Mesh& mesh) {
   RateSearch s;
-  for (int k = 1; k <= 6 && (mesh.face_count() >> (2 * k)) >= 64; ++k) s.levels.push_back(k);
+  for (int k = 6; k >= 1; --k)
+    if ((mesh.face_count() >> (2 * k)) >= 64) s.levels.push_back(k);
   if (s.levels.empty()) s.levels = {1};
-  s.position_bits = {10, 11, 12, 13};
-  s.step_scales = {1, 2, 4, 8};
+  s.position_bits = {8, 9, 10, 11, 12, 13};
+  s.step_scales = {1, 2, 4, 8, 16, 32, 64};
   return s;
 }
 
@@ -177,6 +208,15 @@ Status choose_progressive(const Mesh& mesh, const EncodeOptions& options, const 
       continue;
     }
     if (stage) stage("K = " + std::to_string(levels) + ": code and measure");
+    if (target.max_relative_l2 > 0) {  // K's cheapest file no smaller than the best: K cannot win
+      Candidate cheapest;
+      if (Status st = code_candidate(encoder, o, s.position_bits.front(), s.step_scales.back(), &cheapest); !st.ok())
+        return st;
+      if (!state.worth_measuring(cheapest)) {
+        state.skip(cheapest);
+        continue;
+      }
+    }
     const Status st = target.max_bytes > 0 ? search_size(encoder, o, s, &state) : search_error(encoder, o, s, &state);
     if (!st.ok()) return st;
   }

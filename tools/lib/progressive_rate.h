@@ -23,22 +23,25 @@ struct RateTarget {
   uint64_t max_bytes = 0;      // the whole file
 };
 
-// What the search may vary; an empty list keeps the value of the options.
-struct RateSearch {
-  std::vector<int> levels;           // K
-  std::vector<int> position_bits;    // of the base mesh
-  std::vector<double> step_scales;   // EncodeOptions::finest_step_scale, ascending
-  size_t samples = MeshDistanceOptions{}.samples;  // of each error measurement
-};
-
 // `qmc encode --progressive`'s K when --levels is not given: the most levels
 // (up to 8) whose base keeps at least 1,000 of the mesh's triangles, at least
 // 1. Smaller bases lose accuracy fast: armadillo (29,170 triangles) at K = 3
 // (456 base triangles) has 3.5 times the L2 of K = 2 (docs/results/seed003.md).
 int default_progressive_levels(size_t triangles);
 
-// The defaults: K from 1 while the base keeps at least 64 of the input's
-// triangles (at most 6), base bits 10..13, step scales 1, 2, 4, 8.
+// What the search may vary; an empty list keeps the value of the options.
+// Levels are tried in the order given; bits and scales in increasing order.
+struct RateSearch {
+  std::vector<int> levels;           // K
+  std::vector<int> position_bits;    // of the base mesh
+  std::vector<double> step_scales;   // EncodeOptions::finest_step_scale
+  size_t samples = MeshDistanceOptions{}.samples;  // of each error measurement
+};
+
+// The defaults: K from 6 down to 1 where the base keeps at least 64 of the
+// input's triangles (deep files first: they are the small ones, and a small
+// best file spares measuring larger candidates), base bits 8..13, step
+// scales 1, 2, 4, ..., 64.
 RateSearch default_rate_search(const Mesh& mesh);
 
 struct RatePoint {
@@ -61,12 +64,13 @@ struct RateChoice {
 // Searches `search` for `target`, starting from `options` (whose
 // progressive_levels, position_bits and finest_step_scale the search sets).
 // For an error target: per K, the most accurate candidate first (largest
-// bits, scale 1); a K that misses the target with it is dropped; then the
-// cheapest candidate meeting it. Candidates larger than the best so far are
-// not measured. For a size target: per K and bits, the smallest scale whose
-// file fits, measured; the lowest error wins. Errors of the encoder other
-// than a K that cannot be coded end the search. `stage` (may be empty) hears
-// what is being done.
+// bits, smallest scale); a K that misses the target with it is dropped;
+// then per bits a binary search for the largest scale within the error.
+// Candidates not smaller than the best so far are not measured. For a size
+// target: per K and bits, a binary search for the smallest scale whose file
+// fits, then that file measured; the lowest error wins. A K that cannot be
+// coded is listed with its reason; other errors of the encoder end the
+// search. `stage` (may be empty) hears what is being done.
 Status choose_progressive(const Mesh& mesh, const EncodeOptions& options, const RateTarget& target,
                           const RateSearch& search, const std::function<void(const std::string&)>& stage,
                           RateChoice* out);
