@@ -157,12 +157,14 @@ contains progressive-default-levels-says "$work/out" "levels      1: the most wh
 check progressive-target-error 0 "$qmc" encode "$work/torus.obj" "$work/rate.qmc" --progressive --target-error 0.02
 contains progressive-target-error-curve "$work/out" "<- chosen"
 check progressive-max-bytes 0 "$qmc" encode "$work/torus.obj" "$work/rate.qmc" --progressive --max-bytes 3000
-contains progressive-max-bytes-curve "$work/out" "the least error within 3000 bytes"
+contains progressive-max-bytes-curve "$work/out" "the least L2 error within 3000 bytes"
 check progressive-target-unreachable 3 "$qmc" encode "$work/torus.obj" "$work/miss.qmc" --progressive --levels 1 --target-error 1e-9
 contains progressive-target-unreachable-says "$work/err" "no candidate reaches the target error"
 check progressive-target-unreachable-writes-nothing 1 test -e "$work/miss.qmc"
 check progressive-step-scale-range 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --progressive --finest-step-scale 0.5
 check progressive-two-targets 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --progressive --target-error 0.01 --max-bytes 900
+check progressive-target-hausdorff 0 "$qmc" encode "$work/torus.obj" "$work/rate.qmc" --progressive --target-hausdorff 0.05
+contains progressive-target-hausdorff-curve "$work/out" "the smallest file within relative Hausdorff 0.05"
 check target-error-needs-progressive 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --target-error 0.01
 # --gim (spec 13): a sampled image of the genus-1 torus, decoded, exported
 # as image files and imported back to the same image.

@@ -108,6 +108,28 @@ TEST(ProgressiveRate, ErrorTargetGivesTheSmallestMeasuredFileWithinIt) {
   EXPECT_NEAR(choice.distance.relative(choice.distance.l2), chosen.relative_l2, 1e-15);
 }
 
+TEST(ProgressiveRate, HausdorffTargetBoundsTheHausdorffDistance) {
+  const Mesh mesh = rippled_torus();
+  tools::RateChoice probe;
+  ASSERT_TRUE(tools::choose_progressive(mesh, {}, {0, 0, 1e-9}, small_search(), {}, &probe).ok());
+  EXPECT_EQ(probe.chosen, -1);
+  double best = 1;
+  for (const tools::RatePoint& p : probe.tried)
+    if (p.relative_hausdorff > 0) best = std::min(best, p.relative_hausdorff);
+  const double target = 1.2 * best;
+  tools::RateChoice choice;
+  ASSERT_TRUE(tools::choose_progressive(mesh, {}, {0, 0, target}, small_search(), {}, &choice).ok());
+  ASSERT_GE(choice.chosen, 0);
+  const tools::RatePoint& chosen = choice.tried[size_t(choice.chosen)];
+  EXPECT_LE(chosen.relative_hausdorff, target);
+  EXPECT_NEAR(choice.distance.relative(choice.distance.hausdorff), chosen.relative_hausdorff, 1e-15);
+  for (const tools::RatePoint& p : choice.tried) {
+    if (p.relative_hausdorff >= 0 && p.relative_hausdorff <= target) {
+      EXPECT_GE(p.bytes, chosen.bytes);
+    }
+  }
+}
+
 TEST(ProgressiveRate, SizeTargetGivesTheMostAccurateFileThatFits) {
   const Mesh mesh = rippled_torus();
   std::vector<uint8_t> reference;
@@ -143,6 +165,8 @@ TEST(ProgressiveRate, OneTargetExactly) {
   EXPECT_EQ(tools::choose_progressive(rippled_torus(), {}, {1e-3, 1000}, small_search(), {}, &choice).code(),
             ErrorCode::kInvalidArgument);
   EXPECT_EQ(tools::choose_progressive(rippled_torus(), {}, {0, 0}, small_search(), {}, &choice).code(),
+            ErrorCode::kInvalidArgument);
+  EXPECT_EQ(tools::choose_progressive(rippled_torus(), {}, {1e-3, 0, 1e-3}, small_search(), {}, &choice).code(),
             ErrorCode::kInvalidArgument);
 }
 

@@ -72,8 +72,9 @@ const char kHelp[] =
     "                      one that --levels, --bits or --finest-step-scale does\n"
     "                      not fix), decodes and measures the candidates that\n"
     "                      can still win; prints what it tried\n"
-    "  --max-bytes N       of --progressive: the file of least error within N\n"
-    "                      bytes, searched as for --target-error\n"
+    "  --target-hausdorff E  as --target-error, for the Hausdorff distance\n"
+    "  --max-bytes N       of --progressive: the file of least L2 error within\n"
+    "                      N bytes, searched as for --target-error\n"
     "  --gim N             write a geometry image (spec 13, seeds 000 and 002)\n"
     "                      instead: the surface cut into a disk, laid on an\n"
     "                      N x N pixel grid by Floater's mean-value coordinates\n"
@@ -141,7 +142,7 @@ const CommandSpec kSpec{"encode",
                         {{"--bits", "-q"}, {"--text"}, {"--connectivity"}, {"--levels"}, {"--gim"}, {"--sampling"},
                          {"--roi"}, {"--grid"}, {"--step"}, {"--max-error"}, {"--positions"}, {"--format"},
                          {"--uv-bits"}, {"--normal-bits"}, {"--color-bits"}, {"--drop"},
-                         {"--finest-step-scale"}, {"--target-error"}, {"--max-bytes"}},
+                         {"--finest-step-scale"}, {"--target-error"}, {"--target-hausdorff"}, {"--max-bytes"}},
                         2,
                         2};
 
@@ -260,10 +261,10 @@ int parse_rate_option(const std::string& name, const std::string& value, EncodeA
     if (!number || v < 1 || v > 64) return usage_error("encode", "--finest-step-scale takes a number from 1 to 64, got '" + value + "'");
     args->options.finest_step_scale = v;
     args->step_scale_given = true;
-  } else if (name == "--target-error") {
+  } else if (name == "--target-error" || name == "--target-hausdorff") {
     if (!number || !(v > 0) || v >= 1)
-      return usage_error("encode", "--target-error takes a relative L2 error above 0 and below 1 (e.g. 1e-4), got '" + value + "'");
-    args->rate.max_relative_l2 = v;
+      return usage_error("encode", name + " takes a relative error above 0 and below 1 (e.g. 1e-4), got '" + value + "'");
+    (name == "--target-error" ? args->rate.max_relative_l2 : args->rate.max_relative_hausdorff) = v;
   } else {
     long n = 0;
     if (!parse_int(value, 1, 2147483647, &n))
@@ -306,7 +307,8 @@ int parse(int argc, char** argv, EncodeArgs* args) {
       args->levels_given = true;
       continue;
     }
-    if (name == "--finest-step-scale" || name == "--target-error" || name == "--max-bytes") {
+    if (name == "--finest-step-scale" || name == "--target-error" || name == "--target-hausdorff" ||
+        name == "--max-bytes") {
       if (int rc = parse_rate_option(name, value, args); rc >= 0) return rc;
       continue;
     }
@@ -342,8 +344,8 @@ int parse(int argc, char** argv, EncodeArgs* args) {
     args->options.position_bits = int(bits);
     args->bits_given = true;
   }
-  if (args->rate.max_relative_l2 > 0 && args->rate.max_bytes > 0)
-    return usage_error("encode", "--target-error and --max-bytes exclude each other");
+  if ((args->rate.max_relative_l2 > 0) + (args->rate.max_relative_hausdorff > 0) + (args->rate.max_bytes > 0) > 1)
+    return usage_error("encode", "--target-error, --target-hausdorff and --max-bytes exclude each other");
   return limit_to_format(cl, args);
 }
 
@@ -575,10 +577,12 @@ int drop_attributes(const EncodeArgs& args, Mesh* mesh) {
 // What the rate control tried, one line per candidate (spec 12.10).
 void print_rate_curve(const tools::RateTarget& target, const tools::RateChoice& choice) {
   if (target.max_bytes > 0)
-    std::printf("rate        the least error within %llu bytes; tried:\n", static_cast<unsigned long long>(target.max_bytes));
+    std::printf("rate        the least L2 error within %llu bytes; tried:\n", static_cast<unsigned long long>(target.max_bytes));
+  else if (target.max_relative_hausdorff > 0)
+    std::printf("rate        the smallest file within relative Hausdorff %.3g; tried:\n", target.max_relative_hausdorff);
   else
     std::printf("rate        the smallest file within relative L2 %.3g; tried:\n", target.max_relative_l2);
-  std::printf("            K  base bits  finest step scale       bytes  L2 / diagonal\n");
+  std::printf("            K  base bits  finest step scale       bytes  L2 / diagonal  Hausdorff / diagonal\n");
   size_t unmeasured = 0;
   for (size_t i = 0; i < choice.tried.size(); ++i) {
     const tools::RatePoint& p = choice.tried[i];
@@ -587,8 +591,9 @@ void print_rate_curve(const tools::RateTarget& target, const tools::RateChoice& 
     else if (p.relative_l2 < 0)
       ++unmeasured;
     else
-      std::printf("            %d  %9d  %17.3g  %10llu  %.4g%s\n", p.levels, p.position_bits, p.step_scale,
-                  static_cast<unsigned long long>(p.bytes), p.relative_l2, int(i) == choice.chosen ? "  <- chosen" : "");
+      std::printf("            %d  %9d  %17.3g  %10llu  %13.4g  %20.4g%s\n", p.levels, p.position_bits, p.step_scale,
+                  static_cast<unsigned long long>(p.bytes), p.relative_l2, p.relative_hausdorff,
+                  int(i) == choice.chosen ? "  <- chosen" : "");
   }
   if (unmeasured)
     std::printf("            and %zu more coded but not measured: %s\n", unmeasured,
@@ -630,7 +635,7 @@ int encode_progressive(EncodeArgs& args, Mesh mesh, uint64_t input_bytes) {
   mesh = tools::triangulated(mesh, &split);
   if (split && !args.quiet)
     std::printf("triangulated %zu polygons (fan from their first corner): --progressive takes triangles\n", split);
-  if (args.rate.max_relative_l2 > 0 || args.rate.max_bytes > 0) return encode_progressive_to_target(args, mesh, input_bytes);
+  if (args.rate.error_target() || args.rate.max_bytes > 0) return encode_progressive_to_target(args, mesh, input_bytes);
   if (!args.levels_given) {
     args.options.progressive_levels = tools::default_progressive_levels(mesh.face_count());
     if (!args.quiet)

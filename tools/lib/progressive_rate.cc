@@ -21,7 +21,10 @@ Status code_candidate(const ProgressiveEncoder& encoder, EncodeOptions options, 
                       Candidate* c) {
   options.position_bits = bits;
   options.finest_step_scale = scale;
-  c->point = RatePoint{options.progressive_levels, bits, scale, 0, -1, {}};
+  c->point = RatePoint{};
+  c->point.levels = options.progressive_levels;
+  c->point.position_bits = bits;
+  c->point.step_scale = scale;
   if (Status s = encoder.code(options, &c->bytes, &c->stats); !s.ok()) return s;
   c->point.bytes = c->bytes.size();
   return Status::Ok();
@@ -34,6 +37,7 @@ Status measure(const Mesh& mesh, size_t samples, Candidate* c) {
   options.samples = samples;
   if (Status s = measure_mesh_distance(mesh, c->decoded.mesh, options, &c->distance); !s.ok()) return s;
   c->point.relative_l2 = c->distance.relative(c->distance.l2);
+  c->point.relative_hausdorff = c->distance.relative(c->distance.hausdorff);
   return Status::Ok();
 }
 
@@ -44,7 +48,9 @@ class Search {
       : mesh_(mesh), target_(target), samples_(samples), out_(out) {}
 
   bool meets(const Candidate& c) const {
-    return target_.max_bytes > 0 ? c.point.bytes <= target_.max_bytes : c.point.relative_l2 <= target_.max_relative_l2;
+    if (target_.max_bytes > 0) return c.point.bytes <= target_.max_bytes;
+    if (target_.max_relative_hausdorff > 0) return c.point.relative_hausdorff <= target_.max_relative_hausdorff;
+    return c.point.relative_l2 <= target_.max_relative_l2;
   }
   // Whether `c` can still win: a smaller file (error target) or one that fits (size target).
   bool worth_measuring(const Candidate& c) const {
@@ -192,8 +198,9 @@ Status choose_progressive(const Mesh& mesh, const EncodeOptions& options, const 
                           const RateSearch& search, const std::function<void(const std::string&)>& stage,
                           RateChoice* out) {
   *out = RateChoice{};
-  if ((target.max_relative_l2 > 0) == (target.max_bytes > 0) || !std::isfinite(target.max_relative_l2))
-    return Status(ErrorCode::kInvalidArgument, "give either an error or a size target");
+  const int targets = (target.max_relative_l2 > 0) + (target.max_bytes > 0) + (target.max_relative_hausdorff > 0);
+  if (targets != 1 || !std::isfinite(target.max_relative_l2) || !std::isfinite(target.max_relative_hausdorff))
+    return Status(ErrorCode::kInvalidArgument, "give one target: an L2 error, a Hausdorff error or a size");
   const RateSearch s = filled(search, options);
   Search state(mesh, target, s.samples, out);
   Status first_failure = Status::Ok();
@@ -208,7 +215,7 @@ Status choose_progressive(const Mesh& mesh, const EncodeOptions& options, const 
       continue;
     }
     if (stage) stage("K = " + std::to_string(levels) + ": code and measure");
-    if (target.max_relative_l2 > 0) {  // K's cheapest file no smaller than the best: K cannot win
+    if (target.error_target()) {  // K's cheapest file no smaller than the best: K cannot win
       Candidate cheapest;
       if (Status st = code_candidate(encoder, o, s.position_bits.front(), s.step_scales.back(), &cheapest); !st.ok())
         return st;
@@ -217,7 +224,7 @@ Status choose_progressive(const Mesh& mesh, const EncodeOptions& options, const 
         continue;
       }
     }
-    const Status st = target.max_bytes > 0 ? search_size(encoder, o, s, &state) : search_error(encoder, o, s, &state);
+    const Status st = target.error_target() ? search_error(encoder, o, s, &state) : search_size(encoder, o, s, &state);
     if (!st.ok()) return st;
   }
   const bool all_failed = std::all_of(out->tried.begin(), out->tried.end(),

@@ -17,10 +17,13 @@
 
 namespace qmc::tools {
 
-// Exactly one of the two is > 0.
+// Exactly one of the three is > 0. Errors are relative to the input's
+// bounding-box diagonal, as qmc compare reports them.
 struct RateTarget {
-  double max_relative_l2 = 0;  // L2 / bounding-box diagonal of the input, as qmc compare reports it
-  uint64_t max_bytes = 0;      // the whole file
+  double max_relative_l2 = 0;
+  uint64_t max_bytes = 0;  // the whole file; the least L2 within it
+  double max_relative_hausdorff = 0;
+  bool error_target() const { return max_relative_l2 > 0 || max_relative_hausdorff > 0; }
 };
 
 // `qmc encode --progressive`'s K when --levels is not given: the most levels
@@ -49,6 +52,7 @@ struct RatePoint {
   double step_scale = 1;
   uint64_t bytes = 0;
   double relative_l2 = -1;  // -1: not measured (it could not beat the best so far)
+  double relative_hausdorff = -1;
   std::string failure;      // why K could not be coded (e.g. the simplified base is not a manifold)
 };
 
