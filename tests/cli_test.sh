@@ -126,6 +126,7 @@ check keep-order-verify-other-order 1 "$qmc" verify "$work/qsphere_rev.obj" "$wo
 check progressive-encode 0 "$qmc" encode "$work/torus.obj" "$work/prog.qmc" --progressive --levels 2
 contains progressive-triangulated "$work/out" "triangulated 288 polygons"
 contains progressive-levels "$work/out" "edge points"
+contains progressive-level-curve "$work/out" "bytes read  L2 / diag"
 contains progressive-error "$work/out" "PSNR"
 check progressive-info 0 "$qmc" info "$work/prog.qmc"
 contains progressive-info-levels "$work/out" "progressive  2 Loop levels"

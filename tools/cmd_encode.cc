@@ -446,8 +446,36 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
                 a.value_count ? 8.0 * double(a.value_bytes) / a.value_count : 0.0);
 }
 
+// Section 12: what a viewer has after level j arrives: the bytes read when
+// its LEVL chunk completes (all but the later levels and QEND) and the
+// level's distance to the input (the finest level's is `finest`).
+struct LevelCurve {
+  std::vector<uint64_t> bytes_read;
+  std::vector<tools::MeshDistance> distance;
+};
+
+Status level_curve(const Mesh& input, const EncodeStats& stats, const DecodedFile& decoded,
+                   const tools::MeshDistance& finest, LevelCurve* curve) {
+  const std::vector<LoopLevelStats>& levels = stats.loop.levels;
+  uint64_t later = 12;  // QEND
+  curve->bytes_read.assign(levels.size(), 0);
+  for (size_t j = levels.size(); j-- > 0;) {
+    curve->bytes_read[j] = stats.total_bytes - later;
+    later += levels[j].bytes;
+  }
+  curve->distance.assign(levels.size(), finest);
+  Progress progress(true);
+  for (size_t j = 0; j + 1 < levels.size() && j < decoded.levels.size(); ++j) {
+    progress.stage("measuring level " + std::to_string(j));
+    if (Status s = tools::measure_mesh_distance(input, level_mesh(decoded.levels[j]), {}, &curve->distance[j]); !s.ok())
+      return s;
+  }
+  progress.done();
+  return Status::Ok();
+}
+
 void print_progressive_report(const EncodeArgs& args, const Mesh& input, const EncodeStats& stats,
-                              const tools::MeshDistance& distance, uint64_t input_bytes) {
+                              const LevelCurve& curve, const tools::MeshDistance& distance, uint64_t input_bytes) {
   const LoopEncodeStats& ls = stats.loop;
   std::printf("input       %s: %zu vertices, %zu triangles, %s\n", args.input.c_str(), input.vertex_count(),
               input.face_count(), human_bytes(input_bytes).c_str());
@@ -456,18 +484,25 @@ void print_progressive_report(const EncodeArgs& args, const Mesh& input, const E
                 ls.unreferenced_vertices_dropped);
   std::printf("pipeline    simplify %.2f s, fit %.2f s, subdivide+displace+inverse %.2f s, code %.2f s\n",
               ls.seconds_simplify, ls.seconds_fit, ls.seconds_remesh, ls.seconds_code);
-  std::printf("levels      level  vertices     faces  edge points  zero %%     step        bytes  code\n");
+  std::printf("levels      level  vertices     faces  edge points  zero %%     step        bytes  code   bytes read  "
+              "L2 / diag  Hausdorff / diag\n");
   for (size_t j = 0; j < ls.levels.size(); ++j) {
     const LoopLevelStats& l = ls.levels[j];
+    const tools::MeshDistance& d = curve.distance[j];
     if (j == 0)
-      std::printf("            base  %9u %9u  %11s  %6s  %9s  %10llu     -  (CONN + POSN: %s coder, %s positions)\n",
-                  l.vertices, l.faces, "-", "-", "-", static_cast<unsigned long long>(l.bytes),
-                  connectivity_method_name(stats.method), stats.positions.method >= 1 ? "predicted" : "delta");
+      std::printf("            base  %9u %9u  %11s  %6s  %9s  %10llu     -", l.vertices, l.faces, "-", "-", "-",
+                  static_cast<unsigned long long>(l.bytes));
     else
-      std::printf("            %4zu  %9u %9u  %11u  %6.2f  %9.3g  %10llu  %4u%s\n", j, l.vertices, l.faces,
-                  l.edge_points, 100.0 * l.zeros / (l.edge_points ? l.edge_points : 1), l.step,
-                  static_cast<unsigned long long>(l.bytes), unsigned(l.code),
-                  l.clamped ? (" (" + std::to_string(l.clamped) + " clamped to 127)").c_str() : "");
+      std::printf("            %4zu  %9u %9u  %11u  %6.2f  %9.3g  %10llu  %4u", j, l.vertices, l.faces, l.edge_points,
+                  100.0 * l.zeros / (l.edge_points ? l.edge_points : 1), l.step, static_cast<unsigned long long>(l.bytes),
+                  unsigned(l.code));
+    std::printf("  %11llu  %9.3g  %16.3g", static_cast<unsigned long long>(curve.bytes_read[j]), d.relative(d.l2),
+                d.relative(d.hausdorff));
+    if (j == 0)
+      std::printf("  (CONN + POSN: %s coder, %s positions)\n", connectivity_method_name(stats.method),
+                  stats.positions.method >= 1 ? "predicted" : "delta");
+    else
+      std::printf("%s\n", l.clamped ? (" (" + std::to_string(l.clamped) + " clamped to 127)").c_str() : "");
   }
   std::printf("            finest level along its normals: %u hit the input surface, %u kept the remesh position\n",
               ls.ray_hits, ls.ray_misses);
@@ -625,8 +660,12 @@ int encode_progressive_to_target(const EncodeArgs& args, const Mesh& mesh, uint6
                                                          : "no candidate reaches the target error (the list above): "
                                                            "allow more levels or bits, or a larger error; nothing written"));
   if (int refused = refuse_newer_format(args, choice.bytes); refused >= 0) return refused;
+  LevelCurve curve;
+  if (!args.quiet)
+    if (Status c = level_curve(mesh, choice.stats, choice.decoded, choice.distance, &curve); !c.ok())
+      return fail("encode", c);
   if (Status w = write_file(args.output, choice.bytes); !w.ok()) return fail("encode", w);
-  if (!args.quiet) print_progressive_report(args, mesh, choice.stats, choice.distance, input_bytes);
+  if (!args.quiet) print_progressive_report(args, mesh, choice.stats, curve, choice.distance, input_bytes);
   return kExitOk;
 }
 
@@ -648,8 +687,11 @@ int encode_progressive(EncodeArgs& args, Mesh mesh, uint64_t input_bytes) {
   const EncodeStats& stats = result.stats;
   const tools::MeshDistance& distance = result.distance;
   if (int refused = refuse_newer_format(args, bytes); refused >= 0) return refused;
+  LevelCurve curve;
+  if (!args.quiet)
+    if (Status c = level_curve(mesh, stats, result.decoded, distance, &curve); !c.ok()) return fail("encode", c);
   if (Status s = write_file(args.output, bytes); !s.ok()) return fail("encode", s);
-  if (!args.quiet) print_progressive_report(args, mesh, stats, distance, input_bytes);
+  if (!args.quiet) print_progressive_report(args, mesh, stats, curve, distance, input_bytes);
   return kExitOk;
 }
 
