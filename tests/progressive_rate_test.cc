@@ -51,6 +51,19 @@ TEST(ProgressiveEncoder, CodesOnlyWhatWasPrepared) {
   EXPECT_EQ(encoder.code(progressive(3), &out).code(), ErrorCode::kInvalidArgument);
 }
 
+TEST(ProgressiveEncoder, PrepareChecksTheMeshAsEncodeDoes) {
+  Mesh bad_corner = rippled_torus();
+  bad_corner.corners[7] = uint32_t(bad_corner.vertex_count());
+  Mesh not_finite = rippled_torus();
+  not_finite.positions[4] = std::numeric_limits<float>::infinity();
+  for (const Mesh& mesh : {bad_corner, not_finite}) {
+    ProgressiveEncoder encoder;
+    EXPECT_EQ(encoder.prepare(mesh, progressive(1)).code(), ErrorCode::kInvalidArgument);
+    std::vector<uint8_t> out;
+    EXPECT_EQ(encoder.code(progressive(1), &out).code(), ErrorCode::kInvalidArgument);  // nothing prepared
+  }
+}
+
 TEST(FinestStepScale, ScalesTheFinestStepAndTheSquareRootBelow) {
   const Mesh mesh = rippled_torus();
   std::vector<uint8_t> plain, coarse;

@@ -78,9 +78,7 @@ Status validate_options(const EncodeOptions& options) {
   return Status::Ok();
 }
 
-namespace {
-
-Status validate(const Mesh& mesh, const EncodeOptions& options) {
+Status validate_input(const Mesh& mesh, const EncodeOptions& options) {
   if (Status s = validate_options(options); !s.ok()) return s;
   if (mesh.positions.size() % 3 != 0) return invalid("positions are not a multiple of 3 floats");
   if (mesh.vertex_count() > UINT32_MAX || mesh.face_count() > UINT32_MAX)
@@ -104,6 +102,8 @@ Status validate(const Mesh& mesh, const EncodeOptions& options) {
                      " of " + std::to_string(mesh.vertex_count()));
   return validate_attributes(mesh, options);
 }
+
+namespace {
 
 std::vector<float> permuted_positions(const Mesh& mesh, const std::vector<uint32_t>& file_vertex) {
   std::vector<float> out;
@@ -287,7 +287,7 @@ Status add_attributes(const Mesh& mesh, const EncodeOptions& options, const File
 }
 
 Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* out, EncodeStats* stats) {
-  if (Status s = validate(mesh, options); !s.ok()) return s;
+  if (Status s = validate_input(mesh, options); !s.ok()) return s;
   EncodeStats local;
   EncodeStats& st = stats ? *stats : local;
   st = EncodeStats{};

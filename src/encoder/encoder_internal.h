@@ -22,6 +22,10 @@ struct FileConnectivity {
 // The checks of encode() that concern the options alone.
 Status validate_options(const EncodeOptions& options);
 
+// Every check of encode() before it codes: the options, then the mesh
+// (coordinates, face sizes, corner indices, attributes).
+Status validate_input(const Mesh& mesh, const EncodeOptions& options);
+
 // Section 5.1: the quad coder where it applies (kAuto), else the polygon
 // coder, else the indexed coding, as `options.connectivity` asks.
 Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileConnectivity* conn, EncodeStats* st);

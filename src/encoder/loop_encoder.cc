@@ -120,7 +120,7 @@ ProgressiveEncoder::~ProgressiveEncoder() = default;
 Status ProgressiveEncoder::prepare(const Mesh& mesh, const EncodeOptions& options) {
   prepared_.reset();
   auto p = std::make_unique<Prepared>();
-  if (Status s = validate_options(options); !s.ok()) return s;
+  if (Status s = validate_input(mesh, options); !s.ok()) return s;
   if (options.progressive_levels < 1) return Status(ErrorCode::kInvalidArgument, "progressive levels must be 1..8");
   LoopEncodeStats& ls = p->stats.loop;
   LoopMesh original;
