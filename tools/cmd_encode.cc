@@ -529,10 +529,11 @@ Status encode_remesh(const EncodeArgs& args, const Mesh& mesh, const Mesh& refer
   EncodeOptions options = args.options;
   options.progress = [&](const char* stage, double) { progress.stage(label + stage); };
   if (Status s = encode(mesh, options, &r->bytes, &r->stats); !s.ok()) return s;
-  progress.stage("decoding to measure the error");  // our own output: no limits
-  if (Status s = decode(r->bytes.data(), r->bytes.size(), &r->decoded, DecoderLimits::unlimited()); !s.ok())
-    return Status(s.code(), "internal error, own output does not decode: " + s.message());
-  if (Status s = tools::measure_mesh_distance(reference, r->decoded.mesh, {}, &r->distance); !s.ok()) return s;
+  progress.stage("decoding to measure the error");
+  if (Status s = tools::decode_and_measure(reference, r->bytes, tools::MeshDistanceOptions{}.samples, &r->decoded,
+                                           &r->distance);
+      !s.ok())
+    return s;
   progress.done();
   return Status::Ok();
 }
@@ -644,6 +645,21 @@ tools::RateSearch rate_search_of(const EncodeArgs& args, const Mesh& mesh) {
   return search;
 }
 
+// A progressive file out: refused if newer than --format, its level curve
+// measured (unless --quiet) before it is written, so that a failure writes
+// nothing, then the report.
+int write_progressive(const EncodeArgs& args, const Mesh& mesh, const std::vector<uint8_t>& bytes,
+                      const EncodeStats& stats, const DecodedFile& decoded, const tools::MeshDistance& distance,
+                      uint64_t input_bytes) {
+  if (int refused = refuse_newer_format(args, bytes); refused >= 0) return refused;
+  LevelCurve curve;
+  if (!args.quiet)
+    if (Status c = level_curve(mesh, stats, decoded, distance, &curve); !c.ok()) return fail("encode", c);
+  if (Status w = write_file(args.output, bytes); !w.ok()) return fail("encode", w);
+  if (!args.quiet) print_progressive_report(args, mesh, stats, curve, distance, input_bytes);
+  return kExitOk;
+}
+
 int encode_progressive_to_target(const EncodeArgs& args, const Mesh& mesh, uint64_t input_bytes) {
   Progress progress(true);
   tools::RateChoice choice;
@@ -659,14 +675,7 @@ int encode_progressive_to_target(const EncodeArgs& args, const Mesh& mesh, uint6
                                                                " bytes (the list above); nothing written"
                                                          : "no candidate reaches the target error (the list above): "
                                                            "allow more levels or bits, or a larger error; nothing written"));
-  if (int refused = refuse_newer_format(args, choice.bytes); refused >= 0) return refused;
-  LevelCurve curve;
-  if (!args.quiet)
-    if (Status c = level_curve(mesh, choice.stats, choice.decoded, choice.distance, &curve); !c.ok())
-      return fail("encode", c);
-  if (Status w = write_file(args.output, choice.bytes); !w.ok()) return fail("encode", w);
-  if (!args.quiet) print_progressive_report(args, mesh, choice.stats, curve, choice.distance, input_bytes);
-  return kExitOk;
+  return write_progressive(args, mesh, choice.bytes, choice.stats, choice.decoded, choice.distance, input_bytes);
 }
 
 int encode_progressive(EncodeArgs& args, Mesh mesh, uint64_t input_bytes) {
@@ -681,18 +690,9 @@ int encode_progressive(EncodeArgs& args, Mesh mesh, uint64_t input_bytes) {
       std::printf("levels      %d: the most whose base keeps 1,000 of the %zu triangles (--levels sets it)\n",
                   args.options.progressive_levels, mesh.face_count());
   }
-  RemeshResult result;
-  if (Status s = encode_remesh(args, mesh, mesh, "progressive: ", &result); !s.ok()) return fail("encode", s);
-  const std::vector<uint8_t>& bytes = result.bytes;
-  const EncodeStats& stats = result.stats;
-  const tools::MeshDistance& distance = result.distance;
-  if (int refused = refuse_newer_format(args, bytes); refused >= 0) return refused;
-  LevelCurve curve;
-  if (!args.quiet)
-    if (Status c = level_curve(mesh, stats, result.decoded, distance, &curve); !c.ok()) return fail("encode", c);
-  if (Status s = write_file(args.output, bytes); !s.ok()) return fail("encode", s);
-  if (!args.quiet) print_progressive_report(args, mesh, stats, curve, distance, input_bytes);
-  return kExitOk;
+  RemeshResult r;
+  if (Status s = encode_remesh(args, mesh, mesh, "progressive: ", &r); !s.ok()) return fail("encode", s);
+  return write_progressive(args, mesh, r.bytes, r.stats, r.decoded, r.distance, input_bytes);
 }
 
 void print_gim_report(const EncodeArgs& args, const Mesh& input, const EncodeStats& stats,

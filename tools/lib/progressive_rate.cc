@@ -31,11 +31,7 @@ Status code_candidate(const ProgressiveEncoder& encoder, EncodeOptions options, 
 }
 
 Status measure(const Mesh& mesh, size_t samples, Candidate* c) {
-  if (Status s = decode(c->bytes.data(), c->bytes.size(), &c->decoded, DecoderLimits::unlimited()); !s.ok())
-    return Status(s.code(), "internal error, own output does not decode: " + s.message());
-  MeshDistanceOptions options;
-  options.samples = samples;
-  if (Status s = measure_mesh_distance(mesh, c->decoded.mesh, options, &c->distance); !s.ok()) return s;
+  if (Status s = decode_and_measure(mesh, c->bytes, samples, &c->decoded, &c->distance); !s.ok()) return s;
   c->point.relative_l2 = c->distance.relative(c->distance.l2);
   c->point.relative_hausdorff = c->distance.relative(c->distance.hausdorff);
   return Status::Ok();
@@ -93,31 +89,43 @@ class Search {
   double best_error_ = std::numeric_limits<double>::infinity();
 };
 
-// Codes (bits, scale) and measures it if it can still beat the best; true
-// in *go_larger when only a larger scale can do better (it meets the error,
-// or is no smaller than the best).
+// Measures `c` if it can still beat the best; true in *go_larger when only a
+// larger scale can do better (it meets the error, or is no smaller than the
+// best).
+Status consider(Candidate* c, Search* search, bool* go_larger) {
+  *go_larger = true;
+  if (!search->worth_measuring(*c)) {
+    search->skip(*c);
+    return Status::Ok();
+  }
+  if (Status st = search->measure_and_keep(c); !st.ok()) return st;
+  *go_larger = search->meets(*c);
+  return Status::Ok();
+}
+
 Status try_candidate(const ProgressiveEncoder& encoder, const EncodeOptions& options, int bits, double scale,
                      Search* search, bool* go_larger) {
   Candidate c;
   if (Status st = code_candidate(encoder, options, bits, scale, &c); !st.ok()) return st;
-  *go_larger = true;
-  if (!search->worth_measuring(c)) {
-    search->skip(c);
-    return Status::Ok();
-  }
-  if (Status st = search->measure_and_keep(&c); !st.ok()) return st;
-  *go_larger = search->meets(c);
-  return Status::Ok();
+  return consider(&c, search, go_larger);
 }
 
-// Error target, one K: the most accurate candidate decides whether K can
-// reach the error; then per bits the largest scale first (the cheapest
-// file: when it meets the error or is no smaller than the best, the other
-// scales of those bits cannot win), else a binary search for the largest
-// scale that meets it (the error grows with the scale, the bytes fall).
+// Error target, one K. Its cheapest file first (fewest bits, largest
+// scale): no smaller than the best, and K cannot win. Then its most
+// accurate (most bits, smallest scale) decides whether K can reach the
+// error at all. Then per bits the largest scale first (the cheapest file of
+// those bits: when it meets the error or is no smaller than the best, the
+// other scales cannot win), else a binary search for the largest scale that
+// meets it (the error grows with the scale, the bytes fall).
 Status search_error(const ProgressiveEncoder& encoder, const EncodeOptions& options, const RateSearch& s,
                     Search* search) {
-  Candidate top;
+  Candidate cheapest, top;
+  if (Status st = code_candidate(encoder, options, s.position_bits.front(), s.step_scales.back(), &cheapest); !st.ok())
+    return st;
+  if (!search->worth_measuring(cheapest)) {
+    search->skip(cheapest);
+    return Status::Ok();
+  }
   if (Status st = code_candidate(encoder, options, s.position_bits.back(), s.step_scales.front(), &top); !st.ok())
     return st;
   if (Status st = search->measure_and_keep(&top); !st.ok()) return st;
@@ -125,8 +133,10 @@ Status search_error(const ProgressiveEncoder& encoder, const EncodeOptions& opti
   const int largest = int(s.step_scales.size()) - 1;
   for (int bits : s.position_bits) {
     bool go_larger = false;
-    if (Status st = try_candidate(encoder, options, bits, s.step_scales.back(), search, &go_larger); !st.ok())
-      return st;
+    const Status first = bits == s.position_bits.front()
+                             ? consider(&cheapest, search, &go_larger)
+                             : try_candidate(encoder, options, bits, s.step_scales.back(), search, &go_larger);
+    if (!first.ok()) return first;
     if (go_larger) continue;
     int lo = 0, hi = largest - 1;
     while (lo <= hi) {
@@ -178,6 +188,15 @@ RateSearch filled(RateSearch s, const EncodeOptions& options) {
 
 }  // namespace
 
+Status decode_and_measure(const Mesh& reference, const std::vector<uint8_t>& bytes, size_t samples,
+                          DecodedFile* decoded, MeshDistance* distance) {
+  if (Status s = decode(bytes.data(), bytes.size(), decoded, DecoderLimits::unlimited()); !s.ok())
+    return Status(s.code(), "internal error, own output does not decode: " + s.message());
+  MeshDistanceOptions options;
+  options.samples = samples;
+  return measure_mesh_distance(reference, decoded->mesh, options, distance);
+}
+
 int default_progressive_levels(size_t triangles) {
   int k = 1;
   while (k < 8 && (triangles >> (2 * (k + 1))) >= 1000) ++k;
@@ -215,15 +234,6 @@ Status choose_progressive(const Mesh& mesh, const EncodeOptions& options, const 
       continue;
     }
     if (stage) stage("K = " + std::to_string(levels) + ": code and measure");
-    if (target.error_target()) {  // K's cheapest file no smaller than the best: K cannot win
-      Candidate cheapest;
-      if (Status st = code_candidate(encoder, o, s.position_bits.front(), s.step_scales.back(), &cheapest); !st.ok())
-        return st;
-      if (!state.worth_measuring(cheapest)) {
-        state.skip(cheapest);
-        continue;
-      }
-    }
     const Status st = target.error_target() ? search_error(encoder, o, s, &state) : search_size(encoder, o, s, &state);
     if (!st.ok()) return st;
   }

@@ -26,6 +26,12 @@ struct RateTarget {
   bool error_target() const { return max_relative_l2 > 0 || max_relative_hausdorff > 0; }
 };
 
+// Decodes the encoder's own output `bytes` (no decoder limits) and measures
+// the decoded mesh against `reference` with `samples` area samples; a file
+// that does not decode is an internal error.
+Status decode_and_measure(const Mesh& reference, const std::vector<uint8_t>& bytes, size_t samples,
+                          DecodedFile* decoded, MeshDistance* distance);
+
 // `qmc encode --progressive`'s K when --levels is not given: the most levels
 // (up to 8) whose base keeps at least 1,000 of the mesh's triangles, at least
 // 1. Smaller bases lose accuracy fast: armadillo (29,170 triangles) at K = 3
