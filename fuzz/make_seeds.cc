@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
   }
   const fs::path out = argv[2];
   for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "polygon_connectivity", "polygon_coding7", "positions",
-                        "predicted_positions",
+                        "predicted_positions", "geometry_order",
                         "huffman", "roundtrip", "order", "loop_levels", "gim_file", "gim_plane", "attributes", "face_labels"})
     fs::create_directories(out / t);
   int n = 0;
@@ -138,6 +138,7 @@ int main(int argc, char** argv) {
           pair.insert(pair.end(), conn.begin(), conn.end());
           pair.insert(pair.end(), payload, payload + length);
           write(out / "predicted_positions" / name, pair.data(), pair.size());
+          write(out / "geometry_order" / name, pair.data(), pair.size());
         }
       }
       if (type == qmc::kChunkConnectivity && length <= 0xFFFF) conn.assign(payload, payload + length);

@@ -1,8 +1,9 @@
 // libFuzzer target: a POSN payload (spec sections 6 and 14) against the faces
 // of a CONN payload in the same input: u16le length of the CONN payload, the
-// CONN payload, then the POSN payload. Method 1 predicts every vertex from
-// those faces (14.2-14.3), so any face list CONN accepts, degenerate faces
-// and unreferenced vertices included, reaches the predictor. Accepted
+// CONN payload, then the POSN payload. Methods 1, 3 and 4 predict every
+// vertex from those faces (14.2-14.3; method 4 in 14.6's order, renamed),
+// so any face list CONN accepts, degenerate faces and unreferenced vertices
+// included, reaches the predictor. Accepted
 // values must lie on the grid the payload declares, every output coordinate
 // must be finite, and decoding twice must give the same values.
 #include <cmath>

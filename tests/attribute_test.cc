@@ -180,6 +180,31 @@ TEST(AttributeRoundTrip, RandomTablesOnEveryCoder) {
   EXPECT_EQ(meshes, 240);
 }
 
+// 15.9: coding 4 carries coding 0's integers in 14.6's order over the
+// attribute mesh; the encoder keeps it where smaller, and keeps coding 0
+// when asked to (files for decoders before coding 4).
+TEST(AttributeEncoder, GeometryOrderCodingCarriesCodingZerosValues) {
+  Mesh sphere = tools::triangulated(tools::make_refined_sphere(3));
+  tools::add_chart_texcoords(&sphere);
+  EncodeOptions options;
+  EncodeStats stats;
+  std::vector<uint8_t> file;
+  ASSERT_TRUE(encode(sphere, options, &file, &stats).ok());
+  ASSERT_EQ(stats.attributes.size(), 1u);
+  EXPECT_TRUE(stats.attributes[0].geometry_order);
+  const DecodedFile four = decode_or_fail(file);
+  EXPECT_EQ(four.attribute_codings[0].coding, 4);
+  options.attribute_geometry_order = false;
+  EncodeStats zero_stats;
+  ASSERT_TRUE(encode(sphere, options, &file, &zero_stats).ok());
+  EXPECT_FALSE(zero_stats.attributes[0].geometry_order);
+  EXPECT_LT(stats.attributes[0].value_bytes, zero_stats.attributes[0].value_bytes);
+  const DecodedFile zero = decode_or_fail(file);
+  EXPECT_EQ(zero.attribute_codings[0].coding, 0);
+  EXPECT_EQ(four.mesh.attributes[0].values, zero.mesh.attributes[0].values);
+  EXPECT_EQ(four.mesh.attributes[0].corner_values, zero.mesh.attributes[0].corner_values);
+}
+
 // Spec 16: labels in runs, unlabelled faces, through every coder, in coder
 // order and with oRDR; the encoder refuses a label past its table.
 TEST(FaceLabels, RoundTripThroughEveryCoder) {

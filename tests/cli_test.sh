@@ -61,8 +61,16 @@ check encode-per-axis-deltas 0 "$qmc" encode "$work/torus.obj" "$work/deltas.qmc
 contains encode-per-axis-deltas-reported "$work/out" "deltas (spec 6), per-axis grid"
 check info-deltas 0 "$qmc" info "$work/deltas.qmc"
 contains info-deltas-method "$work/out" "deltas (spec 6), 12 bits/axis"
-# --format 1.N: files older decoders read (spec 11: 1.6 with POSN method 1 for 3, 1.5 also without polygon
-# coding 7, 1.4 also without predicted positions).
+# --format 1.N: files older decoders read (spec 11: 1.7 with the label order instead of POSN method 4, 1.6
+# with method 1 for 3, 1.5 also without polygon coding 7, 1.4 also without predicted positions).
+"$meshgen" torus 40 30 "$work/torus1200.obj" >/dev/null  # 1,200 vertices: method 4 whatever its size (14.5)
+check format-1.8 0 "$qmc" encode "$work/torus1200.obj" "$work/f18.qmc" --quiet
+check format-1.8-info 0 "$qmc" info "$work/f18.qmc"
+contains format-1.8-written "$work/out" "format 1.8"
+contains format-1.8-method-4 "$work/out" "predicted (spec 14, method 4: geometry order)"
+check format-1.7 0 "$qmc" encode "$work/torus1200.obj" "$work/f17.qmc" --format 1.7 --quiet
+check format-1.7-info 0 "$qmc" info "$work/f17.qmc"
+contains format-1.7-label-order "$work/out" "predicted (spec 14, method 1)"
 check format-1.6 0 "$qmc" encode "$work/torus.obj" "$work/f16.qmc" --format 1.6 --quiet
 check format-1.6-info 0 "$qmc" info "$work/f16.qmc"
 contains format-1.6-written "$work/out" "format 1.6"

@@ -5,10 +5,12 @@
 
 #include <cmath>
 
+#include "bitio/geometry_order.h"
 #include "bitio/position_coding.h"
 #include "bitio/range_coder.h"
 #include "bitio/vertex_prediction.h"
 #include "encoder/position_encoder.h"
+#include "geometry_order_rule.h"
 #include "mesh_generators.h"
 #include "qmc/decoder.h"
 #include "qmc/encoder.h"
@@ -251,14 +253,30 @@ TEST(PredictedPositions, RoundTripsGeneratedMeshes) {
       EncodeOptions options;
       options.position_bits = bits;
       options.position_method = PositionMethod::kPredicted;
-      // Method 3 (1.7) under 1,000 vertices (14.5), or method 1 (1.5, 1.6 with coding 7).
+      // Method 3 (1.7) under 1,000 vertices (14.5), or method 1 (1.5, 1.6 with coding 7); with the
+      // geometry order (at 4 and 20 bits) method 4 (1.8), under 1,000 vertices only when smaller.
       options.graded_class_start = bits != 12;
+      options.geometry_order = bits != 12;
       EncodeStats stats;
       const DecodedFile file = decode_all(encode_with(meshes[i], options, &stats));
-      EXPECT_EQ(stats.positions.method, options.graded_class_start && meshes[i].vertex_count() < 1000 ? 3 : 1);
+      const bool small = meshes[i].vertex_count() < 1000;
+      const int label_method = options.graded_class_start && small ? 3 : 1;
+      if (options.geometry_order && !small)
+        EXPECT_EQ(stats.positions.method, 4);
+      else if (options.geometry_order)
+        EXPECT_TRUE(stats.positions.method == 4 || stats.positions.method == label_method) << stats.positions.method;
+      else
+        EXPECT_EQ(stats.positions.method, label_method);
       EXPECT_EQ(file.quantization.method, stats.positions.method);
-      EXPECT_EQ(file.version_minor,
-                stats.positions.method == 3 ? 7 : stats.polygon.coding == kPolygonContextCoded ? 6 : 5);
+      EXPECT_EQ(file.quantization.graded_start, options.graded_class_start && small);
+      // Every vertex counted once by its kind, whichever order was kept (14.5).
+      uint32_t counted = 0;
+      for (uint32_t n : stats.positions.vertices_by_kind) counted += n;
+      EXPECT_EQ(counted, file.mesh.vertex_count()) << "mesh " << i;
+      EXPECT_EQ(file.version_minor, stats.positions.method == 4   ? 8
+                                    : stats.positions.method == 3 ? 7
+                                    : stats.polygon.coding == kPolygonContextCoded ? 6
+                                                                                   : 5);
       const tools::RoundTripReport r = tools::check_round_trip(meshes[i], file);
       EXPECT_TRUE(r.faces_equal) << "mesh " << i << ": " << r.face_mismatch;
       EXPECT_TRUE(r.positions_within_bound) << "mesh " << i << " at " << bits << " bits: " << r.position_mismatch;
@@ -271,9 +289,11 @@ TEST(PredictedPositions, RoundTripsGeneratedMeshes) {
 
 // 14.5: the encoder starts graded (method 3) under 1,000 vertices only.
 TEST(PredictedPositions, GradedStartUnderAThousandVertices) {
+  EncodeOptions label_order;
+  label_order.geometry_order = false;
   for (const auto& [rings, expected] : {std::pair{30u, 3}, std::pair{40u, 1}}) {  // 900 and 1,200 vertices
     EncodeStats stats;
-    const DecodedFile file = decode_all(encode_with(tools::make_torus(rings, 30), EncodeOptions{}, &stats));
+    const DecodedFile file = decode_all(encode_with(tools::make_torus(rings, 30), label_order, &stats));
     EXPECT_EQ(file.mesh.vertex_count(), 30u * rings);
     EXPECT_EQ(stats.positions.method, expected);
     EXPECT_EQ(file.quantization.method, expected);
@@ -289,6 +309,7 @@ TEST(PredictedPositions, PerAxisGridGivesMethodZerosPositions) {
   const DecodedFile deltas = decode_all(encode_with(torus, options));
   EXPECT_EQ(deltas.quantization.method, 0);
   options.position_method = PositionMethod::kPredicted;
+  options.geometry_order = false;
   for (bool graded : {false, true}) {
     options.graded_class_start = graded;
     const DecodedFile predicted = decode_all(encode_with(torus, options));
@@ -358,6 +379,94 @@ TEST(PredictedPositions, CoincidentVerticesFallBackToMethodZero) {
   ASSERT_EQ(file.mesh.vertex_count(), 6000u);
   EXPECT_EQ(file.mesh.positions[0], 1.5f);
   EXPECT_EQ(file.mesh.positions[3 * 5999 + 1], -2.f);
+}
+
+// The faces with every vertex u renamed rank(u) (spec 14.6).
+Mesh renamed_by(const Mesh& m, const std::vector<uint32_t>& order) {
+  std::vector<uint32_t> rank(order.size());
+  for (uint32_t i = 0; i < order.size(); ++i) rank[order[i]] = i;
+  Mesh out = faces(m.face_sizes, m.corners);
+  for (uint32_t& c : out.corners) c = rank[c];
+  return out;
+}
+
+// Spec 14.6's example: vertex 4 closes two faces before 3 closes one.
+TEST(GeometryOrder, SpecExample) {
+  const Mesh m = faces({3, 3, 3, 3}, {0, 1, 2, 0, 2, 4, 1, 4, 2, 0, 3, 1});
+  const std::vector<uint32_t> order = geometry_order(5, m.face_sizes, m.corners);
+  EXPECT_EQ(order, (std::vector<uint32_t>{0, 1, 2, 4, 3}));
+  EXPECT_EQ(renamed_by(m, order).corners, (std::vector<uint32_t>{0, 1, 2, 0, 2, 3, 1, 3, 2, 0, 4, 1}));
+}
+
+// 14.6: a face with w at two corners does not close on w; vertex 2, which
+// no face uses, comes by the last branch once nothing closes.
+TEST(GeometryOrder, FaceWithAVertexTwiceClosesOnNothing) {
+  const Mesh m = faces({4, 3}, {0, 1, 3, 3, 0, 1, 4});
+  const std::vector<uint32_t> order = geometry_order(5, m.face_sizes, m.corners);
+  EXPECT_EQ(order, (std::vector<uint32_t>{0, 1, 4, 2, 3}));  // counting face 0 for 3 gives 0, 1, 3, 4, 2
+}
+
+// The sets of labels give the order the rule's text gives, on soups with
+// repeated corners, unused vertices and many parts.
+TEST(GeometryOrder, SetsFollowTheRule) {
+  std::vector<Mesh> meshes = {tools::triangulated(tools::make_refined_sphere(2))};
+  for (uint64_t seed = 1; seed <= 60; ++seed) {
+    tools::RandomSoupOptions o;
+    o.vertices = 20 + uint32_t(seed * 3);
+    o.faces = 10 + uint32_t(seed * 4);
+    o.max_degree = 3 + uint32_t(seed % 6);
+    meshes.push_back(tools::make_random_soup(seed, o));
+  }
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    const Mesh& m = meshes[i];
+    EXPECT_EQ(geometry_order(uint32_t(m.vertex_count()), m.face_sizes, m.corners),
+              fuzz::geometry_order_by_the_rule(uint32_t(m.vertex_count()), m))
+        << "mesh " << i;
+  }
+}
+
+// 14.6 defines method 4 by renaming the faces; the coder predicts over the
+// original faces with ranks instead. The two give the same stream.
+TEST(GeometryOrder, RanksGiveWhatRenamingGives) {
+  for (uint64_t seed = 1; seed <= 30; ++seed) {
+    tools::RandomSoupOptions o;
+    o.vertices = 40 + uint32_t(seed * 5);
+    o.faces = 30 + uint32_t(seed * 6);
+    const Mesh soup = seed % 3 == 0 ? tools::triangulated(tools::make_refined_sphere(2)) : tools::make_random_soup(seed, o);
+    const uint32_t n = uint32_t(soup.vertex_count());
+    std::vector<uint32_t> q(3 * size_t(n));
+    for (size_t k = 0; k < q.size(); ++k) q[k] = uint32_t((k * 2654435761u + seed * 97) % 4096);
+    const std::vector<uint32_t> order = geometry_order(n, soup.face_sizes, soup.corners);
+    std::vector<uint32_t> q_in_order(q.size());
+    for (uint32_t i = 0; i < n; ++i)
+      for (int a = 0; a < 3; ++a) q_in_order[3 * size_t(i) + a] = q[3 * size_t(order[i]) + a];
+    const Mesh faces_of_soup = faces(soup.face_sizes, soup.corners);
+    EXPECT_EQ(encode_predicted_grid(q, kTop, faces_of_soup, nullptr, CandidateChoice::kFewestBits, ClassStart::kFlat,
+                                    PredictionOrder::kGeometry),
+              encode_predicted_grid(q_in_order, kTop, renamed_by(soup, order), nullptr, CandidateChoice::kFewestBits))
+        << "seed " << seed;
+  }
+}
+
+// 14.6: method 4 carries the integers method 1 carries, in 1.8 files; a
+// 1.7 file (geometry_order off) keeps method 1.
+TEST(GeometryOrder, MethodFourCarriesMethodOnesIntegers) {
+  const Mesh sphere = tools::triangulated(tools::make_refined_sphere(3));  // 3,842 vertices: start 0
+  EncodeOptions options;
+  EncodeStats stats;
+  const DecodedFile four = decode_all(encode_with(sphere, options, &stats));
+  EXPECT_EQ(four.quantization.method, 4);
+  EXPECT_FALSE(four.quantization.graded_start);
+  EXPECT_EQ(four.version_minor, 8);
+  options.geometry_order = false;
+  const DecodedFile one = decode_all(encode_with(sphere, options));
+  EXPECT_EQ(one.quantization.method, 1);
+  EXPECT_EQ(one.version_minor, 6);
+  EXPECT_EQ(four.quantized, one.quantized);
+  EXPECT_EQ(four.mesh.positions, one.mesh.positions);
+  // Nearly every vertex of a closed mesh has two candidates or more in the geometry order.
+  const uint32_t several = stats.positions.vertices_by_kind[int(PredictionKind::kSeveral)];
+  EXPECT_GT(several, sphere.vertex_count() * 9 / 10);
 }
 
 }  // namespace

@@ -48,8 +48,9 @@ void print_predicted_positions(const DecodedFile& f) {
   const QuantizationInfo& q = f.quantization;
   const bool uniform = q.step[0] == q.step[1] && q.step[1] == q.step[2];
   const double bound = 0.5 * std::sqrt(q.step[0] * q.step[0] + q.step[1] * q.step[1] + q.step[2] * q.step[2]);
-  std::printf("positions    predicted (spec 14, method %d%s), %s grid, step %.9g", q.method,
-              q.method == 3 ? ": graded start" : "", uniform ? "uniform" : "per-axis", q.step[0]);
+  std::printf("positions    predicted (spec 14, method %d%s%s), %s grid, step %.9g", q.method,
+              q.method == 4 ? ": geometry order" : "", q.graded_start ? ": graded start" : "",
+              uniform ? "uniform" : "per-axis", q.step[0]);
   if (!uniform) std::printf(" %.9g %.9g", q.step[1], q.step[2]);
   std::printf(", tops %u %u %u, origin (%g %g %g); error bound %.6g\n", q.top[0], q.top[1], q.top[2], q.min[0],
               q.min[1], q.min[2], bound);
@@ -62,7 +63,8 @@ void print_predicted_positions(const DecodedFile& f) {
   PositionStats stats;
   const size_t payload =
       encode_predicted_positions(grid, f.mesh, &stats, CandidateChoice::kFewestBits,
-                                 q.method == 3 ? ClassStart::kGraded : ClassStart::kFlat)
+                                 q.graded_start ? ClassStart::kGraded : ClassStart::kFlat,
+                                 q.method == 4 ? PredictionOrder::kGeometry : PredictionOrder::kLabels)
           .size();
   static const char* const kKinds[4] = {"previous vertex", "neighbour mean", "one rule", "several rules"};
   std::printf("             re-encoded here: %zu bytes;", payload);
@@ -118,6 +120,7 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
                 a.name.c_str(), uint8_t(a.kind) < 4 ? kKinds[uint8_t(a.kind)] : "kind unknown to this revision",
                 a.components, a.value_count(), c.mapping == 0 ? "one per vertex" : "per corner",
                 c.coding == 0   ? "predicted on a grid"
+                : c.coding == 4 ? "predicted on a grid, geometry order"
                 : c.coding == 3 ? "unit normals, octahedral"
                                 : "exact binary32",
                 static_cast<unsigned long long>(c.chunk_bytes),

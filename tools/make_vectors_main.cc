@@ -32,6 +32,8 @@
 #include "chunk_list.h"
 #include "mesh_generators.h"
 #include "quad_disk_generator.h"
+#include "decoder/connectivity_decoder.h"
+#include "decoder/position_decoder.h"
 #include "decoder/spirale_reversi_decoder.h"
 #include "encoder/gim_writer.h"
 #include "encoder/polygon_connectivity_encoder.h"
@@ -45,11 +47,13 @@
 namespace {
 
 // The vectors published up to format 1.6 were written with POSN method 1
-// where they predict positions (format 1.7's method 3 came later); they
-// stay so.
+// where they predict positions (format 1.7's method 3 and 1.8's method 4
+// came later); they stay so.
 qmc::EncodeOptions format_1_6_options() {
   qmc::EncodeOptions options;
   options.graded_class_start = false;
+  options.geometry_order = false;
+  options.attribute_geometry_order = false;
   return options;
 }
 
@@ -2530,17 +2534,25 @@ void write_attribute_review_vectors(VectorWriter* w) {
   w->valid("valid_attr_octahedral_residual_half_the_grid", join_chunks(c), nullptr);
 }
 
-// Section 14.4.1 (format 1.7): POSN method 3, method 1 with the class
-// probabilities started graded by bucket, what `qmc encode` writes.
-std::vector<uint8_t> encode_posn3(const Mesh& mesh, int bits, qmc::PositionGrid grid = qmc::PositionGrid::kUniform) {
+// What `qmc encode` writes with predicted positions: POSN method 3 as
+// format 1.7 wrote it (the label order, 14.4.1's graded start under 1,000
+// vertices), or method 4 as 1.8 writes it (the geometry order, 14.6).
+std::vector<uint8_t> encode_posn_as_written(const Mesh& mesh, int method, int bits,
+                                            qmc::PositionGrid grid = qmc::PositionGrid::kUniform) {
   qmc::EncodeOptions options;
   options.position_bits = bits;
   options.position_grid = grid;
   options.position_method = qmc::PositionMethod::kPredicted;
   options.candidate_choice = qmc::CandidateChoice::kFewestBits;
-  options.polygon_context_coding = true;
-  options.graded_class_start = true;
-  return encode_posn_method(mesh, options, 3);
+  options.geometry_order = method == 4;
+  options.attribute_geometry_order = false;  // aTTR coding 4 came after these vectors
+  return encode_posn_method(mesh, options, method);
+}
+
+// Section 14.4.1 (format 1.7): POSN method 3, method 1 with the class
+// probabilities started graded by bucket.
+std::vector<uint8_t> encode_posn3(const Mesh& mesh, int bits, qmc::PositionGrid grid = qmc::PositionGrid::kUniform) {
+  return encode_posn_as_written(mesh, 3, bits, grid);
 }
 
 void write_posn3_vectors(VectorWriter* w) {
@@ -2583,6 +2595,174 @@ void write_posn3_vectors(VectorWriter* w) {
   w->invalid("invalid_posn3_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
 }
 
+// A progressive file whose base POSN (method 1 on 6.1's grid) is written
+// again as method 4 (14.6, start 0): the same integers, so the levels do
+// not change; QHDR says 1.8.
+std::vector<uint8_t> with_method_4_base(const std::vector<uint8_t>& file) {
+  Chunks c = split_chunks(file);
+  const Chunk& conn = c[find_chunk(c, qmc::kChunkConnectivity)];
+  Chunk& posn = c[find_chunk(c, qmc::kChunkPositions)];
+  Mesh faces;
+  uint32_t vertex_count = 0;
+  qmc::ConnectivityMethod method;
+  qmc::QuantizationInfo info;
+  qmc::QuantizedPositions grid;
+  std::vector<float> positions;
+  if (!qmc::decode_connectivity(conn.payload.data(), conn.payload.size(), &vertex_count, &method, &faces).ok() ||
+      !qmc::decode_positions(posn.payload.data(), posn.payload.size(), faces, vertex_count, &info, &grid.q, &positions)
+           .ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: the progressive base does not decode\n");
+    std::exit(3);
+  }
+  grid.min = info.min;
+  grid.step = info.step;
+  grid.top = info.top;
+  posn.payload = qmc::encode_predicted_positions(grid, faces, nullptr, qmc::CandidateChoice::kFewestBits,
+                                                 qmc::ClassStart::kFlat, qmc::PredictionOrder::kGeometry);
+  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, 8};
+  return join_chunks(c);
+}
+
+// Section 14.6 (format 1.8): POSN method 4, the decisions of method 1 or 3
+// in the geometry order.
+std::vector<uint8_t> encode_posn4(const Mesh& mesh, int bits, qmc::PositionGrid grid = qmc::PositionGrid::kUniform) {
+  return encode_posn_as_written(mesh, 4, bits, grid);
+}
+
+void write_posn4_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  // Over 1,000 vertices (start 0): triangles at 12 and 20 bits, quads
+  // (polygon runs), the per-axis grid, and a soup of many parts, faces
+  // with a vertex twice (which close on no vertex, 14.6) and vertices no
+  // face uses: 14.6's second rule.
+  const Mesh sphere = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(3)), 41, 0.006f);
+  w->valid("valid_posn4_sphere_12_bits", encode_posn4(sphere, 12), &sphere);
+  w->valid("valid_posn4_sphere_20_bits", encode_posn4(sphere, 20), &sphere);
+  const Mesh quads = perturbed(qmc::tools::make_torus(40, 30), 43, 0.003f);
+  w->valid("valid_posn4_quad_torus", encode_posn4(quads, 14), &quads);
+  w->valid("valid_posn4_per_axis_grid", encode_posn4(quads, 12, qmc::PositionGrid::kPerAxis), &quads);
+  qmc::tools::RandomSoupOptions soup_options;
+  soup_options.vertices = 1100;
+  soup_options.faces = 900;
+  soup_options.unreferenced = 30;
+  const Mesh soup = qmc::tools::make_random_soup(47, soup_options);
+  w->valid("valid_posn4_soup", encode_posn4(soup, 10), &soup);
+  // Under 1,000 vertices with start 1 (14.4.1's probabilities).
+  const Mesh small = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(2)), 53, 0.01f);
+  w->valid("valid_posn4_graded_start", encode_posn4(small, 12), &small);
+  // 15.4: an aTTR's values keep the label order whatever POSN's method.
+  Mesh textured = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(3)), 59, 0.006f);
+  qmc::tools::add_chart_texcoords(&textured);
+  w->valid("valid_posn4_with_texcoords", encode_posn4(textured, 12), &textured);
+  // 15.7: normals predicted from q by label, after 14.6's order is undone.
+  Mesh with_normals = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(3)), 61, 0.006f);
+  qmc::tools::add_vertex_normals(&with_normals);
+  w->valid("valid_posn4_with_normals", encode_posn4(with_normals, 12), &with_normals);
+  // 4.5: oRDR restores the input's order of a method-4 file.
+  const Mesh scrambled = qmc::tools::make_scrambled(sphere, 67);
+  qmc::EncodeOptions keep;
+  keep.keep_order = true;
+  w->valid("valid_ordr_posn4_scrambled", encode_with(scrambled, keep, "scrambled method-4 sphere"), &scrambled);
+  // 12.2: a progressive file's base mesh in method 4.
+  w->valid("valid_posn4_loop_base", with_method_4_base(loop_file(qmc::tools::triangulated(qmc::tools::make_torus(9, 6)), 2,
+                                                                 qmc::tools::torus_targets(1, 0.35), 12,
+                                                                 qmc::PositionMethod::kPredicted)),
+           nullptr);
+
+  // The rules of 14.1 and 14.4 on method 4's path: header as 14.1, varint V,
+  // 0x84, start, grid, origin 12 bytes, step 8, three tops of 2 bytes at
+  // 12 bits, then the stream.
+  const ChunkReplacer with_posn(encode_posn4(sphere, 12), qmc::kChunkPositions);
+  const std::vector<uint8_t> payload = with_posn.payload();
+  std::vector<uint8_t> count;
+  qmc::put_varint(&count, sphere.vertex_count());
+  const size_t start = count.size() + 1, tops = start + 2 + 12 + 8, stream = tops + 6;
+  w->invalid("invalid_posn4_start_missing", with_posn({payload.begin(), payload.begin() + start}),
+             ErrorCode::kBadChunkPayload);
+  std::vector<uint8_t> p = payload;
+  p[start] = 2;
+  w->invalid("invalid_posn4_start_2", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn4_truncated_stream", with_posn({payload.begin(), payload.end() - 8}), ErrorCode::kTruncated);
+  p = payload;
+  p.insert(p.end(), {0x55, 0x55, 0x55, 0x55, 0x55, 0x55});
+  w->invalid("invalid_posn4_bytes_after_stream", with_posn(p), ErrorCode::kBadChunkPayload);
+  // Tops of 1: a residual the grid cannot hold.
+  p = {payload.begin(), payload.begin() + tops};
+  for (int a = 0; a < 3; ++a) qmc::put_varint(&p, 1);
+  p.insert(p.end(), payload.begin() + stream, payload.end());
+  w->invalid("invalid_posn4_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
+  // 14.1's bound before the order is computed: V = 4,800 > 512 (L + 8)
+  // with no stream byte.
+  const Mesh large = qmc::tools::make_torus(80, 60);
+  const ChunkReplacer large_posn(encode_posn4(large, 12), qmc::kChunkPositions);
+  std::vector<uint8_t> large_count;
+  qmc::put_varint(&large_count, large.vertex_count());
+  const size_t large_stream = large_count.size() + 2 + 1 + 12 + 8 + 6;
+  w->invalid("invalid_posn4_stream_too_short",
+             large_posn({large_posn.payload().begin(), large_posn.payload().begin() + large_stream}),
+             ErrorCode::kLimitExceeded);
+}
+
+// Section 15.9: aTTR coding 4, what `qmc encode` writes when it is the
+// smaller; the generator fails if the encoder kept coding 0 instead.
+std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, const char* what) {
+  qmc::EncodeOptions options;
+  options.geometry_order = posn_geometry_order;
+  std::vector<uint8_t> out;
+  qmc::EncodeStats stats;
+  if (qmc::Status s = qmc::encode(mesh, options, &out, &stats);
+      !s.ok() || stats.attributes.empty() || !stats.attributes[0].geometry_order) {
+    std::fprintf(stderr, "qmc-make-vectors: %s: not aTTR coding 4 (%s)\n", what, s.to_string().c_str());
+    std::exit(3);
+  }
+  return out;
+}
+
+void write_attribute_coding4_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  // Texture coordinates with seams (mapping 1), over POSN method 4 and
+  // over method 1: the order is the attribute mesh's own.
+  Mesh textured = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(3)), 71, 0.006f);
+  qmc::tools::add_chart_texcoords(&textured);
+  const std::vector<uint8_t> over_posn4 = encode_coding4(textured, true, "coding 4 texcoords");
+  w->valid("valid_attr_coding4_texcoords", over_posn4, &textured);
+  w->valid("valid_attr_coding4_over_posn1", encode_coding4(textured, false, "coding 4 over method 1"), &textured);
+  // One value per vertex (mapping 0): colours from the positions.
+  Mesh coloured = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(3)), 73, 0.006f);
+  MeshAttribute colour{"colour", qmc::AttributeKind::kColour, 3, {}, coloured.corners};
+  for (float x : coloured.positions) colour.values.push_back(0.5f + 0.35f * x);
+  coloured.attributes.push_back(colour);
+  w->valid("valid_attr_coding4_per_vertex_colours", encode_coding4(coloured, true, "coding 4 colours"), &coloured);
+
+  // 15.4's rules on coding 4's path.
+  Chunks c = split_chunks(over_posn4);
+  const size_t at = find_chunk(c, qmc::kChunkAttribute);
+  const std::vector<uint8_t> payload = c[at].payload;
+  const auto with_payload = [&](std::vector<uint8_t> p) {
+    Chunks d = c;
+    d[at].payload = std::move(p);
+    return join_chunks(d);
+  };
+  w->invalid("invalid_attr_coding4_truncated", with_payload({payload.begin(), payload.end() - 8}), ErrorCode::kTruncated);
+  // Tops of 1: a value the grid cannot hold. After the mapping stream: grid
+  // 0, two f32 origins, one f64 step, two tops.
+  qmc::ByteReader r(payload.data(), payload.size());
+  r.skip(attr_field_offsets(payload).after_coding);
+  uint64_t mapping_bytes = 0;
+  r.get_varint(&mapping_bytes);
+  r.skip(mapping_bytes);
+  const size_t tops = r.position() + 1 + 8 + 8;
+  r.skip(tops - r.position());
+  uint64_t top = 0;
+  r.get_varint(&top);
+  r.get_varint(&top);
+  std::vector<uint8_t> p(payload.begin(), payload.begin() + std::ptrdiff_t(tops));
+  qmc::put_varint(&p, 1);
+  qmc::put_varint(&p, 1);
+  p.insert(p.end(), payload.begin() + std::ptrdiff_t(r.position()), payload.end());
+  w->invalid("invalid_attr_coding4_value_outside_grid", with_payload(p), ErrorCode::kBadSymbol);
+}
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: qmc-make-vectors DIR   (writes DIR/MANIFEST and DIR/vectors/*.qmc)\n");
@@ -2615,6 +2795,8 @@ int main(int argc, char** argv) {
   write_face_label_vectors(&w);
   write_attribute_review_vectors(&w);
   write_posn3_vectors(&w);
+  write_posn4_vectors(&w);
+  write_attribute_coding4_vectors(&w);
   w.finish();
   return 0;
 }

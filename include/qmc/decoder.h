@@ -28,7 +28,8 @@ struct ChunkInfo {
 std::string chunk_type_name(uint32_t type);
 
 struct QuantizationInfo {
-  int method = 0;                 // POSN method: 0 deltas (section 6), 1 predicted (section 14)
+  int method = 0;                 // POSN method: 0 deltas (section 6), 1, 3 or 4 predicted (section 14)
+  bool graded_start = false;      // methods 3 and 4 with start 1: 14.4.1's class probabilities
   int bits = 0;                   // method 0: n of section 6.1; method 1: bit length of the largest top
   std::array<float, 3> min{};     // method 0: the stored box; method 1: the origin
   std::array<float, 3> max{};     // method 1: the grid's last point, float(min + top x step)
@@ -87,11 +88,14 @@ struct GeometryImageData {
 // described by attribute_codings[i]).
 struct AttributeCoding {
   uint8_t mapping = 0;  // 0 per vertex, 1 per corner (15.1)
-  uint8_t coding = 0;   // 0 predicted on a grid (15.4), 1 exact binary32 (15.5), 3 octahedral normals (15.7)
-  std::array<float, 3> origin{};   // coding 0: value = origin + q x step, per component
+  uint8_t coding = 0;   // 0 predicted on a grid (15.4), 1 exact binary32 (15.5), 3 octahedral normals (15.7),
+                        // 4 as 0 in the geometry order (15.9)
+  std::array<float, 3> origin{};   // codings 0 and 4: value = origin + q x step, per component
   std::array<double, 3> step{};
   std::array<uint32_t, 3> top{};   // coding 3: 2^B - 1 twice, then 0
   uint64_t chunk_bytes = 0;  // the aTTR chunk, header and CRC included
+  // Codings 0 and 4: values on the grid of origin, step and top.
+  bool on_grid() const { return coding == 0 || coding == 4; }
 };
 
 struct DecodedFile {

@@ -41,6 +41,23 @@ void add_candidate(VertexPrediction* out, int64_t w, const uint32_t* q, uint32_t
 // 14.2: the corners of a vertex examined for a neighbour across an edge.
 constexpr int kMaxExamined = 8;
 
+// Whether a vertex u is decoded before the vertex v predicted: u < v in
+// label order (14.2), rank(u) < rank(v) in the geometry order (14.6), where
+// predicting over the original faces gives what 14.6's renamed faces give.
+struct LabelOrder {
+  uint32_t key(uint32_t u) const { return u; }
+};
+struct RankOrder {
+  const uint32_t* rank;
+  uint32_t key(uint32_t u) const { return rank[u]; }
+};
+template <class Order>
+struct Visit {
+  Order order;
+  uint32_t v, key;  // the vertex predicted and order.key(v)
+  bool before(uint32_t u) const { return order.key(u) < key; }
+};
+
 // 14.2's bounded search: calls rule(k) for each corner k examined for w
 // next to u (in triangles or in larger faces) that is not in `corner`'s face.
 template <class Rule>
@@ -56,35 +73,39 @@ void search_across(const VertexCorners& m, uint32_t u, uint32_t w, bool triangle
 
 // 14.3.1, across-edge parallelogram: the triangles over the edge (a, b)
 // opposite v's corner. In a triangle along(k, 2) is along(k, -1), one step.
-void add_parallelograms(const VertexCorners& m, uint32_t corner, uint32_t v, const uint32_t* q, VertexPrediction* c) {
+template <class Order>
+void add_parallelograms(const VertexCorners& m, uint32_t corner, const Visit<Order>& at, const uint32_t* q,
+                        VertexPrediction* c) {
   const uint32_t a = m.along(corner, 1), b = m.along(corner, -1);
-  if (a >= v || b >= v || a == b) return;
+  if (!at.before(a) || !at.before(b) || a == b) return;
   search_across(m, a, b, true, corner, c, [&](uint32_t k) {
     const uint32_t o = m.along(k, 1) == b ? m.along(k, -1) : m.along(k, 1);
-    if (o < v && o != a && o != b) add_candidate(c, kWeightParallelogram, q, a, b, o, kOne);
+    if (at.before(o) && o != a && o != b) add_candidate(c, kWeightParallelogram, q, a, b, o, kOne);
   });
 }
 
 // 14.3.1, polygon run: the three vertices before v along the face (direction -1)
 // or after it (+1), all decoded: p3 + c_k (p1 - p2).
-bool add_polygon_run(const VertexCorners& m, uint32_t corner, int direction, uint32_t v, const uint32_t* q,
-                     VertexPrediction* c) {
+template <class Order>
+bool add_polygon_run(const VertexCorners& m, uint32_t corner, int direction, const Visit<Order>& at,
+                     const uint32_t* q, VertexPrediction* c) {
   const uint32_t p1 = m.along(corner, direction), p2 = m.along(corner, 2 * direction),
                  p3 = m.along(corner, 3 * direction);
-  if (p1 >= v || p2 >= v || p3 >= v || c->candidates >= kMaxCandidates) return false;
+  if (!at.before(p1) || !at.before(p2) || !at.before(p3) || c->candidates >= kMaxCandidates) return false;
   add_candidate(c, kWeightPolygon, q, p3, p1, p2, polygon_coefficient(m.degree(corner)));
   return true;
 }
 
 // 14.3.1, strip across an edge: the polygon over the edge (p1, p2)
 // continued to v, 2 p1 - y, y being p1's other neighbour in that polygon.
-void add_strip(const VertexCorners& m, uint32_t corner, int direction, uint32_t v, const uint32_t* q,
+template <class Order>
+void add_strip(const VertexCorners& m, uint32_t corner, int direction, const Visit<Order>& at, const uint32_t* q,
                VertexPrediction* c) {
   const uint32_t p1 = m.along(corner, direction), p2 = m.along(corner, 2 * direction);
-  if (p1 >= v || p2 >= v || p1 == p2) return;
+  if (!at.before(p1) || !at.before(p2) || p1 == p2) return;
   search_across(m, p1, p2, false, corner, c, [&](uint32_t k) {
     const uint32_t y = m.along(k, 1) == p2 ? m.along(k, -1) : m.along(k, 1);
-    if (y < v && y != p1 && y != p2) add_candidate(c, kWeightStrip, q, p1, p1, y, kOne);
+    if (at.before(y) && y != p1 && y != p2) add_candidate(c, kWeightStrip, q, p1, p1, y, kOne);
   });
 }
 
@@ -151,14 +172,15 @@ void VertexCorners::build_links(bool triangles, std::vector<uint32_t>* first, st
 namespace {
 
 // 14.3.1: the candidates one corner of v contributes.
-void add_corner_candidates(const VertexCorners& m, uint32_t corner, uint32_t v, const uint32_t* q,
+template <class Order>
+void add_corner_candidates(const VertexCorners& m, uint32_t corner, const Visit<Order>& at, const uint32_t* q,
                            VertexPrediction* c) {
-  if (m.degree(corner) == 3) return add_parallelograms(m, corner, v, q, c);
-  bool run = add_polygon_run(m, corner, -1, v, q, c);
-  if (m.degree(corner) > 4) run = add_polygon_run(m, corner, +1, v, q, c) || run;
+  if (m.degree(corner) == 3) return add_parallelograms(m, corner, at, q, c);
+  bool run = add_polygon_run(m, corner, -1, at, q, c);
+  if (m.degree(corner) > 4) run = add_polygon_run(m, corner, +1, at, q, c) || run;
   if (run) return;
-  add_strip(m, corner, -1, v, q, c);
-  add_strip(m, corner, +1, v, q, c);
+  add_strip(m, corner, -1, at, q, c);
+  add_strip(m, corner, +1, at, q, c);
 }
 
 uint32_t residual_sum(const int32_t* r) {
@@ -167,10 +189,12 @@ uint32_t residual_sum(const int32_t* r) {
   return sum;
 }
 
-}  // namespace
-
-void predict_vertex(const VertexCorners& m, uint32_t v, const uint32_t* q, const int32_t* residual,
-                    const uint32_t top[3], VertexPrediction* out) {
+// 14.3 for the vertex at.v; `previous` is the vertex decoded just before
+// it, if any (14.3.2's fallback without neighbours).
+template <class Order>
+void predict(const VertexCorners& m, const Visit<Order>& at, const uint32_t* previous, const uint32_t* q,
+             const int32_t* residual, const uint32_t top[3], VertexPrediction* out) {
+  const uint32_t v = at.v;
   out->candidates = 0;
   out->scale = 0;
   int64_t neighbour_sum[3] = {0, 0, 0};
@@ -179,17 +203,17 @@ void predict_vertex(const VertexCorners& m, uint32_t v, const uint32_t* q, const
   for (const uint32_t* corner = m.begin(v); corner != m.end(v); ++corner) {
     for (int side = -1; side <= 1; side += 2) {  // 14.2: the neighbour list
       const uint32_t u = m.along(*corner, side);
-      if (u >= v) continue;
+      if (!at.before(u)) continue;
       for (int a = 0; a < 3; ++a) neighbour_sum[a] += q[3 * size_t(u) + a];
       activity += residual_sum(&residual[3 * size_t(u)]);
       ++neighbours;
     }
-    add_corner_candidates(m, *corner, v, q, out);
+    add_corner_candidates(m, *corner, at, q, out);
   }
   if (out->candidates > 0) out->scale /= uint64_t(out->candidates);
   // 14.3.2: the fallback and the activity of 14.4.
   for (int a = 0; a < 3; ++a) {
-    int64_t p = v > 0 ? int64_t(q[3 * size_t(v - 1) + a]) : int64_t(top[a] >> 1);
+    int64_t p = previous ? int64_t(q[3 * size_t(*previous) + a]) : int64_t(top[a] >> 1);
     if (neighbours > 0) p = floor_div(2 * neighbour_sum[a] + neighbours, 2 * neighbours);
     out->fallback[a] = std::clamp<int64_t>(p, 0, top[a]);
   }
@@ -197,7 +221,21 @@ void predict_vertex(const VertexCorners& m, uint32_t v, const uint32_t* q, const
   if (neighbours > 0)
     out->neighbour_activity = activity / uint64_t(neighbours);
   else
-    out->neighbour_activity = v > 0 ? residual_sum(&residual[3 * size_t(v - 1)]) : 0;
+    out->neighbour_activity = previous ? residual_sum(&residual[3 * size_t(*previous)]) : 0;
+}
+
+}  // namespace
+
+void predict_vertex(const VertexCorners& m, uint32_t v, const uint32_t* q, const int32_t* residual,
+                    const uint32_t top[3], VertexPrediction* out) {
+  const uint32_t previous = v - 1;
+  predict(m, Visit<LabelOrder>{{}, v, v}, v > 0 ? &previous : nullptr, q, residual, top, out);
+}
+
+void predict_vertex_in_order(const VertexCorners& m, const uint32_t* order, const uint32_t* rank, uint32_t i,
+                             const uint32_t* q, const int32_t* residual, const uint32_t top[3],
+                             VertexPrediction* out) {
+  predict(m, Visit<RankOrder>{{rank}, order[i], i}, i > 0 ? &order[i - 1] : nullptr, q, residual, top, out);
 }
 
 void select_candidates(VertexPrediction* p, unsigned mask, const uint32_t top[3]) {

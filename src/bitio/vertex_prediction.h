@@ -3,8 +3,9 @@
 // the decoder so the two cannot drift apart.
 //
 // Vertices are visited in label order, the order in which the connectivity
-// decoder first meets them; a vertex u is decoded before v when u < v. The
-// rules, all in integers:
+// decoder first meets them, so a vertex u is decoded before v when u < v;
+// or in the geometry order of 14.6, rank(u) < rank(v). The rules, all in
+// integers:
 //  - across an edge of a triangle, the parallelogram a + b - c (Touma and
 //    Gotsman, "Triangle mesh compression", 1998), every one available being
 //    averaged (multi-parallelogram);
@@ -53,6 +54,12 @@ class VertexCorners {
   void build(uint32_t vertex_count, const std::vector<uint32_t>& face_sizes, const std::vector<uint32_t>& corners);
 
   uint32_t vertex_count() const { return uint32_t(first_.size() - 1); }
+  uint32_t corner_count() const { return first_.back(); }
+  uint32_t face_count() const { return triangles_only_ ? corner_count() / 3 : uint32_t(face_start_.size() - 1); }
+  // The corners of face f are face_begin(f) .. face_end(f) - 1; vertex(k) is corner k's.
+  uint32_t face_begin(uint32_t f) const { return triangles_only_ ? 3 * f : face_start_[f]; }
+  uint32_t face_end(uint32_t f) const { return triangles_only_ ? 3 * f + 3 : face_start_[f + 1]; }
+  uint32_t vertex(uint32_t corner) const { return corners_[corner]; }
   const uint32_t* begin(uint32_t v) const { return corner_of_.data() + first_[v]; }
   const uint32_t* end(uint32_t v) const { return corner_of_.data() + first_[v + 1]; }
   // Face of a corner, its degree, and the vertex `step` corners further
@@ -152,6 +159,14 @@ struct VertexPrediction {
 // residuals of the decoded vertices (3 per vertex). Selects nothing yet.
 void predict_vertex(const VertexCorners& mesh, uint32_t v, const uint32_t* q, const int32_t* residual,
                     const uint32_t top[3], VertexPrediction* out);
+
+// The same in 14.6's geometry order: the vertex order[i] (rank[order[i]] = i),
+// the vertices decoded before it those of rank below i, and order[i - 1]
+// the previous vertex. Gives what predict_vertex gives for vertex i of the
+// faces renamed by rank, without renaming them.
+void predict_vertex_in_order(const VertexCorners& mesh, const uint32_t* order, const uint32_t* rank, uint32_t i,
+                             const uint32_t* q, const int32_t* residual, const uint32_t top[3],
+                             VertexPrediction* out);
 
 // 14.3.3: the prediction from the candidates whose bit is set in mask (the
 // weighted mean), or the fallback if none is.

@@ -9,6 +9,7 @@
 #include "bitio/bit_reader.h"
 #include "bitio/byte_io.h"
 #include "bitio/exact_arith.h"
+#include "bitio/geometry_order.h"
 #include "bitio/huffman.h"
 #include "bitio/magnitude_code.h"
 #include "bitio/position_coding.h"
@@ -22,6 +23,7 @@ Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadCh
 
 // Section 14.1: the byte after vertex_count selects the method.
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (14.1)
+constexpr uint8_t kGeometryOrderSelector = 0x84;                         // method 4 (14.1, 14.6)
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
   for (int a = 0; a < 3; ++a)
@@ -71,13 +73,20 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
   if (count != vertex_count)
     return bad_payload("vertex_count " + std::to_string(count) + " differs from CONN's " +
                        std::to_string(vertex_count));
-  if (selector == kPredictedSelector || selector == kGradedSelector) {
+  if (selector == kPredictedSelector || selector == kGradedSelector || selector == kGeometryOrderSelector) {
     info->method = selector - 0x80;
+    info->graded_start = selector == kGradedSelector;
+    if (selector == kGeometryOrderSelector) {
+      uint8_t start = 0;
+      if (!in->get_u8(&start)) return bad_payload("method 4's start byte missing (section 14.1)");
+      if (start > 1) return bad_payload("start " + std::to_string(start) + " is neither 0 nor 1 (section 14.1)");
+      info->graded_start = start == 1;
+    }
     return read_grid(in, info);
   }
   if (selector >= 0x80)
     return Status(ErrorCode::kUnsupportedFeature, "POSN: method " + std::to_string(selector - 0x80) +
-                                                      " is not defined (section 14.1 knows 0, 1 and 3)");
+                                                      " is not defined (section 14.1 knows 0, 1, 3 and 4)");
   if (selector < 1 || selector > 30) return bad_payload("quantization bits " + std::to_string(selector) + " outside 1..30");
   info->method = 0;
   info->bits = selector;
@@ -151,18 +160,20 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
 
 }  // namespace
 
-// Section 14: each vertex in label order, predicted from the decoded ones
-// (14.3), its decisions range coded (14.4).
+// Section 14: each vertex in label order or 14.6's geometry order,
+// predicted from the decoded ones (14.3), its decisions range coded (14.4).
+// Messages name the i-th vertex visited.
 Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& faces, uint32_t count,
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
-                             ClassStart start) {
-  if (!range_stream_justifies(count, size))  // section 14.1
+                             ClassStart start, PredictionOrder order) {
+  if (!range_stream_justifies(count, size))  // section 14.1, before anything is reserved
     return Status(ErrorCode::kLimitExceeded, names.chunk + ": " + std::to_string(count) + " " + names.items +
                                                  " for " + std::to_string(size) +
                                                  " stream bytes, above 512 (L + 8) (section 14.1)");
   quantized->resize(size_t(count) * 3);
   VertexCorners corners;
   corners.build(count, faces.face_sizes, faces.corners);
+  const PredictionVisit visit(corners, order);
   std::vector<int32_t> residual(3 * size_t(count));
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start));
   RangeDecoder rc(stream, size);
@@ -170,11 +181,10 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
     return Status(ErrorCode::kBadChunkPayload,
                   names.chunk + ": the range coder's first four bytes are 0xFFFFFFFF (section 13.5.2)");
   VertexPrediction p;
-  for (uint32_t v = 0; v < count; ++v) {
-    predict_vertex(corners, v, quantized->data(), residual.data(), top, &p);
-    if (Status s = decode_vertex(&rc, &model[0], names, v, top, &p, &(*quantized)[3 * size_t(v)],
-                                 &residual[3 * size_t(v)]);
-        !s.ok())
+  for (uint32_t i = 0; i < count; ++i) {
+    const size_t v = visit.item(i);
+    visit.predict(i, quantized->data(), residual.data(), top, &p);
+    if (Status s = decode_vertex(&rc, &model[0], names, i, top, &p, &(*quantized)[3 * v], &residual[3 * v]); !s.ok())
       return s;
   }
   if (rc.unread() != 0)
@@ -198,8 +208,10 @@ Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, 
   positions->clear();
   if (info->method >= 1) {
     const PredictedGridNames names{"POSN", "vertex", "vertices", "axis"};
+    const ClassStart start = info->graded_start ? ClassStart::kGraded : ClassStart::kFlat;
+    const PredictionOrder order = info->method == 4 ? PredictionOrder::kGeometry : PredictionOrder::kLabels;
     if (Status s = decode_predicted_grid(in.cursor(), in.remaining(), faces, vertex_count, info->top.data(), names,
-                                         quantized, info->method == 3 ? ClassStart::kGraded : ClassStart::kFlat);
+                                         quantized, start, order);
         !s.ok())
       return s;
   } else {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "bitio/position_coding.h"
+#include "bitio/geometry_order.h"
 #include "qmc/decoder.h"
 #include "qmc/status.h"
 
@@ -32,7 +33,7 @@ struct PredictedGridNames {
 // item, from the range-coded stream that ends the payload.
 Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& faces, uint32_t count,
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
-                             ClassStart start = ClassStart::kFlat);
+                             ClassStart start = ClassStart::kFlat, PredictionOrder order = PredictionOrder::kLabels);
 
 // Sections 6.4 and 14.1: per axis, the binary64 min and step of x = min + q * step.
 void dequantization_steps(const QuantizationInfo& info, double lo[3], double step[3]);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "bitio/geometry_order.h"
 #include "bitio/position_coding.h"
 #include "qmc/encoder.h"
 #include "qmc/mesh.h"
@@ -37,30 +38,39 @@ Status quantize_positions(const std::vector<float>& positions, const EncodeOptio
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions);
 
 // Sections 14.2 - 14.4 over any faces whose corners are below q.size() / 3:
-// the range-coded stream of POSN method 1 or of an aTTR's values (15.4).
-// The caller checks 14.1's bound on the stream's length.
+// the range-coded stream of POSN method 1, 3 or 4 (in 14.6's order) or of
+// an aTTR's values (15.4, 15.9). The caller checks 14.1's bound on the
+// stream's length.
 std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const uint32_t top[3], const Mesh& faces,
                                            PositionStats* stats, CandidateChoice choice,
-                                           ClassStart start = ClassStart::kFlat);
+                                           ClassStart start = ClassStart::kFlat,
+                                           PredictionOrder order = PredictionOrder::kLabels);
 
-// Method 1, or 3 with the graded start (section 14), over the file's faces;
-// stats may be null. Empty when the vertices cost too little for 14.1's
-// bound (all on one point).
+// Method 1, or 3 with the graded start (section 14), or 4 in the geometry
+// order, over the file's faces; stats may be null. Empty when the vertices
+// cost too little for 14.1's bound (all on one point).
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
                                                 PositionStats* stats,
                                                 CandidateChoice choice = CandidateChoice::kFewestBits,
-                                                ClassStart start = ClassStart::kFlat);
+                                                ClassStart start = ClassStart::kFlat,
+                                                PredictionOrder order = PredictionOrder::kLabels);
 
 // 14.4.1's start when the options ask for POSN method 3.
 inline ClassStart class_start(const EncodeOptions& options) {
   return options.graded_class_start ? ClassStart::kGraded : ClassStart::kFlat;
 }
 
-// The POSN payload the options ask for: method 3 (`start` graded, under
-// 1,000 vertices) or 1, method 0, or the smaller of the two when both can
-// carry the grid. Fills stats.
+// 14.6's order when the options allow POSN method 4.
+inline PredictionOrder prediction_order(const EncodeOptions& options) {
+  return options.geometry_order ? PredictionOrder::kGeometry : PredictionOrder::kLabels;
+}
+
+// The POSN payload the options ask for: predicted positions (method 4 in
+// the geometry order, else 3 with `start` graded under 1,000 vertices, or
+// 1), method 0, or the smaller of the two when both can carry the grid.
+// Fills stats.
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces,
                                       PositionMethod method, CandidateChoice choice, ClassStart start,
-                                      PositionStats* stats);
+                                      PredictionOrder order, PositionStats* stats);
 
 }  // namespace qmc

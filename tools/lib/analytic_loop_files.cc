@@ -58,7 +58,8 @@ Status make_loop_file(const Mesh& base, int levels, const LevelTargets& targets,
   options.position_grid = PositionGrid::kPerAxis;  // LEVL's arithmetic starts from section 6.1's grid
   options.position_method = base_positions;
   options.candidate_choice = CandidateChoice::kNearest;  // the choice when valid_posn1_loop_base was made
-  options.graded_class_start = false;                    // and its POSN method, 1 (14.4.1 came later)
+  options.graded_class_start = false;                    // and its POSN method, 1 (14.4.1 and 14.6 came later)
+  options.geometry_order = false;
   options.displacement_code = displacement_code;
   options.connectivity = ConnectivityChoice::kPolygon;
   options.polygon_context_coding = context_coded_faces;

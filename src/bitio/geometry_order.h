@@ -1,0 +1,52 @@
+// The geometry order of POSN method 4 and aTTR coding 4
+// (spec/qmc-format.md sections 14.6, 15.9): the order in which the vertices
+// are predicted, computed from the faces alone. The next vertex is one that
+// two faces or more close on (all their other corners placed), else one
+// that a face closes on, the smallest label first, so that most vertices
+// are predicted from several parallelograms instead of the one the
+// connectivity traversal left them.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "bitio/vertex_prediction.h"
+
+namespace qmc {
+
+// The order in which section 14's predictions visit the items: the labels'
+// (POSN methods 1 and 3, aTTR coding 0) or 14.6's geometry order (POSN
+// method 4, aTTR coding 4, 15.9).
+enum class PredictionOrder : uint8_t { kLabels, kGeometry };
+
+// order[i] = g_i, the label placed i-th, over the faces `mesh` was built from.
+void geometry_order(const VertexCorners& mesh, std::vector<uint32_t>* order);
+
+// The same from the faces alone; corners must be below vertex_count.
+std::vector<uint32_t> geometry_order(uint32_t vertex_count, const std::vector<uint32_t>& face_sizes,
+                                     const std::vector<uint32_t>& corners);
+
+// Section 14's visit of the items: item i is label i (label order) or g_i
+// (14.6, with its ranks), predicted from the items visited before it.
+class PredictionVisit {
+ public:
+  PredictionVisit(const VertexCorners& mesh, PredictionOrder order) : mesh_(mesh) {
+    if (order == PredictionOrder::kLabels) return;
+    geometry_order(mesh, &order_);
+    rank_.resize(order_.size());
+    for (uint32_t i = 0; i < uint32_t(order_.size()); ++i) rank_[order_[i]] = i;
+  }
+  uint32_t item(uint32_t i) const { return order_.empty() ? i : order_[i]; }
+  // 14.3 for item(i).
+  void predict(uint32_t i, const uint32_t* q, const int32_t* residual, const uint32_t top[3],
+               VertexPrediction* out) const {
+    if (order_.empty()) return predict_vertex(mesh_, i, q, residual, top, out);
+    predict_vertex_in_order(mesh_, order_.data(), rank_.data(), i, q, residual, top, out);
+  }
+
+ private:
+  const VertexCorners& mesh_;
+  std::vector<uint32_t> order_, rank_;  // empty in label order
+};
+
+}  // namespace qmc
