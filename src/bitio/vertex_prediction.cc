@@ -64,22 +64,21 @@ template <class Rule>
 void search_across(const VertexCorners& m, uint32_t u, uint32_t w, bool triangles, uint32_t corner,
                    const VertexPrediction* c, Rule rule) {
   int examined = 0;
-  m.for_each_link(u, w, triangles, [&](uint32_t k) {
+  m.for_each_link(u, w, triangles, [&](uint32_t k, uint32_t other) {
     if (c->candidates >= kMaxCandidates) return false;
-    if (m.face(k) != m.face(corner)) rule(k);
+    if (m.face(k) != m.face(corner)) rule(other);
     return ++examined < kMaxExamined;
   });
 }
 
 // 14.3.1, across-edge parallelogram: the triangles over the edge (a, b)
-// opposite v's corner. In a triangle along(k, 2) is along(k, -1), one step.
+// opposite v's corner, o being their third vertex.
 template <class Order>
-void add_parallelograms(const VertexCorners& m, uint32_t corner, const Visit<Order>& at, const uint32_t* q,
-                        VertexPrediction* c) {
-  const uint32_t a = m.along(corner, 1), b = m.along(corner, -1);
+void add_parallelograms(const VertexCorners& m, uint32_t corner, const VertexCorners::Sides& sides,
+                        const Visit<Order>& at, const uint32_t* q, VertexPrediction* c) {
+  const uint32_t a = sides.next, b = sides.previous;
   if (!at.before(a) || !at.before(b) || a == b) return;
-  search_across(m, a, b, true, corner, c, [&](uint32_t k) {
-    const uint32_t o = m.along(k, 1) == b ? m.along(k, -1) : m.along(k, 1);
+  search_across(m, a, b, true, corner, c, [&](uint32_t o) {
     if (at.before(o) && o != a && o != b) add_candidate(c, kWeightParallelogram, q, a, b, o, kOne);
   });
 }
@@ -103,8 +102,7 @@ void add_strip(const VertexCorners& m, uint32_t corner, int direction, const Vis
                VertexPrediction* c) {
   const uint32_t p1 = m.along(corner, direction), p2 = m.along(corner, 2 * direction);
   if (!at.before(p1) || !at.before(p2) || p1 == p2) return;
-  search_across(m, p1, p2, false, corner, c, [&](uint32_t k) {
-    const uint32_t y = m.along(k, 1) == p2 ? m.along(k, -1) : m.along(k, 1);
+  search_across(m, p1, p2, false, corner, c, [&](uint32_t y) {
     if (at.before(y) && y != p1 && y != p2) add_candidate(c, kWeightStrip, q, p1, p1, y, kOne);
   });
 }
@@ -125,6 +123,8 @@ void VertexCorners::build(uint32_t vertex_count, const std::vector<uint32_t>& fa
   for (uint32_t k = uint32_t(corners.size()); k-- > 0;) corner_of_[--first_[corners[k] + 1]] = k;
   std::copy(first_.begin() + 1, first_.end(), first_.begin());
   first_[vertex_count] = uint32_t(corners.size());
+  sides_.allocate(corners.size());
+  for (size_t i = 0; i < corners.size(); ++i) sides_[i] = {along(corner_of_[i], 1), along(corner_of_[i], -1)};
   build_links(true, &triangle_link_first_, &triangle_links_);
   build_links(false, &polygon_link_first_, &polygon_links_);
 }
@@ -158,8 +158,8 @@ void VertexCorners::build_links(bool triangles, std::vector<uint32_t>* first, st
       for (const uint32_t* k = begin(u); k != end(u); ++k) {
         if ((degree(*k) == 3) != triangles) continue;
         const uint32_t w1 = along(*k, 1), w2 = along(*k, triangles ? 2 : -1);
-        links->push_back({w1, *k});
-        if (w2 != w1) links->push_back({w2, *k});
+        links->push_back({w1, *k, w2});
+        if (w2 != w1) links->push_back({w2, *k, w1});
       }
       std::sort(links->begin() + (*first)[u], links->end(), [](const Link& x, const Link& y) {
         return x.neighbour != y.neighbour ? x.neighbour < y.neighbour : x.corner < y.corner;
@@ -173,9 +173,9 @@ namespace {
 
 // 14.3.1: the candidates one corner of v contributes.
 template <class Order>
-void add_corner_candidates(const VertexCorners& m, uint32_t corner, const Visit<Order>& at, const uint32_t* q,
-                           VertexPrediction* c) {
-  if (m.degree(corner) == 3) return add_parallelograms(m, corner, at, q, c);
+void add_corner_candidates(const VertexCorners& m, uint32_t corner, const VertexCorners::Sides& sides,
+                           const Visit<Order>& at, const uint32_t* q, VertexPrediction* c) {
+  if (m.degree(corner) == 3) return add_parallelograms(m, corner, sides, at, q, c);
   bool run = add_polygon_run(m, corner, -1, at, q, c);
   if (m.degree(corner) > 4) run = add_polygon_run(m, corner, +1, at, q, c) || run;
   if (run) return;
@@ -200,15 +200,15 @@ void predict(const VertexCorners& m, const Visit<Order>& at, const uint32_t* pre
   int64_t neighbour_sum[3] = {0, 0, 0};
   int64_t neighbours = 0;
   uint64_t activity = 0;
-  for (const uint32_t* corner = m.begin(v); corner != m.end(v); ++corner) {
-    for (int side = -1; side <= 1; side += 2) {  // 14.2: the neighbour list
-      const uint32_t u = m.along(*corner, side);
+  const VertexCorners::Sides* sides = m.sides(v);
+  for (const uint32_t* corner = m.begin(v); corner != m.end(v); ++corner, ++sides) {
+    for (const uint32_t u : {sides->previous, sides->next}) {  // 14.2: the neighbour list
       if (!at.before(u)) continue;
       for (int a = 0; a < 3; ++a) neighbour_sum[a] += q[3 * size_t(u) + a];
       activity += residual_sum(&residual[3 * size_t(u)]);
       ++neighbours;
     }
-    add_corner_candidates(m, *corner, at, q, out);
+    add_corner_candidates(m, *corner, *sides, at, q, out);
   }
   if (out->candidates > 0) out->scale /= uint64_t(out->candidates);
   // 14.3.2: the fallback and the activity of 14.4.

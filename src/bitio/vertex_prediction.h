@@ -62,6 +62,14 @@ class VertexCorners {
   uint32_t vertex(uint32_t corner) const { return corners_[corner]; }
   const uint32_t* begin(uint32_t v) const { return corner_of_.data() + first_[v]; }
   const uint32_t* end(uint32_t v) const { return corner_of_.data() + first_[v + 1]; }
+  // The vertices next to v at each of its corners, along(k, +1) and
+  // along(k, -1), in the order of begin(v) .. end(v): kept beside the
+  // corners because every search of 14.2 reads them, and reading them from
+  // the faces costs a division or two table lookups per corner.
+  struct Sides {
+    uint32_t next, previous;
+  };
+  const Sides* sides(uint32_t v) const { return sides_.data() + first_[v]; }
   // Face of a corner, its degree, and the vertex `step` corners further
   // along the face's cycle (|step| <= 3 in spec 14.3, either sign).
   // A mesh of triangles only keeps no per-corner tables: corner k is
@@ -77,12 +85,14 @@ class VertexCorners {
     return corners_[corner];
   }
 
-  // A face-edge neighbour w of a vertex u and the corner of u it is next to.
+  // A face-edge neighbour w of a vertex u, the corner of u it is next to,
+  // and u's other neighbour at that corner (w again if both sides are w).
   struct Link {
-    uint32_t neighbour, corner;
+    uint32_t neighbour, corner, other;
   };
-  // Calls visit(corner) for the corners of u, in order, of triangles
-  // (triangles = true) or of larger faces, that have w next to u, until
+  // Calls visit(corner, other) for the corners of u, in order, of triangles
+  // (triangles = true) or of larger faces, that have w next to u, other
+  // being u's neighbour at that corner that is not w (w if both are), until
   // visit returns false: the searches of spec 14.2. A vertex of few corners
   // is scanned; one of many has its links sorted by neighbour once and is
   // searched in O(log n).
@@ -91,8 +101,11 @@ class VertexCorners {
     if (end(u) - begin(u) <= kScannedCorners) {
       // In a triangle along(k, 2) is along(k, -1); the neighbours, rarely w,
       // are tested before the degree.
-      for (const uint32_t* k = begin(u); k != end(u); ++k)
-        if ((along(*k, 1) == w || along(*k, -1) == w) && (degree(*k) == 3) == triangles && !visit(*k)) return;
+      const Sides* s = sides(u);
+      for (const uint32_t* k = begin(u); k != end(u); ++k, ++s)
+        if ((s->next == w || s->previous == w) && (degree(*k) == 3) == triangles &&
+            !visit(*k, s->next == w ? s->previous : s->next))
+          return;
       return;
     }
     const std::vector<uint32_t>& first = triangles ? triangle_link_first_ : polygon_link_first_;
@@ -100,7 +113,7 @@ class VertexCorners {
     const Link* from = std::lower_bound(all + first[u], all + first[u + 1], w,
                                         [](const Link& link, uint32_t value) { return link.neighbour < value; });
     for (const Link* link = from; link != all + first[u + 1] && link->neighbour == w; ++link)
-      if (!visit(link->corner)) return;
+      if (!visit(link->corner, link->other)) return;
   }
 
  private:
@@ -123,6 +136,7 @@ class VertexCorners {
   FilledTable<uint32_t> face_of_;          // per corner
   std::vector<uint32_t> first_;            // per vertex, its first entry in corner_of_; one more at the end
   FilledTable<uint32_t> corner_of_;        // corners grouped by vertex, face order within a vertex
+  FilledTable<Sides> sides_;               // per entry of corner_of_
 };
 
 // Sections 14.3.2 and 14.4: what a prediction was made from, which selects the

@@ -234,22 +234,24 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
   double best_cost = INFINITY;
   int64_t best_value[3] = {0, 0, 0};
   PredictionKind best_kind = PredictionKind::kPrevious;
+  const bool fewest_bits = choice == CandidateChoice::kFewestBits;
   for (unsigned mask = 1; mask < (1u << p->candidates); ++mask) {
     select_candidates(p, mask, top);
     CostMeter meter;
     double distance = 0;
-    if (choice == CandidateChoice::kFewestBits) code_candidate_mask(&meter, model, p->candidates, mask);
+    const auto cost = [&] { return fewest_bits ? meter.bits : distance; };
+    if (fewest_bits) code_candidate_mask(&meter, model, p->candidates, mask);
     uint32_t magnitude[3] = {0, 0, 0};
-    for (int a = 0; a < 3; ++a) {
+    // Costs only add up: a mask whose first axes already cost best_cost
+    // cannot win, so its last axes are not costed.
+    for (int a = 0; a < 3 && cost() < best_cost; ++a) {
       const int64_t r = int64_t(q[a]) - p->value[a];
       magnitude[a] = uint32_t(r < 0 ? -r : r);
       distance += magnitude[a];
-      if (choice == CandidateChoice::kFewestBits)
-        code_position_residual(&meter, model, *p, magnitude, a, SignedResidual{magnitude[a], r < 0});
+      if (fewest_bits) code_position_residual(&meter, model, *p, magnitude, a, SignedResidual{magnitude[a], r < 0});
     }
-    const double cost = choice == CandidateChoice::kFewestBits ? meter.bits : distance;
-    if (cost < best_cost) {
-      best_cost = cost;
+    if (cost() < best_cost) {
+      best_cost = cost();
       best = mask;
       std::copy(p->value, p->value + 3, best_value);
       best_kind = p->kind;
