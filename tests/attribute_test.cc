@@ -187,6 +187,7 @@ TEST(AttributeEncoder, GeometryOrderCodingCarriesCodingZerosValues) {
   Mesh sphere = tools::triangulated(tools::make_refined_sphere(3));
   tools::add_chart_texcoords(&sphere);
   EncodeOptions options;
+  options.attribute_graded_start = false;  // codings 5 and 6: the next test
   EncodeStats stats;
   std::vector<uint8_t> file;
   ASSERT_TRUE(encode(sphere, options, &file, &stats).ok());
@@ -203,6 +204,43 @@ TEST(AttributeEncoder, GeometryOrderCodingCarriesCodingZerosValues) {
   EXPECT_EQ(zero.attribute_codings[0].coding, 0);
   EXPECT_EQ(four.mesh.attributes[0].values, zero.mesh.attributes[0].values);
   EXPECT_EQ(four.mesh.attributes[0].corner_values, zero.mesh.attributes[0].corner_values);
+}
+
+// 15.10: codings 5 and 6 are codings 0 and 4 with 14.4.1's start of the
+// class probabilities. Under 1,000 values the encoder keeps them where
+// smaller, as here: the same values, fewer bytes; asked for codings 0 and 4
+// only, or for the label order only, it keeps within them.
+TEST(AttributeEncoder, GradedStartCodingsCarryTheSameValues) {
+  Mesh torus = tools::triangulated(tools::make_torus(20, 8));  // 160 vertices
+  tools::add_chart_texcoords(&torus);
+  const auto coded = [&](bool geometry_order, bool graded_start, AttributeStats* stats) {
+    EncodeOptions options;
+    options.attribute_geometry_order = geometry_order;
+    options.attribute_graded_start = graded_start;
+    EncodeStats st;
+    std::vector<uint8_t> file;
+    EXPECT_TRUE(encode(torus, options, &file, &st).ok());
+    EXPECT_EQ(st.attributes.size(), 1u);
+    *stats = st.attributes.at(0);
+    return decode_or_fail(file);
+  };
+  AttributeStats six, four, five, zero;
+  const DecodedFile with_six = coded(true, true, &six);
+  const DecodedFile with_four = coded(true, false, &four);
+  const DecodedFile with_five = coded(false, true, &five);
+  const DecodedFile with_zero = coded(false, false, &zero);
+  EXPECT_EQ(with_six.attribute_codings[0].coding, 6);
+  EXPECT_EQ(with_four.attribute_codings[0].coding, 4);
+  EXPECT_EQ(with_five.attribute_codings[0].coding, 5);
+  EXPECT_EQ(with_zero.attribute_codings[0].coding, 0);
+  EXPECT_TRUE(six.graded_start && six.geometry_order);
+  EXPECT_TRUE(five.graded_start && !five.geometry_order);
+  EXPECT_LT(six.value_bytes, four.value_bytes);
+  EXPECT_LT(five.value_bytes, zero.value_bytes);
+  for (const DecodedFile* other : {&with_four, &with_five, &with_zero}) {
+    EXPECT_EQ(with_six.mesh.attributes[0].values, other->mesh.attributes[0].values);
+    EXPECT_EQ(with_six.mesh.attributes[0].corner_values, other->mesh.attributes[0].corner_values);
+  }
 }
 
 // Spec 16: labels in runs, unlabelled faces, through every coder, in coder

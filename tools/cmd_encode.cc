@@ -236,6 +236,7 @@ int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   if (args->newest_minor >= 8) return -1;
   o.geometry_order = false;
   o.attribute_geometry_order = false;  // aTTR coding 4 (15.9) came with 1.8
+  o.attribute_graded_start = false;    // and codings 5 and 6 (15.10) after it
   if (args->newest_minor >= 7) return -1;
   o.graded_class_start = false;
   if (args->newest_minor >= 6) return -1;
@@ -447,7 +448,8 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
                 a.exact        ? "exact binary32"
                 : a.octahedral ? "unit normals, octahedral (spec 15.7)"
                                : ("grid step " + shortest_number(a.step) +
-                                  (a.geometry_order ? ", geometry order (spec 15.9)" : ""))
+                                  (a.geometry_order ? ", geometry order (spec 15.9)" : "") +
+                                  (a.graded_start ? ", graded start (spec 15.10)" : ""))
                                      .c_str(),
                 static_cast<unsigned long long>(a.chunk_bytes), static_cast<unsigned long long>(a.mapping_bytes),
                 static_cast<unsigned long long>(a.value_bytes),

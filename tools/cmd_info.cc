@@ -121,6 +121,8 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
                 a.components, a.value_count(), c.mapping == 0 ? "one per vertex" : "per corner",
                 c.coding == 0   ? "predicted on a grid"
                 : c.coding == 4 ? "predicted on a grid, geometry order"
+                : c.coding == 5 ? "predicted on a grid, graded start"
+                : c.coding == 6 ? "predicted on a grid, geometry order, graded start"
                 : c.coding == 3 ? "unit normals, octahedral"
                                 : "exact binary32",
                 static_cast<unsigned long long>(c.chunk_bytes),

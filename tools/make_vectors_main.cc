@@ -54,6 +54,7 @@ qmc::EncodeOptions format_1_6_options() {
   options.graded_class_start = false;
   options.geometry_order = false;
   options.attribute_geometry_order = false;
+  options.attribute_graded_start = false;
   return options;
 }
 
@@ -2545,7 +2546,8 @@ std::vector<uint8_t> encode_posn_as_written(const Mesh& mesh, int method, int bi
   options.position_method = qmc::PositionMethod::kPredicted;
   options.candidate_choice = qmc::CandidateChoice::kFewestBits;
   options.geometry_order = method == 4;
-  options.attribute_geometry_order = false;  // aTTR coding 4 came after these vectors
+  options.attribute_geometry_order = false;  // aTTR codings 4, 5 and 6 came after these vectors
+  options.attribute_graded_start = false;
   return encode_posn_method(mesh, options, method);
 }
 
@@ -2708,6 +2710,7 @@ void write_posn4_vectors(VectorWriter* w) {
 std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, const char* what) {
   qmc::EncodeOptions options;
   options.geometry_order = posn_geometry_order;
+  options.attribute_graded_start = false;  // codings 5 and 6 came after these vectors
   std::vector<uint8_t> out;
   qmc::EncodeStats stats;
   if (qmc::Status s = qmc::encode(mesh, options, &out, &stats);
@@ -2716,6 +2719,28 @@ std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, 
     std::exit(3);
   }
   return out;
+}
+
+// The aTTR payload of a two-component attribute on one grid (codings 0, 4,
+// 5 and 6, mapping 1) with both tops set to 1: a value the grid cannot
+// hold. After the mapping stream: grid 0, two f32 origins, one f64 step,
+// two tops.
+std::vector<uint8_t> with_tops_of_one(const std::vector<uint8_t>& payload) {
+  qmc::ByteReader r(payload.data(), payload.size());
+  r.skip(attr_field_offsets(payload).after_coding);
+  uint64_t mapping_bytes = 0;
+  r.get_varint(&mapping_bytes);
+  r.skip(mapping_bytes);
+  const size_t tops = r.position() + 1 + 8 + 8;
+  r.skip(tops - r.position());
+  uint64_t top = 0;
+  r.get_varint(&top);
+  r.get_varint(&top);
+  std::vector<uint8_t> p(payload.begin(), payload.begin() + std::ptrdiff_t(tops));
+  qmc::put_varint(&p, 1);
+  qmc::put_varint(&p, 1);
+  p.insert(p.end(), payload.begin() + std::ptrdiff_t(r.position()), payload.end());
+  return p;
 }
 
 void write_attribute_coding4_vectors(VectorWriter* w) {
@@ -2744,23 +2769,72 @@ void write_attribute_coding4_vectors(VectorWriter* w) {
     return join_chunks(d);
   };
   w->invalid("invalid_attr_coding4_truncated", with_payload({payload.begin(), payload.end() - 8}), ErrorCode::kTruncated);
-  // Tops of 1: a value the grid cannot hold. After the mapping stream: grid
-  // 0, two f32 origins, one f64 step, two tops.
-  qmc::ByteReader r(payload.data(), payload.size());
-  r.skip(attr_field_offsets(payload).after_coding);
-  uint64_t mapping_bytes = 0;
-  r.get_varint(&mapping_bytes);
-  r.skip(mapping_bytes);
-  const size_t tops = r.position() + 1 + 8 + 8;
-  r.skip(tops - r.position());
-  uint64_t top = 0;
-  r.get_varint(&top);
-  r.get_varint(&top);
-  std::vector<uint8_t> p(payload.begin(), payload.begin() + std::ptrdiff_t(tops));
-  qmc::put_varint(&p, 1);
-  qmc::put_varint(&p, 1);
-  p.insert(p.end(), payload.begin() + std::ptrdiff_t(r.position()), payload.end());
-  w->invalid("invalid_attr_coding4_value_outside_grid", with_payload(p), ErrorCode::kBadSymbol);
+  w->invalid("invalid_attr_coding4_value_outside_grid", with_payload(with_tops_of_one(payload)), ErrorCode::kBadSymbol);
+}
+
+// Section 15.10: aTTR codings 5 and 6, what `qmc encode` writes when the
+// graded start is the smaller; the generator fails if the file's first
+// attribute has another coding.
+std::vector<uint8_t> encode_attribute_coding(const Mesh& mesh, const qmc::EncodeOptions& options, uint8_t coding,
+                                             const char* what) {
+  std::vector<uint8_t> out;
+  qmc::DecodedFile file;
+  if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: %s: %s\n", what, s.to_string().c_str());
+    std::exit(3);
+  }
+  if (qmc::Status s = qmc::decode(out.data(), out.size(), &file);
+      !s.ok() || file.attribute_codings.empty() || file.attribute_codings[0].coding != coding) {
+    std::fprintf(stderr, "qmc-make-vectors: %s: not aTTR coding %u (%s)\n", what, unsigned(coding),
+                 s.to_string().c_str());
+    std::exit(3);
+  }
+  return out;
+}
+
+void write_attribute_coding56_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  // Texture coordinates with seams (mapping 1) on a torus of 160 vertices:
+  // coding 6 over POSN method 4, coding 5 when the geometry order is not
+  // allowed, and coding 6 over POSN method 1 (the start is the coding's,
+  // not POSN's).
+  Mesh textured = perturbed(qmc::tools::triangulated(qmc::tools::make_torus(20, 8)), 75, 0.004f);
+  qmc::tools::add_chart_texcoords(&textured);
+  qmc::EncodeOptions options;
+  const std::vector<uint8_t> six = encode_attribute_coding(textured, options, 6, "coding 6 texcoords");
+  w->valid("valid_attr_coding6_texcoords", six, &textured);
+  qmc::EncodeOptions label_order = options;
+  label_order.attribute_geometry_order = false;
+  const std::vector<uint8_t> five = encode_attribute_coding(textured, label_order, 5, "coding 5 texcoords");
+  w->valid("valid_attr_coding5_texcoords", five, &textured);
+  qmc::EncodeOptions over_posn1 = options;
+  over_posn1.geometry_order = false;
+  over_posn1.graded_class_start = false;
+  w->valid("valid_attr_coding6_over_posn1", encode_attribute_coding(textured, over_posn1, 6, "coding 6 over method 1"),
+           &textured);
+  // One value per vertex (mapping 0): colours from the positions with a
+  // little noise.
+  Mesh coloured = qmc::tools::triangulated(qmc::tools::make_torus(12, 8));
+  MeshAttribute colour{"colour", qmc::AttributeKind::kColour, 3, {}, coloured.corners};
+  qmc::tools::SplitMix64 random(77);
+  for (float x : coloured.positions) colour.values.push_back(0.5f + 0.35f * x + float(random.below(64)) / 4096.0f);
+  coloured.attributes.push_back(colour);
+  w->valid("valid_attr_coding6_per_vertex_colours",
+           encode_attribute_coding(coloured, options, 6, "coding 6 colours"), &coloured);
+
+  // 15.4's rules on the paths of codings 5 and 6.
+  const auto attribute_payload = [](const std::vector<uint8_t>& file) {
+    Chunks c = split_chunks(file);
+    return std::make_pair(c, find_chunk(c, qmc::kChunkAttribute));
+  };
+  {
+    auto [c, at] = attribute_payload(five);
+    c[at].payload.resize(c[at].payload.size() - 8);
+    w->invalid("invalid_attr_coding5_truncated", join_chunks(c), ErrorCode::kTruncated);
+  }
+  auto [c, at] = attribute_payload(six);
+  c[at].payload = with_tops_of_one(c[at].payload);
+  w->invalid("invalid_attr_coding6_value_outside_grid", join_chunks(c), ErrorCode::kBadSymbol);
 }
 
 int main(int argc, char** argv) {
@@ -2797,6 +2871,7 @@ int main(int argc, char** argv) {
   write_posn3_vectors(&w);
   write_posn4_vectors(&w);
   write_attribute_coding4_vectors(&w);
+  write_attribute_coding56_vectors(&w);
   w.finish();
   return 0;
 }

@@ -108,6 +108,12 @@ struct EncodeOptions {
   // of the corpus's texture coordinates. Decoders of the revisions before
   // it skip such an attribute; false keeps coding 0.
   bool attribute_geometry_order = true;
+  // Attribute values on a grid of fewer than 1,000 values may take aTTR
+  // coding 5 or 6 (spec 15.10: codings 0 and 4 with 14.4.1's start of the
+  // class probabilities) where that is smaller: 10-15 % of the texture
+  // coordinates of the corpus's control meshes. Decoders of the revisions
+  // before it skip such an attribute; false keeps codings 0 and 4.
+  bool attribute_graded_start = true;
   std::vector<std::string> texts;            // written as teXt chunks ("key=value")
   // Write an oRDR chunk (section 4.5) so that the decoder restores the
   // input's order of vertices, faces and corners exactly; nothing is
@@ -216,7 +222,8 @@ struct AttributeStats {
   bool per_corner = false;       // mapping 1 (else one value per vertex)
   bool exact = false;            // coding 1 (else predicted on a grid)
   bool octahedral = false;       // coding 3: unit normals, octahedral (15.7)
-  bool geometry_order = false;   // coding 4: coding 0's values in 14.6's order (15.9)
+  bool geometry_order = false;   // coding 4 or 6: the values in 14.6's order (15.9)
+  bool graded_start = false;     // coding 5 or 6: the class probabilities start as 14.4.1 (15.10)
   uint32_t value_count = 0;
   double step = 0;               // the grid's step (coding 0); coding 3: 2 / (2^B - 1)
   uint64_t mapping_bytes = 0, value_bytes = 0;  // the mapping stream; the values (grid fields included)

@@ -19,6 +19,7 @@ namespace {
 
 constexpr uint8_t kMappingPerVertex = 0, kMappingPerCorner = 1;
 constexpr uint8_t kCodingGrid = 0, kCodingExact = 1, kCodingOctahedral = 3, kCodingGeometryOrder = 4;
+constexpr uint8_t kCodingGridGraded = 5, kCodingGeometryOrderGraded = 6;  // 15.10
 // 15.1: coding 2 stays unassigned (the vector valid_attr_unknown_coding_skipped uses it).
 constexpr uint8_t kCodingUnassigned = 2;
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
@@ -71,7 +72,7 @@ Status read_sizes(ByteReader* in, uint32_t vertex_count, Header* h, bool* skippe
     return bad(*h, "value_count " + std::to_string(h->value_count) + " is not V = " + std::to_string(vertex_count) +
                        " with mapping 0");
   if (!in->get_u8(&h->coding)) return bad(*h, "coding missing");
-  if (h->coding > kCodingGeometryOrder || h->coding == kCodingUnassigned) {  // 15.1 check 6
+  if (h->coding > kCodingGeometryOrderGraded || h->coding == kCodingUnassigned) {  // 15.1 check 6
     *skipped = true;
     return Status::Ok();
   }
@@ -153,8 +154,9 @@ Status read_grid(ByteReader* in, const Header& h, float origin[3], double step[3
   return Status::Ok();
 }
 
-// Sections 15.4 and 15.9: the values predicted over the attribute mesh,
-// in label order (coding 0) or 14.6's geometry order (coding 4).
+// Sections 15.4, 15.9 and 15.10: the values predicted over the attribute
+// mesh, in label order (codings 0 and 5) or 14.6's geometry order (codings 4
+// and 6), the class probabilities starting at 1024 (0, 4) or as 14.4.1 (5, 6).
 Status decode_grid_values(ByteReader* in, const Header& h, const Mesh& faces, const std::vector<uint32_t>& m,
                           AttributeCoding* coding, std::vector<float>* values) {
   float* origin = coding->origin.data();
@@ -166,9 +168,11 @@ Status decode_grid_values(ByteReader* in, const Header& h, const Mesh& faces, co
   attribute_mesh.corners = m;
   std::vector<uint32_t> q;
   const PredictedGridNames names{h.label, "value", "values", "component"};
-  const PredictionOrder order = h.coding == kCodingGeometryOrder ? PredictionOrder::kGeometry : PredictionOrder::kLabels;
+  const bool geometry = h.coding == kCodingGeometryOrder || h.coding == kCodingGeometryOrderGraded;
+  const bool graded = h.coding == kCodingGridGraded || h.coding == kCodingGeometryOrderGraded;
   if (Status s = decode_predicted_grid(in->cursor(), in->remaining(), attribute_mesh, uint32_t(h.value_count), top,
-                                       names, &q, ClassStart::kFlat, order);
+                                       names, &q, graded ? ClassStart::kGraded : ClassStart::kFlat,
+                                       geometry ? PredictionOrder::kGeometry : PredictionOrder::kLabels);
       !s.ok())
     return s;
   const size_t c = h.components;

@@ -19,6 +19,7 @@ namespace {
 
 constexpr uint8_t kMappingPerVertex = 0, kMappingPerCorner = 1;
 constexpr uint8_t kCodingGrid = 0, kCodingExact = 1, kCodingOctahedral = 3, kCodingGeometryOrder = 4;
+constexpr uint8_t kCodingGridGraded = 5, kCodingGeometryOrderGraded = 6;  // 15.10
 // 15.8: normals within this of unit length take coding 3.
 constexpr double kUnitTolerance = 1e-3;
 constexpr uint32_t kNone = UINT32_MAX;
@@ -107,11 +108,13 @@ std::vector<uint8_t> encode_mapping(const std::vector<uint32_t>& m, const Mesh& 
 }
 
 // 15.4: the uniform grid of the values' bounding box (one step, 14.1), the
-// grid fields and the range-coded stream; empty if 14.1's bound fails. With
-// the geometry order allowed, the smaller stream of the label order (coding
-// 0) and 14.6's order (coding 4, 15.9), coding 0 on a tie; *coding says which.
+// grid fields and the range-coded stream; empty if 14.1's bound fails. The
+// smallest stream of the label order (coding 0) and, where allowed, 14.6's
+// order (coding 4, 15.9) and under kGradedStartBelow values 14.4.1's start
+// (codings 5 and 6, 15.10), the lowest coding on a tie; *coding says which.
 std::vector<uint8_t> encode_grid_values(const std::vector<float>& table, uint32_t c, int bits, const Mesh& mesh,
-                                        bool geometry_order_allowed, double* step_out, uint8_t* coding) {
+                                        bool geometry_order_allowed, bool graded_start_allowed, double* step_out,
+                                        uint8_t* coding) {
   const size_t n = table.size() / c;
   float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for (uint32_t a = 0; a < c; ++a) {
@@ -141,13 +144,18 @@ std::vector<uint8_t> encode_grid_values(const std::vector<float>& table, uint32_
   for (uint32_t a = 0; a < c; ++a) put_varint(&out, top[a]);
   std::vector<uint8_t> stream = encode_predicted_grid(q, top, mesh, nullptr, CandidateChoice::kFewestBits);
   *coding = kCodingGrid;
-  if (geometry_order_allowed) {
-    std::vector<uint8_t> in_order = encode_predicted_grid(q, top, mesh, nullptr, CandidateChoice::kFewestBits,
-                                                          ClassStart::kFlat, PredictionOrder::kGeometry);
-    if (in_order.size() < stream.size()) {
-      stream = std::move(in_order);
-      *coding = kCodingGeometryOrder;
+  const auto keep_if_smaller = [&](uint8_t candidate, ClassStart start, PredictionOrder order) {
+    std::vector<uint8_t> other = encode_predicted_grid(q, top, mesh, nullptr, CandidateChoice::kFewestBits, start, order);
+    if (other.size() < stream.size()) {
+      stream = std::move(other);
+      *coding = candidate;
     }
+  };
+  if (geometry_order_allowed) keep_if_smaller(kCodingGeometryOrder, ClassStart::kFlat, PredictionOrder::kGeometry);
+  if (graded_start_allowed && n < kGradedStartBelow) {
+    keep_if_smaller(kCodingGridGraded, ClassStart::kGraded, PredictionOrder::kLabels);
+    if (geometry_order_allowed)
+      keep_if_smaller(kCodingGeometryOrderGraded, ClassStart::kGraded, PredictionOrder::kGeometry);
   }
   if (!range_stream_justifies(n, stream.size())) return {};
   out.insert(out.end(), stream.begin(), stream.end());
@@ -295,8 +303,8 @@ Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, c
     Mesh attribute_mesh;
     attribute_mesh.face_sizes = file_mesh.face_sizes;
     attribute_mesh.corners = per_vertex ? file_mesh.corners : m;
-    values = encode_grid_values(table, c, bits_for(attribute.kind, options), attribute_mesh, options.attribute_geometry_order,
-                                &stats->step, &coding);
+    values = encode_grid_values(table, c, bits_for(attribute.kind, options), attribute_mesh,
+                                options.attribute_geometry_order, options.attribute_graded_start, &stats->step, &coding);
   }
   stats->exact = values.empty();
   if (stats->exact) {
@@ -304,7 +312,8 @@ Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, c
     for (float x : table) put_f32le(&values, x);
   }
   stats->octahedral = coding == kCodingOctahedral;
-  stats->geometry_order = coding == kCodingGeometryOrder;
+  stats->geometry_order = coding == kCodingGeometryOrder || coding == kCodingGeometryOrderGraded;
+  stats->graded_start = coding == kCodingGridGraded || coding == kCodingGeometryOrderGraded;
 
   payload->clear();
   put_varint(payload, vertex_count);

@@ -321,12 +321,6 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
   return payload;
 }
 
-// Method 3's start (14.4.1) pays below this many vertices: 6-11 % of the
-// positions of the corpus's control meshes. Above, it saves at most about
-// 1 % and can lose more where the bucket overestimates every class (the
-// 2,304-vertex regular torus at 12 bits: 6.5 % more), so method 1 stays.
-constexpr size_t kGradedStartBelow = 1000;
-
 // The predicted payload of `order`, and under kGradedStartBelow vertices
 // (where coding twice costs little) the smaller of it and the label order's:
 // method 4's gain is then a few bytes either way (fish_control_mesh at 14
