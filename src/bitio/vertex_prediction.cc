@@ -120,11 +120,14 @@ void VertexCorners::build(uint32_t vertex_count, const std::vector<uint32_t>& fa
   // first_[v + 1] is v's end; filling back to front moves it to v's start,
   // one place too far on, without a second table of cursors.
   corner_of_.allocate(corners.size());
-  for (uint32_t k = uint32_t(corners.size()); k-- > 0;) corner_of_[--first_[corners[k] + 1]] = k;
+  sides_.allocate(corners.size());
+  for (uint32_t k = uint32_t(corners.size()); k-- > 0;) {
+    const uint32_t i = --first_[corners[k] + 1];
+    corner_of_[i] = k;
+    sides_[i] = {along(k, 1), along(k, -1)};
+  }
   std::copy(first_.begin() + 1, first_.end(), first_.begin());
   first_[vertex_count] = uint32_t(corners.size());
-  sides_.allocate(corners.size());
-  for (size_t i = 0; i < corners.size(); ++i) sides_[i] = {along(corner_of_[i], 1), along(corner_of_[i], -1)};
   build_links(true, &triangle_link_first_, &triangle_links_);
   build_links(false, &polygon_link_first_, &polygon_links_);
 }
