@@ -320,6 +320,18 @@ check info-attributes 0 "$qmc" info "$work/uv.qmc"
 contains info-attributes-normal "$work/out" '"normal" (spec 15): normal, 3 component(s), 1 values, per corner'
 check decode-attributes-obj 0 "$qmc" decode "$work/uv.qmc" "$work/uv_back.obj"
 contains decode-attributes-vt "$work/uv_back.obj" "^f [0-9]/[0-9]/1 [0-9]/[0-9]/1 [0-9]/[0-9]/1$"
+# 15.10: a small table's class probabilities start graded where that is smaller (coding 5 here: a
+# quad torus of 160 vertices, (u, v) its (y, z)); --format 1.7 keeps codings 0 and 4.
+"$meshgen" torus 20 8 "$work/t160.obj" >/dev/null
+awk '/^v /{print; print "vt", $3, $4; next} /^f /{printf "f"; for (i = 2; i <= NF; i++) printf " %s/%s", $i, $i;
+     print ""; next} {print}' "$work/t160.obj" >"$work/t160uv.obj"
+check encode-graded-start 0 "$qmc" encode "$work/t160uv.obj" "$work/t160uv.qmc"
+contains encode-graded-start-report "$work/out" "160 values, one per vertex, grid step [0-9.e-]*, graded start (spec 15.10)"
+check info-graded-start 0 "$qmc" info "$work/t160uv.qmc"
+contains info-graded-start-coding "$work/out" "160 values, one per vertex, predicted on a grid, graded start;"
+check verify-graded-start 0 "$qmc" verify "$work/t160uv.obj" "$work/t160uv.qmc"
+check encode-graded-start-1.7 0 "$qmc" encode "$work/t160uv.obj" "$work/t160uv17.qmc" --format 1.7
+contains encode-graded-start-1.7-flat "$work/out" "160 values, one per vertex, grid step [0-9.e-]*; "
 check decode-attributes-keep-order 0 "$qmc" encode "$work/uv.obj" "$work/uv_kept.qmc" --keep-order
 check decode-attributes-keep-order-obj 0 "$qmc" decode "$work/uv_kept.qmc" "$work/uv_kept.obj"
 contains decode-attributes-kept-face "$work/uv_kept.obj" "^f 3/[0-9]/1 2/[0-9]/1 4/[0-9]/1$"
