@@ -38,10 +38,10 @@ class PredictionVisit {
   }
   uint32_t item(uint32_t i) const { return order_.empty() ? i : order_[i]; }
   // 14.3 for item(i).
-  void predict(uint32_t i, const uint32_t* q, const int32_t* residual, const uint32_t top[3],
+  void predict(uint32_t i, const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
                VertexPrediction* out) const {
-    if (order_.empty()) return predict_vertex(mesh_, i, q, residual, top, out);
-    predict_vertex_in_order(mesh_, order_.data(), rank_.data(), i, q, residual, top, out);
+    if (order_.empty()) return predict_vertex(mesh_, i, q, activity, top, out);
+    predict_vertex_in_order(mesh_, order_.data(), rank_.data(), i, q, activity, top, out);
   }
 
  private:

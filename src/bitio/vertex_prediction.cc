@@ -186,29 +186,23 @@ void add_corner_candidates(const VertexCorners& m, uint32_t corner, const Vertex
   add_strip(m, corner, +1, at, q, c);
 }
 
-uint32_t residual_sum(const int32_t* r) {
-  uint32_t sum = 0;
-  for (int a = 0; a < 3; ++a) sum += uint32_t(r[a] < 0 ? -int64_t(r[a]) : r[a]);
-  return sum;
-}
-
 // 14.3 for the vertex at.v; `previous` is the vertex decoded just before
 // it, if any (14.3.2's fallback without neighbours).
 template <class Order>
 void predict(const VertexCorners& m, const Visit<Order>& at, const uint32_t* previous, const uint32_t* q,
-             const int32_t* residual, const uint32_t top[3], VertexPrediction* out) {
+             const uint32_t* activity, const uint32_t top[3], VertexPrediction* out) {
   const uint32_t v = at.v;
   out->candidates = 0;
   out->scale = 0;
   int64_t neighbour_sum[3] = {0, 0, 0};
   int64_t neighbours = 0;
-  uint64_t activity = 0;
+  uint64_t activity_sum = 0;
   const VertexCorners::Sides* sides = m.sides(v);
   for (const uint32_t* corner = m.begin(v); corner != m.end(v); ++corner, ++sides) {
     for (const uint32_t u : {sides->previous, sides->next}) {  // 14.2: the neighbour list
       if (!at.before(u)) continue;
       for (int a = 0; a < 3; ++a) neighbour_sum[a] += q[3 * size_t(u) + a];
-      activity += residual_sum(&residual[3 * size_t(u)]);
+      activity_sum += activity[u];
       ++neighbours;
     }
     add_corner_candidates(m, *corner, *sides, at, q, out);
@@ -222,23 +216,23 @@ void predict(const VertexCorners& m, const Visit<Order>& at, const uint32_t* pre
   }
   out->fallback_kind = neighbours > 0 ? PredictionKind::kNeighbours : PredictionKind::kPrevious;
   if (neighbours > 0)
-    out->neighbour_activity = activity / uint64_t(neighbours);
+    out->neighbour_activity = activity_sum / uint64_t(neighbours);
   else
-    out->neighbour_activity = previous ? residual_sum(&residual[3 * size_t(*previous)]) : 0;
+    out->neighbour_activity = previous ? activity[*previous] : 0;
 }
 
 }  // namespace
 
-void predict_vertex(const VertexCorners& m, uint32_t v, const uint32_t* q, const int32_t* residual,
+void predict_vertex(const VertexCorners& m, uint32_t v, const uint32_t* q, const uint32_t* activity,
                     const uint32_t top[3], VertexPrediction* out) {
   const uint32_t previous = v - 1;
-  predict(m, Visit<LabelOrder>{{}, v, v}, v > 0 ? &previous : nullptr, q, residual, top, out);
+  predict(m, Visit<LabelOrder>{{}, v, v}, v > 0 ? &previous : nullptr, q, activity, top, out);
 }
 
 void predict_vertex_in_order(const VertexCorners& m, const uint32_t* order, const uint32_t* rank, uint32_t i,
-                             const uint32_t* q, const int32_t* residual, const uint32_t top[3],
+                             const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
                              VertexPrediction* out) {
-  predict(m, Visit<RankOrder>{{rank}, order[i], i}, i > 0 ? &order[i - 1] : nullptr, q, residual, top, out);
+  predict(m, Visit<RankOrder>{{rank}, order[i], i}, i > 0 ? &order[i - 1] : nullptr, q, activity, top, out);
 }
 
 void select_candidates(VertexPrediction* p, unsigned mask, const uint32_t top[3]) {

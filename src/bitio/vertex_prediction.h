@@ -169,9 +169,10 @@ struct VertexPrediction {
 };
 
 // Finds the candidates and the fallback of vertex v from q (3 per vertex,
-// labels < v decoded) and the signed
-// residuals of the decoded vertices (3 per vertex). Selects nothing yet.
-void predict_vertex(const VertexCorners& mesh, uint32_t v, const uint32_t* q, const int32_t* residual,
+// labels < v decoded) and the activity of each decoded vertex, the sum of
+// its residuals' magnitudes |r_x| + |r_y| + |r_z| (14.3.2; below 2^32, as
+// each is at most 2^30 - 1). Selects nothing yet.
+void predict_vertex(const VertexCorners& mesh, uint32_t v, const uint32_t* q, const uint32_t* activity,
                     const uint32_t top[3], VertexPrediction* out);
 
 // The same in 14.6's geometry order: the vertex order[i] (rank[order[i]] = i),
@@ -179,7 +180,7 @@ void predict_vertex(const VertexCorners& mesh, uint32_t v, const uint32_t* q, co
 // the previous vertex. Gives what predict_vertex gives for vertex i of the
 // faces renamed by rank, without renaming them.
 void predict_vertex_in_order(const VertexCorners& mesh, const uint32_t* order, const uint32_t* rank, uint32_t i,
-                             const uint32_t* q, const int32_t* residual, const uint32_t top[3],
+                             const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
                              VertexPrediction* out);
 
 // 14.3.3: the prediction from the candidates whose bit is set in mask (the

@@ -134,7 +134,7 @@ Status decode_deltas(BitReader* bits, size_t size, uint32_t vertex_count, const 
 // and fallback are in p: the mask, then the three residuals; the stream's
 // end is checked after each decision group, before the value it gave is.
 Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const PredictedGridNames& names, uint32_t v,
-                     const uint32_t* top, VertexPrediction* p, uint32_t* q, int32_t* residual) {
+                     const uint32_t* top, VertexPrediction* p, uint32_t* q, uint32_t* activity) {
   const auto truncated = [&] {
     return Status(ErrorCode::kTruncated, names.chunk + ": the range-coded stream ends inside " + names.item + " " +
                                              std::to_string(v) + " (section 14.4)");
@@ -153,8 +153,8 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
                                                " (section 14.4)");
     q[a] = uint32_t(value);
     magnitude[a] = r.magnitude;
-    residual[a] = int32_t(value - p->value[a]);
   }
+  *activity = magnitude[0] + magnitude[1] + magnitude[2];
   return Status::Ok();
 }
 
@@ -174,7 +174,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   VertexCorners corners;
   corners.build(count, faces.face_sizes, faces.corners);
   const PredictionVisit visit(corners, order);
-  std::vector<int32_t> residual(3 * size_t(count));
+  std::vector<uint32_t> activity(count);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start));
   RangeDecoder rc(stream, size);
   if (rc.bad_start())
@@ -183,8 +183,8 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   VertexPrediction p;
   for (uint32_t i = 0; i < count; ++i) {
     const size_t v = visit.item(i);
-    visit.predict(i, quantized->data(), residual.data(), top, &p);
-    if (Status s = decode_vertex(&rc, &model[0], names, i, top, &p, &(*quantized)[3 * v], &residual[3 * v]); !s.ok())
+    visit.predict(i, quantized->data(), activity.data(), top, &p);
+    if (Status s = decode_vertex(&rc, &model[0], names, i, top, &p, &(*quantized)[3 * v], &activity[v]); !s.ok())
       return s;
   }
   if (rc.unread() != 0)

@@ -272,7 +272,7 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
   VertexCorners corners;
   corners.build(n, faces.face_sizes, faces.corners);
   const PredictionVisit visit(corners, order);
-  std::vector<int32_t> residual(3 * size_t(n));
+  std::vector<uint32_t> activity(n);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start));
   MeteredRangeEncoder rc;
   PositionStats local;
@@ -280,7 +280,7 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
   VertexPrediction p;
   for (uint32_t i = 0; i < n; ++i) {
     const size_t v = visit.item(i);
-    visit.predict(i, q.data(), residual.data(), top, &p);
+    visit.predict(i, q.data(), activity.data(), top, &p);
     const double before = rc.meter.bits;
     const unsigned mask = best_candidates(&q[3 * v], top, &model[0], choice, &p);
     code_candidate_mask(&rc, &model[0], p.candidates, mask);
@@ -288,9 +288,9 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
     for (int a = 0; a < 3; ++a) {
       const int64_t r = int64_t(q[3 * v + a]) - p.value[a];
       magnitude[a] = uint32_t(r < 0 ? -r : r);
-      residual[3 * v + a] = int32_t(r);
       code_position_residual(&rc, &model[0], p, magnitude, a, SignedResidual{magnitude[a], r < 0});
     }
+    activity[v] = magnitude[0] + magnitude[1] + magnitude[2];
     ++st.vertices_by_kind[int(p.kind)];
     st.bits_by_kind[int(p.kind)] += rc.meter.bits - before;
   }
