@@ -225,7 +225,7 @@ struct AttributeStats {
   bool geometry_order = false;   // coding 4 or 6: the values in 14.6's order (15.9)
   bool graded_start = false;     // coding 5 or 6: the class probabilities start as 14.4.1 (15.10)
   uint32_t value_count = 0;
-  double step = 0;               // the grid's step (coding 0); coding 3: 2 / (2^B - 1)
+  double step = 0;               // the grid's step (codings 0, 4, 5, 6); coding 3: 2 / (2^B - 1)
   uint64_t mapping_bytes = 0, value_bytes = 0;  // the mapping stream; the values (grid fields included)
   uint64_t chunk_bytes = 0;      // the whole aTTR chunk
 };

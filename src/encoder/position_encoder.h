@@ -46,7 +46,7 @@ inline constexpr size_t kGradedStartBelow = 1000;
 
 // Sections 14.2 - 14.4 over any faces whose corners are below q.size() / 3:
 // the range-coded stream of POSN method 1, 3 or 4 (in 14.6's order) or of
-// an aTTR's values (15.4, 15.9). The caller checks 14.1's bound on the
+// an aTTR's values (15.4, 15.9, 15.10). The caller checks 14.1's bound on the
 // stream's length.
 std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const uint32_t top[3], const Mesh& faces,
                                            PositionStats* stats, CandidateChoice choice,
