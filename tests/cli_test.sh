@@ -332,6 +332,17 @@ contains info-graded-start-coding "$work/out" "160 values, one per vertex, predi
 check verify-graded-start 0 "$qmc" verify "$work/t160uv.obj" "$work/t160uv.qmc"
 check encode-graded-start-1.7 0 "$qmc" encode "$work/t160uv.obj" "$work/t160uv17.qmc" --format 1.7
 contains encode-graded-start-1.7-flat "$work/out" "160 values, one per vertex, grid step [0-9.e-]*; "
+# 15.11: which corner refers to which value predicted from the faces (mapping 3): a normal per face,
+# as a flat-shaded export writes them; --format 1.7 keeps 15.3's mapping 1.
+awk '/^f /{n++; print "vn 0 0.6 0.8"; printf "f"; for (i = 2; i <= NF; i++) printf " %s//%d", $i, n; print ""; next}
+     {print}' "$work/t160.obj" >"$work/t160flat.obj"
+check encode-predicted-mapping 0 "$qmc" encode "$work/t160flat.obj" "$work/t160flat.qmc"
+contains encode-predicted-mapping-report "$work/out" "normal (spec 15): 160 values, per corner, predicted from the faces (spec 15.11)"
+check info-predicted-mapping 0 "$qmc" info "$work/t160flat.qmc"
+contains info-predicted-mapping-named "$work/out" "160 values, per corner, predicted from the faces, unit normals"
+check verify-predicted-mapping 0 "$qmc" verify "$work/t160flat.obj" "$work/t160flat.qmc"
+check encode-predicted-mapping-1.7 0 "$qmc" encode "$work/t160flat.obj" "$work/t160flat17.qmc" --format 1.7
+contains encode-predicted-mapping-1.7-per-corner "$work/out" "normal (spec 15): 160 values, per corner, unit normals"
 check decode-attributes-keep-order 0 "$qmc" encode "$work/uv.obj" "$work/uv_kept.qmc" --keep-order
 check decode-attributes-keep-order-obj 0 "$qmc" decode "$work/uv_kept.qmc" "$work/uv_kept.obj"
 contains decode-attributes-kept-face "$work/uv_kept.obj" "^f 3/[0-9]/1 2/[0-9]/1 4/[0-9]/1$"

@@ -236,7 +236,8 @@ int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   if (args->newest_minor >= 8) return -1;
   o.geometry_order = false;
   o.attribute_geometry_order = false;  // aTTR coding 4 (15.9) came with 1.8
-  o.attribute_graded_start = false;    // and codings 5 and 6 (15.10) after it
+  o.attribute_graded_start = false;    // and codings 5 and 6 (15.10) after it,
+  o.attribute_predicted_mapping = false;  // and mapping 3 (15.11)
   if (args->newest_minor >= 7) return -1;
   o.graded_class_start = false;
   if (args->newest_minor >= 6) return -1;
@@ -444,7 +445,10 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
   }
   for (const AttributeStats& a : stats.attributes)
     std::printf("attribute   %s (spec 15): %u values, %s, %s; %llu bytes (mapping %llu, values %llu), %.2f bits/value\n",
-                a.name.c_str(), a.value_count, a.per_corner ? "per corner" : "one per vertex",
+                a.name.c_str(), a.value_count,
+                !a.per_corner         ? "one per vertex"
+                : a.predicted_mapping ? "per corner, predicted from the faces (spec 15.11)"
+                                      : "per corner",
                 a.exact        ? "exact binary32"
                 : a.octahedral ? "unit normals, octahedral (spec 15.7)"
                                : ("grid step " + shortest_number(a.step) +

@@ -118,7 +118,9 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
     static const char* const kKinds[4] = {"generic", "texture coordinate", "normal", "colour"};
     std::printf("attribute    \"%s\" (spec 15): %s, %u component(s), %zu values, %s, %s; %llu bytes, %.2f bits/value\n",
                 a.name.c_str(), uint8_t(a.kind) < 4 ? kKinds[uint8_t(a.kind)] : "kind unknown to this revision",
-                a.components, a.value_count(), c.mapping == 0 ? "one per vertex" : "per corner",
+                a.components, a.value_count(), c.mapping == 0   ? "one per vertex"
+                : c.mapping == 3 ? "per corner, predicted from the faces"
+                                 : "per corner",
                 c.coding == 0   ? "predicted on a grid"
                 : c.coding == 4 ? "predicted on a grid, geometry order"
                 : c.coding == 5 ? "predicted on a grid, graded start"

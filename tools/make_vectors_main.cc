@@ -26,6 +26,7 @@
 #include "analytic_loop_files.h"
 #include "attribute_generators.h"
 #include "bitio/attribute_mapping.h"
+#include "bitio/predicted_mapping.h"
 #include "bitio/face_label_coding.h"
 #include "bitio/octahedral_normal.h"
 #include "encoder/position_encoder.h"
@@ -55,6 +56,7 @@ qmc::EncodeOptions format_1_6_options() {
   options.geometry_order = false;
   options.attribute_geometry_order = false;
   options.attribute_graded_start = false;
+  options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
   return options;
 }
 
@@ -1901,7 +1903,7 @@ std::vector<uint8_t> attr_payload(const AttrFields& f) {
   for (uint8_t b : {f.kind, f.components, f.mapping}) qmc::put_u8(&p, b);
   qmc::put_varint(&p, f.values);
   qmc::put_u8(&p, f.coding);
-  if (f.mapping == 1) {
+  if (f.mapping == 1 || f.mapping == 3) {
     qmc::put_varint(&p, f.mapping_length >= 0 ? uint64_t(f.mapping_length) : f.mapping_stream.size());
     p.insert(p.end(), f.mapping_stream.begin(), f.mapping_stream.end());
   }
@@ -2548,6 +2550,7 @@ std::vector<uint8_t> encode_posn_as_written(const Mesh& mesh, int method, int bi
   options.geometry_order = method == 4;
   options.attribute_geometry_order = false;  // aTTR codings 4, 5 and 6 came after these vectors
   options.attribute_graded_start = false;
+  options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
   return encode_posn_method(mesh, options, method);
 }
 
@@ -2711,6 +2714,7 @@ std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, 
   qmc::EncodeOptions options;
   options.geometry_order = posn_geometry_order;
   options.attribute_graded_start = false;  // codings 5 and 6 came after these vectors
+  options.attribute_predicted_mapping = false;  // and mapping 3 (15.11)
   std::vector<uint8_t> out;
   qmc::EncodeStats stats;
   if (qmc::Status s = qmc::encode(mesh, options, &out, &stats);
@@ -2801,6 +2805,7 @@ void write_attribute_coding56_vectors(VectorWriter* w) {
   Mesh textured = perturbed(qmc::tools::triangulated(qmc::tools::make_torus(20, 8)), 75, 0.004f);
   qmc::tools::add_chart_texcoords(&textured);
   qmc::EncodeOptions options;
+  options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
   const std::vector<uint8_t> six = encode_attribute_coding(textured, options, 6, "coding 6 texcoords");
   w->valid("valid_attr_coding6_texcoords", six, &textured);
   qmc::EncodeOptions label_order = options;
@@ -2850,6 +2855,116 @@ void write_attribute_coding56_vectors(VectorWriter* w) {
   w->invalid("invalid_attr_coding6_value_outside_grid", join_chunks(c), ErrorCode::kBadSymbol);
 }
 
+// Section 15.11: aTTR mapping 3, what `qmc encode` writes where its stream
+// is the smaller; the generator fails if the file's attributes are not all
+// per corner with mapping 3.
+std::vector<uint8_t> encode_mapping3(const Mesh& mesh, const qmc::EncodeOptions& options, const char* what) {
+  std::vector<uint8_t> out;
+  qmc::DecodedFile file;
+  if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: %s: %s\n", what, s.to_string().c_str());
+    std::exit(3);
+  }
+  bool all = qmc::decode(out.data(), out.size(), &file).ok() && !file.attribute_codings.empty();
+  for (const qmc::AttributeCoding& c : file.attribute_codings) all = all && c.mapping == 3;
+  if (!all) {
+    std::fprintf(stderr, "qmc-make-vectors: %s: not aTTR mapping 3\n", what);
+    std::exit(3);
+  }
+  return out;
+}
+
+// A mapping-3 stream (15.11) giving corner k the value truth[k], the vertices
+// in `single` single; any truth is coded, so a wrong one makes a bad stream.
+std::vector<uint8_t> predicted_mapping_stream(const Mesh& faces, uint64_t value_count, const std::vector<uint32_t>& truth,
+                                              const std::vector<uint8_t>& single) {
+  qmc::RangeEncoder rc;
+  qmc::PredictedMappingModel model;
+  qmc::PredictedMapping mapping;
+  mapping.reset(uint32_t(faces.vertex_count()), faces.face_sizes, faces.corners);
+  uint32_t met = 0;
+  qmc::MappingFault fault = qmc::MappingFault::kNone;
+  for (size_t k = 0; k < truth.size(); ++k) mapping.code(&rc, &model, k, value_count, &met, truth.data(), &single, &fault);
+  return rc.finish();
+}
+
+// Per-face values (flat shading): every corner of face f refers to value f,
+// the face's unit normal from its first three corners.
+void add_face_normals(Mesh* mesh) {
+  MeshAttribute normal{"normal", qmc::AttributeKind::kNormal, 3, {}, {}};
+  size_t start = 0;
+  for (size_t f = 0; f < mesh->face_sizes.size(); ++f) {
+    const float* p[3];
+    for (int i = 0; i < 3; ++i) p[i] = &mesh->positions[3 * size_t(mesh->corners[start + i])];
+    const double a[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
+    const double b[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+    const double n[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double x : n) normal.values.push_back(float(x / length));
+    for (uint32_t i = 0; i < mesh->face_sizes[f]; ++i) normal.corner_values.push_back(uint32_t(f));
+    start += mesh->face_sizes[f];
+  }
+  mesh->attributes.push_back(normal);
+}
+
+void write_attribute_mapping3_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  using namespace qmc::tools;
+  const qmc::EncodeOptions options;  // what `qmc encode` writes
+  // Texture coordinates with seams: charts on a torus of triangles, and on one of quads.
+  Mesh textured = perturbed(triangulated(make_torus(20, 8)), 81, 0.004f);
+  add_chart_texcoords(&textured);
+  const std::vector<uint8_t> texcoords = encode_mapping3(textured, options, "mapping 3 texcoords");
+  w->valid("valid_attr_mapping3_texcoords", texcoords, &textured);
+  Mesh quads = make_torus(12, 6);
+  add_chart_texcoords(&quads);
+  w->valid("valid_attr_mapping3_quads", encode_mapping3(quads, options, "mapping 3 on quads"), &quads);
+  // Flat shading: a normal per face (15.11's face rule), coding 3 (15.7).
+  Mesh flat = perturbed(triangulated(make_refined_sphere(2)), 83, 0.01f);
+  add_face_normals(&flat);
+  w->valid("valid_attr_mapping3_flat_normals", encode_mapping3(flat, options, "mapping 3 flat normals"), &flat);
+  // 15.6: oRDR restores the input's corners with mapping 3.
+  qmc::EncodeOptions keep = options;
+  keep.keep_order = true;
+  w->valid("valid_attr_mapping3_keep_order", encode_mapping3(textured, keep, "mapping 3 kept order"), &textured);
+
+  // 15.11's rules on a cube of 24 corners with exact values (coding 1): its
+  // 24 values are one per corner, vertex 0 of several values.
+  const std::vector<uint8_t> cube = encode_with(make_cube(), format_1_6_options(), "cube");
+  qmc::DecodedFile cube_file;
+  (void)qmc::decode(cube.data(), cube.size(), &cube_file);
+  std::vector<uint32_t> truth(24);
+  for (uint32_t k = 0; k < 24; ++k) truth[k] = k;
+  const std::vector<uint8_t> none_single(8, 0);
+  AttrFields f;
+  f.mapping = 3;
+  f.mapping_stream = predicted_mapping_stream(cube_file.mesh, 24, truth, none_single);
+  f.rest = exact_values(48);
+  w->valid("valid_attr_mapping3_every_corner_new", with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute,
+                                                                     attr_payload(f)), nullptr);
+  AttrFields cut = f;
+  cut.mapping_stream.resize(cut.mapping_stream.size() - 3);
+  w->invalid("invalid_attr_mapping3_truncated",
+             with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(cut)), ErrorCode::kTruncated);
+  AttrFields extra = f;
+  extra.mapping_stream.push_back(0x55);
+  extra.mapping_stream.push_back(0x55);
+  extra.mapping_stream.push_back(0x55);
+  extra.mapping_stream.push_back(0x55);
+  extra.mapping_stream.push_back(0x55);
+  w->invalid("invalid_attr_mapping3_bytes_after_data",
+             with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(extra)),
+             ErrorCode::kBadChunkPayload);
+  // Corner 5 refers to value 6 when 5 values were met: "any value met
+  // before" with 3 direct bits past U.
+  std::vector<uint32_t> past = truth;
+  past[5] = 6;
+  AttrFields bad = f;
+  bad.mapping_stream = predicted_mapping_stream(cube_file.mesh, 24, past, none_single);
+  w->invalid("invalid_attr_mapping3_value_not_met",
+             with_chunk_before(cube, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(bad)), ErrorCode::kBadSymbol);
+}
+
 int main(int argc, char** argv) {
   if (argc != 2) {
     std::fprintf(stderr, "usage: qmc-make-vectors DIR   (writes DIR/MANIFEST and DIR/vectors/*.qmc)\n");
@@ -2885,6 +3000,7 @@ int main(int argc, char** argv) {
   write_posn4_vectors(&w);
   write_attribute_coding4_vectors(&w);
   write_attribute_coding56_vectors(&w);
+  write_attribute_mapping3_vectors(&w);
   w.finish();
   return 0;
 }

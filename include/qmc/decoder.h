@@ -87,7 +87,7 @@ struct GeometryImageData {
 // Section 15: how one decoded attribute was coded (mesh.attributes[i] is
 // described by attribute_codings[i]).
 struct AttributeCoding {
-  uint8_t mapping = 0;  // 0 per vertex, 1 per corner (15.1)
+  uint8_t mapping = 0;  // 0 per vertex, 1 per corner (15.3), 3 per corner predicted from the faces (15.11)
   uint8_t coding = 0;   // 0 predicted on a grid (15.4), 1 exact binary32 (15.5), 3 octahedral normals (15.7),
                         // 4 as 0 in the geometry order (15.9), 5 and 6 as 0 and 4 with a graded start (15.10)
   std::array<float, 3> origin{};   // codings 0, 4, 5 and 6: value = origin + q x step, per component

@@ -114,6 +114,13 @@ struct EncodeOptions {
   // coordinates of the corpus's control meshes. Decoders of the revisions
   // before it skip such an attribute; false keeps codings 0 and 4.
   bool attribute_graded_start = true;
+  // A per-corner attribute may take aTTR mapping 3 (spec 15.11: a decision a
+  // vertex where its corners share one value, a seam vertex's corners
+  // predicted from the faces next to them) where it is smaller than 15.3's
+  // mapping 1: about half the mapping bytes of the corpus's texture
+  // coordinates. Decoders of the revisions before it skip such an attribute;
+  // false keeps mapping 1.
+  bool attribute_predicted_mapping = true;
   std::vector<std::string> texts;            // written as teXt chunks ("key=value")
   // Write an oRDR chunk (section 4.5) so that the decoder restores the
   // input's order of vertices, faces and corners exactly; nothing is
@@ -219,7 +226,8 @@ struct PositionStats {
 // Section 15: how one attribute was coded.
 struct AttributeStats {
   std::string name;
-  bool per_corner = false;       // mapping 1 (else one value per vertex)
+  bool per_corner = false;       // mapping 1 or 3 (else one value per vertex)
+  bool predicted_mapping = false;  // mapping 3: predicted from the faces around each vertex (15.11)
   bool exact = false;            // coding 1 (else predicted on a grid)
   bool octahedral = false;       // coding 3: unit normals, octahedral (15.7)
   bool geometry_order = false;   // coding 4 or 6: the values in 14.6's order (15.9)

@@ -55,20 +55,25 @@ struct MappingChoice {
   uint32_t index = 0;  // kOwn: j; kMet: the value
 };
 
-// 15.3 for corner of vertex v: codes `choice` (encoder) or decodes it
-// (decoder: choice ignored); returns the value m_k, updating *met (U) and
-// the lists. *fault is set when the decoded decisions break a rule.
+// 15.3's first decision for a corner of vertex v: NEW[min(n, 2)], coded
+// only while U < N. On 1 the corner takes the next value, appended to S_v.
 template <class Coder>
-uint32_t code_corner_value(Coder* coder, AttributeMappingModel* m, VertexValueLists* lists, uint32_t v,
-                           uint64_t value_count, uint32_t* met, MappingChoice choice, MappingFault* fault) {
+bool code_new_value(Coder* coder, AttributeMappingModel* m, VertexValueLists* lists, uint32_t v,
+                    uint64_t value_count, uint32_t* met, MappingChoice choice, uint32_t* value) {
   const uint32_t n = lists->length(v);
-  int fresh = 0;
-  if (*met < value_count) fresh = coder->code(choice.branch == MappingChoice::kNew, &m->fresh[n < 2 ? n : 2]);
-  if (fresh) {
-    const uint32_t value = (*met)++;
-    lists->append(v, value);
-    return value;
-  }
+  if (*met >= value_count || !coder->code(choice.branch == MappingChoice::kNew, &m->fresh[n < 2 ? n : 2]))
+    return false;
+  *value = (*met)++;
+  lists->append(v, *value);
+  return true;
+}
+
+// 15.3's decisions after NEW = 0: OWN and an index into S_v, or any value
+// met before. *fault is set when the decoded decisions break a rule.
+template <class Coder>
+uint32_t code_earlier_value(Coder* coder, AttributeMappingModel* m, VertexValueLists* lists, uint32_t v,
+                            uint32_t met, MappingChoice choice, MappingFault* fault) {
+  const uint32_t n = lists->length(v);
   if (n >= 1 && coder->code(choice.branch == MappingChoice::kOwn, &m->own)) {
     const uint32_t j = n == 1 ? 0 : code_direct_bits(coder, bit_length(n - 1), choice.index);
     if (j >= n) {
@@ -77,17 +82,28 @@ uint32_t code_corner_value(Coder* coder, AttributeMappingModel* m, VertexValueLi
     }
     return lists->at(v, j);
   }
-  if (*met == 0) {
+  if (met == 0) {
     *fault = MappingFault::kNothingMet;
     return 0;
   }
-  const uint32_t value = code_direct_bits(coder, bit_length(*met - 1), choice.index);
-  if (value >= *met) {
+  const uint32_t value = code_direct_bits(coder, bit_length(met - 1), choice.index);
+  if (value >= met) {
     *fault = MappingFault::kMetIndex;
     return 0;
   }
   lists->append(v, value);
   return value;
+}
+
+// 15.3 for corner of vertex v: codes `choice` (encoder) or decodes it
+// (decoder: choice ignored); returns the value m_k, updating *met (U) and
+// the lists.
+template <class Coder>
+uint32_t code_corner_value(Coder* coder, AttributeMappingModel* m, VertexValueLists* lists, uint32_t v,
+                           uint64_t value_count, uint32_t* met, MappingChoice choice, MappingFault* fault) {
+  uint32_t value = 0;
+  if (code_new_value(coder, m, lists, v, value_count, met, choice, &value)) return value;
+  return code_earlier_value(coder, m, lists, v, *met, choice, fault);
 }
 
 }  // namespace qmc

@@ -1,5 +1,5 @@
 // The aTTR chunk, spec/qmc-format.md section 15: header and checks (15.1),
-// the per-corner mapping (15.3), and the values predicted over the
+// the per-corner mapping (15.3, 15.11), and the values predicted over the
 // attribute mesh (15.4) or stored as binary32 (15.5).
 #include "decoder/attribute_decoder.h"
 
@@ -11,13 +11,16 @@
 #include "bitio/byte_io.h"
 #include "bitio/exact_arith.h"
 #include "bitio/octahedral_normal.h"
+#include "bitio/predicted_mapping.h"
 #include "bitio/range_coder.h"
 #include "decoder/position_decoder.h"
 
 namespace qmc {
 namespace {
 
-constexpr uint8_t kMappingPerVertex = 0, kMappingPerCorner = 1;
+constexpr uint8_t kMappingPerVertex = 0, kMappingPredicted = 3;  // 1: per corner, 15.3
+// 15.1: mapping 2 stays unassigned (the vector valid_attr_unknown_mapping_skipped uses it).
+constexpr uint8_t kMappingUnassigned = 2;
 constexpr uint8_t kCodingGrid = 0, kCodingExact = 1, kCodingOctahedral = 3, kCodingGeometryOrder = 4;
 constexpr uint8_t kCodingGridGraded = 5, kCodingGeometryOrderGraded = 6;  // 15.10
 // 15.1: coding 2 stays unassigned (the vector valid_attr_unknown_coding_skipped uses it).
@@ -78,7 +81,7 @@ Status read_sizes(ByteReader* in, uint32_t vertex_count, Header* h, bool* skippe
   }
   if (h->coding == kCodingOctahedral && h->components != 3)
     return bad(*h, "coding 3 (octahedral normals) with " + std::to_string(h->components) + " components, not 3");
-  if (h->mapping == kMappingPerCorner) {
+  if (h->mapping != kMappingPerVertex) {
     uint64_t m = 0;
     if (!in->get_varint(&m) || m > in->remaining())
       return bad(*h, "mapping_bytes missing, malformed or beyond the payload");
@@ -96,32 +99,41 @@ Status read_sizes(ByteReader* in, uint32_t vertex_count, Header* h, bool* skippe
   return Status::Ok();
 }
 
-Status mapping_fault(const Header& h, MappingFault fault, uint64_t k) {
+Status mapping_fault(const Header& h, MappingFault fault, uint64_t k, const char* section) {
   const char* what = fault == MappingFault::kOwnIndex     ? "an index past the vertex's own values"
                      : fault == MappingFault::kNothingMet ? "an earlier value before any value was met"
                                                           : "an index past the values met so far";
   return Status(ErrorCode::kBadSymbol,
-                h.label + ": corner " + std::to_string(k) + " refers to " + what + " (section 15.3)");
+                h.label + ": corner " + std::to_string(k) + " refers to " + what + " (section " + section + ")");
 }
 
-// Section 15.3: m_k for every corner.
+// Sections 15.3 (mapping 1) and 15.11 (mapping 3): m_k for every corner.
 Status decode_mapping(const Header& h, const Mesh& faces, uint32_t vertex_count, std::vector<uint32_t>* m) {
   RangeDecoder rc(h.mapping_stream, h.mapping_bytes);
   if (rc.bad_start())
     return Status(ErrorCode::kBadChunkPayload,
                   h.label + ": the mapping stream starts with 0xFFFFFFFF (section 13.5.2)");
+  const bool predicted = h.mapping == kMappingPredicted;
+  const char* section = predicted ? "15.11" : "15.3";
   AttributeMappingModel model;
   VertexValueLists lists;
-  lists.reset(vertex_count, faces.corners);
+  PredictedMappingModel predicted_model;
+  PredictedMapping predicted_mapping;
+  if (predicted)
+    predicted_mapping.reset(vertex_count, faces.face_sizes, faces.corners);
+  else
+    lists.reset(vertex_count, faces.corners);
   m->resize(faces.corners.size());
   uint32_t met = 0;
   for (size_t k = 0; k < faces.corners.size(); ++k) {
     MappingFault fault = MappingFault::kNone;
-    (*m)[k] = code_corner_value(&rc, &model, &lists, faces.corners[k], h.value_count, &met, MappingChoice{}, &fault);
-    if (fault != MappingFault::kNone) return mapping_fault(h, fault, k);
+    (*m)[k] = predicted ? predicted_mapping.code(&rc, &predicted_model, k, h.value_count, &met, nullptr, nullptr, &fault)
+                        : code_corner_value(&rc, &model, &lists, faces.corners[k], h.value_count, &met,
+                                            MappingChoice{}, &fault);
+    if (fault != MappingFault::kNone) return mapping_fault(h, fault, k, section);
     if (rc.overrun())
-      return Status(ErrorCode::kTruncated,
-                    h.label + ": the mapping stream ends inside corner " + std::to_string(k) + " (section 15.3)");
+      return Status(ErrorCode::kTruncated, h.label + ": the mapping stream ends inside corner " + std::to_string(k) +
+                                               " (section " + section + ")");
   }
   if (rc.unread() != 0)
     return Status(ErrorCode::kBadChunkPayload, h.label + ": " + std::to_string(rc.unread()) +
@@ -254,7 +266,7 @@ Status decode_attribute(const uint8_t* payload, size_t size, const Mesh& faces, 
   ByteReader in(payload, size);
   Header h;
   if (Status s = read_identity(&in, faces, vertex_count, earlier, &h, out); !s.ok()) return s;
-  if (h.mapping > kMappingPerCorner) {  // check 4: a mapping of a later revision
+  if (h.mapping > kMappingPredicted || h.mapping == kMappingUnassigned) {  // check 4: a later revision's mapping
     *skipped = true;
     return Status::Ok();
   }

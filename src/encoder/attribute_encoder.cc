@@ -1,5 +1,6 @@
 // The aTTR chunk, spec/qmc-format.md section 15, on the encoder side: the
-// mapping (one value per vertex, or per corner with 15.3's decisions), and
+// mapping (one value per vertex, or per corner with the decisions of 15.3 or
+// 15.11, whichever is smaller), and
 // the values on the uniform grid of their bounding box, predicted over the
 // attribute mesh as positions are (15.4), or exact binary32 (15.5).
 #include "encoder/attribute_encoder.h"
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "bitio/attribute_mapping.h"
+#include "bitio/predicted_mapping.h"
 #include "bitio/byte_io.h"
 #include "bitio/octahedral_normal.h"
 #include "bitio/range_coder.h"
@@ -17,7 +19,7 @@
 namespace qmc {
 namespace {
 
-constexpr uint8_t kMappingPerVertex = 0, kMappingPerCorner = 1;
+constexpr uint8_t kMappingPerVertex = 0, kMappingPerCorner = 1, kMappingPredicted = 3;
 constexpr uint8_t kCodingGrid = 0, kCodingExact = 1, kCodingOctahedral = 3, kCodingGeometryOrder = 4;
 constexpr uint8_t kCodingGridGraded = 5, kCodingGeometryOrderGraded = 6;  // 15.10
 // 15.8: normals within this of unit length take coding 3.
@@ -25,7 +27,6 @@ constexpr double kUnitTolerance = 1e-3;
 constexpr uint32_t kNone = UINT32_MAX;
 // The longest list S_v the encoder searches for a value of the vertex's own
 // (15.3); past it, a value is coded as met before, which is as valid.
-constexpr uint32_t kSearchedOwnValues = 64;
 
 int bits_for(AttributeKind kind, const EncodeOptions& options) {
   switch (kind) {
@@ -90,19 +91,24 @@ std::vector<uint8_t> encode_mapping(const std::vector<uint32_t>& m, const Mesh& 
   uint32_t met = 0;
   for (size_t k = 0; k < m.size(); ++k) {
     const uint32_t v = file_mesh.corners[k];
-    MappingChoice choice;
-    if (m[k] == met) {
-      choice.branch = MappingChoice::kNew;
-    } else {
-      choice = {MappingChoice::kMet, m[k]};
-      for (uint32_t j = 0; j < std::min(lists.length(v), kSearchedOwnValues); ++j)
-        if (lists.at(v, j) == m[k]) {
-          choice = {MappingChoice::kOwn, j};
-          break;
-        }
-    }
     MappingFault fault = MappingFault::kNone;
-    code_corner_value(&rc, &model, &lists, v, value_count, &met, choice, &fault);
+    code_corner_value(&rc, &model, &lists, v, value_count, &met, fallback_choice(lists, v, m[k], met), &fault);
+  }
+  return rc.finish();
+}
+
+// 15.11: the decisions of every corner, predicted from the faces around it.
+std::vector<uint8_t> encode_predicted_mapping(const std::vector<uint32_t>& m, const Mesh& file_mesh,
+                                              size_t vertex_count, size_t value_count) {
+  const std::vector<uint8_t> single = single_value_vertices(file_mesh.corners, m, vertex_count);
+  RangeEncoder rc;
+  PredictedMappingModel model;
+  PredictedMapping mapping;
+  mapping.reset(uint32_t(vertex_count), file_mesh.face_sizes, file_mesh.corners);
+  uint32_t met = 0;
+  for (size_t k = 0; k < m.size(); ++k) {
+    MappingFault fault = MappingFault::kNone;
+    mapping.code(&rc, &model, k, value_count, &met, m.data(), &single, &fault);
   }
   return rc.finish();
 }
@@ -322,11 +328,24 @@ Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, c
   payload->insert(payload->end(), attribute.name.begin(), attribute.name.end());
   put_u8(payload, uint8_t(attribute.kind));
   put_u8(payload, uint8_t(c));
-  put_u8(payload, per_vertex ? kMappingPerVertex : kMappingPerCorner);
+  std::vector<uint8_t> mapping;
+  uint8_t mapping_kind = kMappingPerVertex;
+  if (!per_vertex) {  // 15.3 or 15.11, the smaller (15.3 on a tie)
+    mapping = encode_mapping(m, file_mesh, vertex_count, value_count);
+    mapping_kind = kMappingPerCorner;
+    if (options.attribute_predicted_mapping) {
+      std::vector<uint8_t> predicted = encode_predicted_mapping(m, file_mesh, vertex_count, value_count);
+      if (predicted.size() < mapping.size()) {
+        mapping.swap(predicted);
+        mapping_kind = kMappingPredicted;
+      }
+    }
+  }
+  stats->predicted_mapping = mapping_kind == kMappingPredicted;
+  put_u8(payload, mapping_kind);
   put_varint(payload, value_count);
   put_u8(payload, coding);
   if (!per_vertex) {
-    const std::vector<uint8_t> mapping = encode_mapping(m, file_mesh, vertex_count, value_count);
     put_varint(payload, mapping.size());
     payload->insert(payload->end(), mapping.begin(), mapping.end());
     stats->mapping_bytes = mapping.size();
