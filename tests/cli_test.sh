@@ -343,6 +343,19 @@ contains info-predicted-mapping-named "$work/out" "160 values, per corner, predi
 check verify-predicted-mapping 0 "$qmc" verify "$work/t160flat.obj" "$work/t160flat.qmc"
 check encode-predicted-mapping-1.7 0 "$qmc" encode "$work/t160flat.obj" "$work/t160flat17.qmc" --format 1.7
 contains encode-predicted-mapping-1.7-per-corner "$work/out" "normal (spec 15): 160 values, per corner, unit normals"
+# 15.12: texture coordinates guided by the positions (coding 7): a grid of 16 x 16 quads moved in its
+# plane, (u, v) its (x, y); --format 1.7 keeps codings 0 and 4 - 6.
+"$meshgen" grid 16 16 "$work/g16.obj" >/dev/null
+awk 'BEGIN{srand(3)} /^v /{x = $2 + (rand() - 0.5) * 0.08; y = $3 + (rand() - 0.5) * 0.08; print "v", x, y, $4;
+     print "vt", x, y; next} /^f /{printf "f"; for (i = 2; i <= NF; i++) printf " %s/%s", $i, $i; print ""; next}
+     {print}' "$work/g16.obj" >"$work/g16uv.obj"
+check encode-guided 0 "$qmc" encode "$work/g16uv.obj" "$work/g16uv.qmc"
+contains encode-guided-report "$work/out" "289 values, one per vertex, grid step [0-9.e-]*, guided by the positions (spec 15.12)"
+check info-guided 0 "$qmc" info "$work/g16uv.qmc"
+contains info-guided-coding "$work/out" "289 values, one per vertex, predicted on a grid, guided by the positions"
+check verify-guided 0 "$qmc" verify "$work/g16uv.obj" "$work/g16uv.qmc"
+check encode-guided-1.7 0 "$qmc" encode "$work/g16uv.obj" "$work/g16uv17.qmc" --format 1.7
+contains encode-guided-1.7-unguided "$work/out" "289 values, one per vertex, grid step [0-9.e-]*; "
 check decode-attributes-keep-order 0 "$qmc" encode "$work/uv.obj" "$work/uv_kept.qmc" --keep-order
 check decode-attributes-keep-order-obj 0 "$qmc" decode "$work/uv_kept.qmc" "$work/uv_kept.obj"
 contains decode-attributes-kept-face "$work/uv_kept.obj" "^f 3/[0-9]/1 2/[0-9]/1 4/[0-9]/1$"

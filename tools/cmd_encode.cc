@@ -238,6 +238,7 @@ int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   o.attribute_geometry_order = false;  // aTTR coding 4 (15.9) came with 1.8
   o.attribute_graded_start = false;    // and codings 5 and 6 (15.10) after it,
   o.attribute_predicted_mapping = false;  // and mapping 3 (15.11)
+  o.attribute_guided = false;             // and coding 7 (15.12)
   if (args->newest_minor >= 7) return -1;
   o.graded_class_start = false;
   if (args->newest_minor >= 6) return -1;
@@ -452,6 +453,7 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
                 a.exact        ? "exact binary32"
                 : a.octahedral ? "unit normals, octahedral (spec 15.7)"
                                : ("grid step " + shortest_number(a.step) +
+                                  (a.guided ? ", guided by the positions (spec 15.12)" : "") +
                                   (a.geometry_order ? ", geometry order (spec 15.9)" : "") +
                                   (a.graded_start ? ", graded start (spec 15.10)" : ""))
                                      .c_str(),

@@ -126,6 +126,11 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
                 : c.coding == 5 ? "predicted on a grid, graded start"
                 : c.coding == 6 ? "predicted on a grid, geometry order, graded start"
                 : c.coding == 3 ? "unit normals, octahedral"
+                : c.coding == 7 ? (c.options == 0   ? "predicted on a grid, guided by the positions"
+                                   : c.options == 1 ? "predicted on a grid, guided by the positions, geometry order"
+                                   : c.options == 2 ? "predicted on a grid, guided by the positions, graded start"
+                                                    : "predicted on a grid, guided by the positions, geometry order, "
+                                                      "graded start")
                                 : "exact binary32",
                 static_cast<unsigned long long>(c.chunk_bytes),
                 a.value_count() ? 8.0 * double(c.chunk_bytes) / double(a.value_count()) : 0.0);

@@ -6,6 +6,7 @@
 // existing files byte-identical as long as the encoder's output does not
 // change; `git diff conformance/` shows if it did, and such a change must
 // not be committed over existing vectors (give new vectors new names).
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -57,6 +58,7 @@ qmc::EncodeOptions format_1_6_options() {
   options.attribute_geometry_order = false;
   options.attribute_graded_start = false;
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
+  options.attribute_guided = false;             // and coding 7 (15.12)
   return options;
 }
 
@@ -2551,6 +2553,7 @@ std::vector<uint8_t> encode_posn_as_written(const Mesh& mesh, int method, int bi
   options.attribute_geometry_order = false;  // aTTR codings 4, 5 and 6 came after these vectors
   options.attribute_graded_start = false;
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
+  options.attribute_guided = false;             // and coding 7 (15.12)
   return encode_posn_method(mesh, options, method);
 }
 
@@ -2715,6 +2718,7 @@ std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, 
   options.geometry_order = posn_geometry_order;
   options.attribute_graded_start = false;  // codings 5 and 6 came after these vectors
   options.attribute_predicted_mapping = false;  // and mapping 3 (15.11)
+  options.attribute_guided = false;             // and coding 7 (15.12)
   std::vector<uint8_t> out;
   qmc::EncodeStats stats;
   if (qmc::Status s = qmc::encode(mesh, options, &out, &stats);
@@ -2729,13 +2733,13 @@ std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, 
 // 5 and 6, mapping 1) with both tops set to 1: a value the grid cannot
 // hold. After the mapping stream: grid 0, two f32 origins, one f64 step,
 // two tops.
-std::vector<uint8_t> with_tops_of_one(const std::vector<uint8_t>& payload) {
+std::vector<uint8_t> with_tops_of_one(const std::vector<uint8_t>& payload, size_t before_grid = 0) {
   qmc::ByteReader r(payload.data(), payload.size());
   r.skip(attr_field_offsets(payload).after_coding);
   uint64_t mapping_bytes = 0;
   r.get_varint(&mapping_bytes);
   r.skip(mapping_bytes);
-  const size_t tops = r.position() + 1 + 8 + 8;
+  const size_t tops = r.position() + before_grid + 1 + 8 + 8;
   r.skip(tops - r.position());
   uint64_t top = 0;
   r.get_varint(&top);
@@ -2806,6 +2810,7 @@ void write_attribute_coding56_vectors(VectorWriter* w) {
   qmc::tools::add_chart_texcoords(&textured);
   qmc::EncodeOptions options;
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
+  options.attribute_guided = false;             // and coding 7 (15.12)
   const std::vector<uint8_t> six = encode_attribute_coding(textured, options, 6, "coding 6 texcoords");
   w->valid("valid_attr_coding6_texcoords", six, &textured);
   qmc::EncodeOptions label_order = options;
@@ -2853,6 +2858,208 @@ void write_attribute_coding56_vectors(VectorWriter* w) {
   auto [c, at] = attribute_payload(six);
   c[at].payload = with_tops_of_one(c[at].payload);
   w->invalid("invalid_attr_coding6_value_outside_grid", join_chunks(c), ErrorCode::kBadSymbol);
+}
+
+// Section 15.12: aTTR coding 7, what `qmc encode` writes where guiding by the
+// positions is the smaller; the generator fails on another coding or options.
+std::vector<uint8_t> encode_coding7(const Mesh& mesh, const qmc::EncodeOptions& options, uint8_t expected_options,
+                                    const char* what) {
+  const std::vector<uint8_t> out = encode_attribute_coding(mesh, options, 7, what);
+  qmc::DecodedFile file;
+  (void)qmc::decode(out.data(), out.size(), &file);
+  if (file.attribute_codings[0].options != expected_options) {
+    std::fprintf(stderr, "qmc-make-vectors: %s: coding 7 with options %u, not %u\n", what,
+                 unsigned(file.attribute_codings[0].options), unsigned(expected_options));
+    std::exit(3);
+  }
+  return out;
+}
+
+// A bumpy grid of nx x ny quads (or their triangles) whose vertices are moved in the plane by up
+// to a third of a cell (irregular faces, where parallelograms predict
+// poorly), with texture coordinates (x, y) in two charts, x < 0 and x >= 0,
+// the second shifted by 3 in u: a seam along x = 0; each value moved by up
+// to uv_noise cells.
+Mesh jittered_textured_grid(int nx, int ny, uint64_t seed, bool triangles, float uv_noise = 0) {
+  Mesh mesh = triangles ? qmc::tools::triangulated(qmc::tools::make_grid(nx, ny)) : qmc::tools::make_grid(nx, ny);
+  qmc::tools::SplitMix64 random(seed);
+  const float cell = 2.0f / float(std::max(nx, ny));
+  for (size_t v = 0; v < mesh.vertex_count(); ++v)
+    for (int a = 0; a < 2; ++a) mesh.positions[3 * v + a] += cell / 3 * (float(random.next() % 2001) / 1000.f - 1.f);
+  MeshAttribute uv{"texcoord", qmc::AttributeKind::kTextureCoordinate, 2, {}, {}};
+  std::vector<uint32_t> value_of(2 * mesh.vertex_count(), UINT32_MAX);
+  size_t start = 0;
+  for (uint32_t degree : mesh.face_sizes) {
+    float centroid = 0;
+    for (uint32_t i = 0; i < degree; ++i) centroid += mesh.positions[3 * size_t(mesh.corners[start + i])];
+    const size_t chart = centroid < 0 ? 0 : 1;
+    for (uint32_t i = 0; i < degree; ++i) {
+      const uint32_t v = mesh.corners[start + i];
+      uint32_t& value = value_of[chart * mesh.vertex_count() + v];
+      if (value == UINT32_MAX) {
+        value = uint32_t(uv.value_count());
+        for (int a = 0; a < 2; ++a)
+          uv.values.push_back(mesh.positions[3 * size_t(v) + a] + (a == 0 ? 3.0f * float(chart) : 0.0f) +
+                              uv_noise * cell * (float(random.next() % 2001) / 1000.f - 1.f));
+      }
+      uv.corner_values.push_back(value);
+    }
+    start += degree;
+  }
+  mesh.attributes.push_back(std::move(uv));
+  return mesh;
+}
+
+// The six sides of the cube [-1, 1]^3, each an n x n grid of triangles of
+// its own (no vertex shared between sides) moved in its plane by up to a
+// third of a cell, with texture coordinates the in-plane coordinates plus 3
+// times the side's number in u: every axis has the same range, so POSN
+// method 0's per-axis grid is uniform.
+Mesh jittered_textured_cube_sides(int n, uint64_t seed) {
+  Mesh mesh;
+  MeshAttribute uv{"texcoord", qmc::AttributeKind::kTextureCoordinate, 2, {}, {}};
+  qmc::tools::SplitMix64 random(seed);
+  const float cell = 2.0f / float(n);
+  for (int side = 0; side < 6; ++side) {
+    const int axis = side / 2;
+    const float level = side % 2 ? 1.0f : -1.0f;
+    const uint32_t first = uint32_t(mesh.vertex_count());
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        float s = -1 + cell * float(i), t = -1 + cell * float(j);
+        if (i > 0 && i < n) s += cell / 3 * (float(random.next() % 2001) / 1000.f - 1.f);
+        if (j > 0 && j < n) t += cell / 3 * (float(random.next() % 2001) / 1000.f - 1.f);
+        float p[3];
+        p[axis] = level;
+        p[(axis + 1) % 3] = s;
+        p[(axis + 2) % 3] = t;
+        mesh.positions.insert(mesh.positions.end(), p, p + 3);
+        uv.values.push_back(s + 3.0f * float(side));
+        uv.values.push_back(t);
+      }
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const uint32_t a = first + uint32_t(j * (n + 1) + i), b = a + 1, c = a + uint32_t(n + 1), d = c + 1;
+        for (const std::array<uint32_t, 3>& f : {std::array<uint32_t, 3>{a, b, d}, std::array<uint32_t, 3>{a, d, c}}) {
+          mesh.face_sizes.push_back(3);
+          mesh.corners.insert(mesh.corners.end(), f.begin(), f.end());
+        }
+      }
+  }
+  uv.corner_values = mesh.corners;
+  mesh.attributes.push_back(std::move(uv));
+  return mesh;
+}
+
+// 15.12 where a value has more corners the guided rule applies to than
+// candidates are kept (4): a soup of 48 triangles over 16 vertices, a value
+// per vertex from its positions' integers, coding 7 written directly (the
+// encoder would keep another coding for such a table). Such a corner adds
+// nothing and leaves the orientation as it is: a decoder that takes the side
+// there (and sets the orientation) reads value 14 outside the grid.
+std::vector<uint8_t> coding7_over_soup() {
+  qmc::tools::RandomSoupOptions o;
+  o.vertices = 16;
+  o.faces = 48;
+  o.max_degree = 3;
+  o.unreferenced = 0;
+  o.repeated_corners = false;
+  const std::vector<uint8_t> plain = encode_with(qmc::tools::make_random_soup(13, o), qmc::EncodeOptions{}, "soup");
+  qmc::DecodedFile d;
+  (void)qmc::decode(plain.data(), plain.size(), &d);
+  const uint32_t n = uint32_t(d.mesh.vertex_count()), top[3] = {8191, 8191, 0};
+  std::vector<uint32_t> q(3 * size_t(n), 0);
+  for (size_t v = 0; v < n; ++v) {
+    q[3 * v] = d.quantized[3 * v] + d.quantized[3 * v + 1];
+    q[3 * v + 1] = d.quantized[3 * v + 2] + d.quantized[3 * v] / 2;
+  }
+  qmc::PositionGuide guide;
+  guide.vertex_of_corner = d.mesh.corners.data();
+  guide.positions = d.quantized.data();
+  const std::vector<uint8_t> stream = qmc::encode_predicted_grid(
+      q, top, d.mesh, nullptr, qmc::CandidateChoice::kFewestBits, qmc::ClassStart::kFlat, qmc::PredictionOrder::kLabels,
+      &guide);
+  std::vector<uint8_t> p;
+  qmc::put_varint(&p, n);
+  qmc::put_varint(&p, d.mesh.corners.size());
+  qmc::put_u8(&p, 2);
+  p.push_back('u');
+  p.push_back('v');
+  for (uint8_t b : {1, 2, 0}) qmc::put_u8(&p, b);  // kind, components, mapping 0
+  qmc::put_varint(&p, n);
+  qmc::put_u8(&p, 7);  // coding 7
+  qmc::put_u8(&p, 0);  // options: label order, flat start
+  qmc::put_u8(&p, 0);  // grid 0
+  qmc::put_f32le(&p, 0.0f);
+  qmc::put_f32le(&p, 0.0f);
+  qmc::put_f64le(&p, 1.0 / 8191);
+  qmc::put_varint(&p, top[0]);
+  qmc::put_varint(&p, top[1]);
+  p.insert(p.end(), stream.begin(), stream.end());
+  return with_chunk_before(plain, qmc::kChunkEnd, qmc::kChunkAttribute, p);
+}
+
+void write_attribute_coding7_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  using namespace qmc::tools;
+  // Texture coordinates with a seam on 12 x 12 irregular quads split in triangles, each option.
+  const Mesh textured = jittered_textured_grid(12, 12, 91, true);
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  const std::vector<uint8_t> both = encode_coding7(textured, options, 1, "coding 7 texcoords");
+  w->valid("valid_attr_coding7_texcoords", both, &textured);
+  qmc::EncodeOptions labels = options;
+  labels.attribute_geometry_order = false;
+  labels.attribute_graded_start = false;
+  w->valid("valid_attr_coding7_no_option", encode_coding7(textured, labels, 0, "coding 7, no option"), &textured);
+  // 14.4.1's start pays on a smaller table (the encoder's choice, 15.8).
+  const Mesh small = jittered_textured_grid(6, 6, 95, true, 0.25f);
+  w->valid("valid_attr_coding7_graded_geometry_order", encode_coding7(small, options, 3, "coding 7, options 3"),
+           &small);
+  labels.attribute_graded_start = true;
+  w->valid("valid_attr_coding7_graded_start", encode_coding7(small, labels, 2, "coding 7, option 2"), &small);
+  // Over POSN method 1 and method 0 (15.7's q of each: the deltas' per-axis grid).
+  qmc::EncodeOptions over_posn1 = options;
+  over_posn1.geometry_order = false;
+  over_posn1.graded_class_start = false;
+  w->valid("valid_attr_coding7_over_posn1", encode_coding7(textured, over_posn1, 1, "coding 7 over method 1"),
+           &textured);
+  qmc::EncodeOptions over_posn0 = over_posn1;
+  over_posn0.position_method = qmc::PositionMethod::kDeltas;
+  over_posn0.position_grid = qmc::PositionGrid::kPerAxis;
+  const Mesh cube = jittered_textured_cube_sides(5, 97);
+  w->valid("valid_attr_coding7_over_posn0", encode_coding7(cube, over_posn0, 1, "coding 7 over method 0"), &cube);
+  // Quads: the side from the face's own opposite corner (15.12, d >= 4).
+  const Mesh quads = jittered_textured_grid(16, 16, 93, false);
+  w->valid("valid_attr_coding7_quads", encode_attribute_coding(quads, options, 7, "coding 7 on quads"), &quads);
+
+  w->valid("valid_attr_coding7_many_corners", coding7_over_soup(), nullptr);
+
+  // 15.12's rules.
+  Chunks c = split_chunks(both);
+  const size_t at = find_chunk(c, qmc::kChunkAttribute);
+  const std::vector<uint8_t> payload = c[at].payload;
+  const auto with_payload = [&](std::vector<uint8_t> p) {
+    Chunks d = c;
+    d[at].payload = std::move(p);
+    return join_chunks(d);
+  };
+  w->invalid("invalid_attr_coding7_truncated", with_payload({payload.begin(), payload.end() - 8}),
+             ErrorCode::kTruncated);
+  w->invalid("invalid_attr_coding7_value_outside_grid", with_payload(with_tops_of_one(payload, 1)),
+             ErrorCode::kBadSymbol);
+  // The options byte: after the mapping stream, before the grid.
+  qmc::ByteReader r(payload.data(), payload.size());
+  r.skip(attr_field_offsets(payload).after_coding);
+  uint64_t mapping_bytes = 0;
+  r.get_varint(&mapping_bytes);
+  const size_t options_at = r.position() + size_t(mapping_bytes);
+  std::vector<uint8_t> bit_2 = payload;
+  bit_2[options_at] |= 4;
+  w->invalid("invalid_attr_coding7_option_bit_2", with_payload(bit_2), ErrorCode::kBadChunkPayload);
+  // Coding 7 is for two components: the same chunk saying 3.
+  std::vector<uint8_t> three = payload;
+  three[attr_field_offsets(payload).components] = 3;
+  w->invalid("invalid_attr_coding7_three_components", with_payload(three), ErrorCode::kBadChunkPayload);
 }
 
 // Section 15.11: aTTR mapping 3, what `qmc encode` writes where its stream
@@ -2910,7 +3117,8 @@ void add_face_normals(Mesh* mesh) {
 void write_attribute_mapping3_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   using namespace qmc::tools;
-  const qmc::EncodeOptions options;  // what `qmc encode` writes
+  qmc::EncodeOptions options;  // what `qmc encode` wrote
+  options.attribute_guided = false;  // coding 7 (15.12) came after these vectors
   // Texture coordinates with seams: charts on a torus of triangles, and on one of quads.
   Mesh textured = perturbed(triangulated(make_torus(20, 8)), 81, 0.004f);
   add_chart_texcoords(&textured);
@@ -3001,6 +3209,7 @@ int main(int argc, char** argv) {
   write_attribute_coding4_vectors(&w);
   write_attribute_coding56_vectors(&w);
   write_attribute_mapping3_vectors(&w);
+  write_attribute_coding7_vectors(&w);
   w.finish();
   return 0;
 }

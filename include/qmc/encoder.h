@@ -121,6 +121,13 @@ struct EncodeOptions {
   // coordinates. Decoders of the revisions before it skip such an attribute;
   // false keeps mapping 1.
   bool attribute_predicted_mapping = true;
+  // Values of two components on a grid (texture coordinates) may take aTTR
+  // coding 7 (spec 15.12: each corner predicted where the shape of its face
+  // in space puts it, relative to the values of its two neighbours) where
+  // that is smaller: boat's texture coordinates 16 % smaller, cathead's 29 %.
+  // Decoders of the revisions before it skip such an attribute; false keeps
+  // codings 0 and 4 - 6.
+  bool attribute_guided = true;
   std::vector<std::string> texts;            // written as teXt chunks ("key=value")
   // Write an oRDR chunk (section 4.5) so that the decoder restores the
   // input's order of vertices, faces and corners exactly; nothing is
@@ -230,8 +237,9 @@ struct AttributeStats {
   bool predicted_mapping = false;  // mapping 3: predicted from the faces around each vertex (15.11)
   bool exact = false;            // coding 1 (else predicted on a grid)
   bool octahedral = false;       // coding 3: unit normals, octahedral (15.7)
-  bool geometry_order = false;   // coding 4 or 6: the values in 14.6's order (15.9)
-  bool graded_start = false;     // coding 5 or 6: the class probabilities start as 14.4.1 (15.10)
+  bool geometry_order = false;   // coding 4 or 6, or 7 with option 1: the values in 14.6's order (15.9)
+  bool graded_start = false;     // coding 5 or 6, or 7 with option 2: the class probabilities start as 14.4.1
+  bool guided = false;           // coding 7: guided by the positions (15.12)
   uint32_t value_count = 0;
   double step = 0;               // the grid's step (codings 0, 4, 5, 6); coding 3: 2 / (2^B - 1)
   uint64_t mapping_bytes = 0, value_bytes = 0;  // the mapping stream; the values (grid fields included)

@@ -37,15 +37,26 @@ class PredictionVisit {
     for (uint32_t i = 0; i < uint32_t(order_.size()); ++i) rank_[order_[i]] = i;
   }
   uint32_t item(uint32_t i) const { return order_.empty() ? i : order_[i]; }
-  // 14.3 for item(i).
+  // 15.12: texture coordinates guided by the positions (null: 14.3 alone),
+  // the orientation starting at +1.
+  void guide_by(const PositionGuide* guide) {
+    if (!guide) return;
+    guide_ = *guide;
+    guide_.orientation = 1;
+    guided_ = true;
+  }
+  // 14.3 for item(i), in order i = 0, 1, ... (the guide's orientation carries on).
   void predict(uint32_t i, const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
                VertexPrediction* out) const {
-    if (order_.empty()) return predict_vertex(mesh_, i, q, activity, top, out);
-    predict_vertex_in_order(mesh_, order_.data(), rank_.data(), i, q, activity, top, out);
+    PositionGuide* guide = guided_ ? &guide_ : nullptr;
+    if (order_.empty()) return predict_vertex(mesh_, i, q, activity, top, out, guide);
+    predict_vertex_in_order(mesh_, order_.data(), rank_.data(), i, q, activity, top, out, guide);
   }
 
  private:
   const VertexCorners& mesh_;
+  mutable PositionGuide guide_;  // 15.12's orientation changes as the values are predicted
+  bool guided_ = false;
   std::vector<uint32_t> order_, rank_;  // empty in label order
 };
 

@@ -1,8 +1,12 @@
 // Section 14.3 of spec/qmc-format.md: the prediction rules, one function
-// per rule, combined by weight in units of 2^-16.
+// per rule, combined by weight in units of 2^-16; and 15.12's guided rule
+// for texture coordinates.
 #include "bitio/vertex_prediction.h"
 
 #include <algorithm>
+#include <cmath>
+
+#include "bitio/octahedral_normal.h"  // floor_shift
 
 namespace qmc {
 namespace {
@@ -16,6 +20,7 @@ constexpr int64_t kOne = 65536;
 constexpr int64_t kWeightParallelogram = 1;
 constexpr int64_t kWeightPolygon = 2;
 constexpr int64_t kWeightStrip = 1;
+constexpr int64_t kWeightGuided = 1;
 
 int64_t polygon_coefficient(uint32_t degree) { return kPolygonCoefficient[std::min<uint32_t>(degree, 12) - 4]; }
 
@@ -107,6 +112,94 @@ void add_strip(const VertexCorners& m, uint32_t corner, int direction, const Vis
   });
 }
 
+// 15.12: the largest r with r r <= x (x < 2^62). The correction makes the
+// result exact whatever the floating-point square root returned.
+int64_t integer_sqrt(int64_t x) {
+  int64_t r = int64_t(std::sqrt(double(x)));
+  while (r > 0 && r * r > x) --r;
+  while ((r + 1) * (r + 1) <= x) ++r;
+  return r;
+}
+
+// 15.12: the six components of E and F shifted right by the smallest s that
+// brings them all into -2^14 .. 2^14 - 1 (floor division by 2^s).
+void shrink_to_15_bits(int64_t e[3], int64_t f[3]) {
+  int64_t largest = 0;  // of x >= 0 and -x - 1: floor(x / 2^s) fits iff largest >> s does
+  for (int i = 0; i < 3; ++i)
+    largest = std::max({largest, e[i] < 0 ? -e[i] - 1 : e[i], f[i] < 0 ? -f[i] - 1 : f[i]});
+  int s = 0;
+  while ((largest >> s) >= (int64_t(1) << 14)) ++s;
+  for (int i = 0; i < 3; ++i) {
+    e[i] = floor_shift(e[i], s);
+    f[i] = floor_shift(f[i], s);
+  }
+}
+
+// 15.12's side: -sgn(W) for the first o decoded before v, not a or b, with
+// W = D x (q[o] - q[a]) != 0; 0 if there is none. In a triangle the o are
+// the third vertices over the edge (a, b) that 14.2's search examines; in
+// a larger face, along(corner, +2).
+template <class Order>
+int guided_side(const VertexCorners& m, uint32_t corner, uint32_t a, uint32_t b, const int64_t d[2],
+                const Visit<Order>& at, const uint32_t* q) {
+  const auto side_of = [&](uint32_t o) {
+    if (!at.before(o) || o == a || o == b) return 0;
+    const int64_t w = d[0] * (int64_t(q[3 * size_t(o) + 1]) - int64_t(q[3 * size_t(a) + 1])) -
+                      d[1] * (int64_t(q[3 * size_t(o)]) - int64_t(q[3 * size_t(a)]));
+    return w > 0 ? -1 : w < 0 ? 1 : 0;
+  };
+  if (m.degree(corner) > 3) return side_of(m.along(corner, 2));
+  int side = 0, examined = 0;
+  m.for_each_link(a, b, true, [&](uint32_t k, uint32_t o) {
+    if (m.face(k) != m.face(corner)) side = side_of(o);
+    return side == 0 && ++examined < kMaxExamined;
+  });
+  return side;
+}
+
+// 15.12, the guided rule at v's corner: the value where the triangle of the
+// corner and its two neighbours in space puts it, relative to the values of
+// the neighbours a and b. False if the rule does not apply (the corner then
+// contributes as 14.3.1 says).
+template <class Order>
+bool add_guided(const VertexCorners& m, uint32_t corner, const VertexCorners::Sides& sides, const Visit<Order>& at,
+                const uint32_t* q, PositionGuide* guide, VertexPrediction* c) {
+  const uint32_t a = sides.next, b = sides.previous;
+  if (!at.before(a) || !at.before(b) || a == b) return false;
+  const uint32_t* p = guide->positions;
+  const size_t vc = guide->vertex_of_corner[corner], va = guide->vertex_of_corner[m.corner_along(corner, 1)],
+               vb = guide->vertex_of_corner[m.corner_along(corner, -1)];
+  int64_t e[3], f[3];
+  for (int i = 0; i < 3; ++i) {
+    e[i] = int64_t(p[3 * vb + i]) - int64_t(p[3 * va + i]);
+    f[i] = int64_t(p[3 * vc + i]) - int64_t(p[3 * va + i]);
+  }
+  shrink_to_15_bits(e, f);
+  const int64_t ee = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
+  if (ee == 0) return false;
+  if (c->candidates >= kMaxCandidates) return true;
+  const int64_t ef = e[0] * f[0] + e[1] * f[1] + e[2] * f[2];
+  const int64_t g[3] = {e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]};
+  const int64_t x = integer_sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+  const int64_t d[2] = {int64_t(q[3 * size_t(b)]) - int64_t(q[3 * size_t(a)]),
+                        int64_t(q[3 * size_t(b) + 1]) - int64_t(q[3 * size_t(a) + 1])};
+  const int side = guided_side(m, corner, a, b, d, at, q);
+  if (side != 0) guide->orientation = side;
+  const int64_t sigma = guide->orientation;
+  const int64_t n[2] = {ef * d[0] - sigma * x * d[1], ef * d[1] + sigma * x * d[0]};
+  int64_t* value = c->candidate[c->candidates];
+  for (int k = 0; k < 2; ++k) {
+    const int64_t whole = floor_div(n[k], ee), rest = n[k] - whole * ee;
+    const int64_t base = std::clamp<int64_t>(int64_t(q[3 * size_t(a) + k]) + whole, -(int64_t(1) << 31),
+                                             int64_t(1) << 31);
+    value[k] = kOne * base + kOne * rest / ee;
+  }
+  value[2] = 0;
+  c->scale += uint64_t(d[0] < 0 ? -d[0] : d[0]) + uint64_t(d[1] < 0 ? -d[1] : d[1]);
+  c->weight[c->candidates++] = kWeightGuided;
+  return true;
+}
+
 }  // namespace
 
 void VertexCorners::build(uint32_t vertex_count, const std::vector<uint32_t>& face_sizes,
@@ -174,10 +267,12 @@ void VertexCorners::build_links(bool triangles, std::vector<uint32_t>* first, st
 
 namespace {
 
-// 14.3.1: the candidates one corner of v contributes.
+// 14.3.1: the candidates one corner of v contributes (15.12: with a guide,
+// the guided candidate alone where the guided rule applies).
 template <class Order>
 void add_corner_candidates(const VertexCorners& m, uint32_t corner, const VertexCorners::Sides& sides,
-                           const Visit<Order>& at, const uint32_t* q, VertexPrediction* c) {
+                           const Visit<Order>& at, const uint32_t* q, PositionGuide* guide, VertexPrediction* c) {
+  if (guide && add_guided(m, corner, sides, at, q, guide, c)) return;
   if (m.degree(corner) == 3) return add_parallelograms(m, corner, sides, at, q, c);
   bool run = add_polygon_run(m, corner, -1, at, q, c);
   if (m.degree(corner) > 4) run = add_polygon_run(m, corner, +1, at, q, c) || run;
@@ -190,7 +285,7 @@ void add_corner_candidates(const VertexCorners& m, uint32_t corner, const Vertex
 // it, if any (14.3.2's fallback without neighbours).
 template <class Order>
 void predict(const VertexCorners& m, const Visit<Order>& at, const uint32_t* previous, const uint32_t* q,
-             const uint32_t* activity, const uint32_t top[3], VertexPrediction* out) {
+             const uint32_t* activity, const uint32_t top[3], PositionGuide* guide, VertexPrediction* out) {
   const uint32_t v = at.v;
   out->candidates = 0;
   out->scale = 0;
@@ -205,7 +300,7 @@ void predict(const VertexCorners& m, const Visit<Order>& at, const uint32_t* pre
       activity_sum += activity[u];
       ++neighbours;
     }
-    add_corner_candidates(m, *corner, *sides, at, q, out);
+    add_corner_candidates(m, *corner, *sides, at, q, guide, out);
   }
   if (out->candidates > 0) out->scale /= uint64_t(out->candidates);
   // 14.3.2: the fallback and the activity of 14.4.
@@ -224,15 +319,15 @@ void predict(const VertexCorners& m, const Visit<Order>& at, const uint32_t* pre
 }  // namespace
 
 void predict_vertex(const VertexCorners& m, uint32_t v, const uint32_t* q, const uint32_t* activity,
-                    const uint32_t top[3], VertexPrediction* out) {
+                    const uint32_t top[3], VertexPrediction* out, PositionGuide* guide) {
   const uint32_t previous = v - 1;
-  predict(m, Visit<LabelOrder>{{}, v, v}, v > 0 ? &previous : nullptr, q, activity, top, out);
+  predict(m, Visit<LabelOrder>{{}, v, v}, v > 0 ? &previous : nullptr, q, activity, top, guide, out);
 }
 
 void predict_vertex_in_order(const VertexCorners& m, const uint32_t* order, const uint32_t* rank, uint32_t i,
                              const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
-                             VertexPrediction* out) {
-  predict(m, Visit<RankOrder>{{rank}, order[i], i}, i > 0 ? &order[i - 1] : nullptr, q, activity, top, out);
+                             VertexPrediction* out, PositionGuide* guide) {
+  predict(m, Visit<RankOrder>{{rank}, order[i], i}, i > 0 ? &order[i - 1] : nullptr, q, activity, top, guide, out);
 }
 
 void select_candidates(VertexPrediction* p, unsigned mask, const uint32_t top[3]) {

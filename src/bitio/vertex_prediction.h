@@ -78,6 +78,13 @@ class VertexCorners {
   uint32_t degree(uint32_t corner) const {
     return triangles_only_ ? 3 : face_start_[face_of_[corner] + 1] - face_start_[face_of_[corner]];
   }
+  // The corner `step` corners further along corner's face (|step| <= 3).
+  uint32_t corner_along(uint32_t corner, int step) const {
+    if (triangles_only_) return corner + kTriangleStep[step + 3][corner % 3];
+    for (; step > 0; --step) corner = next_[corner];
+    for (; step < 0; ++step) corner = previous_[corner];
+    return corner;
+  }
   uint32_t along(uint32_t corner, int step) const {
     if (triangles_only_) return corners_[corner + kTriangleStep[step + 3][corner % 3]];
     for (; step > 0; --step) corner = next_[corner];
@@ -168,12 +175,24 @@ struct VertexPrediction {
   int64_t value[3] = {0, 0, 0};
 };
 
+// Section 15.12 (aTTR coding 7): texture coordinates guided by the
+// positions. The faces predicted over are an attribute mesh; the guide gives
+// the CONN vertex at each of its corners and the positions' integers (3 per
+// vertex), and carries the orientation from value to value.
+struct PositionGuide {
+  const uint32_t* vertex_of_corner = nullptr;
+  const uint32_t* positions = nullptr;
+  int orientation = 1;  // 15.12's ω
+};
+
 // Finds the candidates and the fallback of vertex v from q (3 per vertex,
 // labels < v decoded) and the activity of each decoded vertex, the sum of
 // its residuals' magnitudes |r_x| + |r_y| + |r_z| (14.3.2; below 2^32, as
 // each is at most 2^30 - 1). Selects nothing yet.
+// With a guide, a corner that 15.12's guided rule applies to contributes
+// that candidate alone.
 void predict_vertex(const VertexCorners& mesh, uint32_t v, const uint32_t* q, const uint32_t* activity,
-                    const uint32_t top[3], VertexPrediction* out);
+                    const uint32_t top[3], VertexPrediction* out, PositionGuide* guide = nullptr);
 
 // The same in 14.6's geometry order: the vertex order[i] (rank[order[i]] = i),
 // the vertices decoded before it those of rank below i, and order[i - 1]
@@ -181,7 +200,7 @@ void predict_vertex(const VertexCorners& mesh, uint32_t v, const uint32_t* q, co
 // faces renamed by rank, without renaming them.
 void predict_vertex_in_order(const VertexCorners& mesh, const uint32_t* order, const uint32_t* rank, uint32_t i,
                              const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
-                             VertexPrediction* out);
+                             VertexPrediction* out, PositionGuide* guide = nullptr);
 
 // 14.3.3: the prediction from the candidates whose bit is set in mask (the
 // weighted mean), or the fallback if none is.

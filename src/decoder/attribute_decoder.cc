@@ -1,6 +1,7 @@
 // The aTTR chunk, spec/qmc-format.md section 15: header and checks (15.1),
 // the per-corner mapping (15.3, 15.11), and the values predicted over the
-// attribute mesh (15.4) or stored as binary32 (15.5).
+// attribute mesh (15.4, 15.9, 15.10; guided by the positions, 15.12), unit
+// normals in an octahedral frame (15.7), or stored as binary32 (15.5).
 #include "decoder/attribute_decoder.h"
 
 #include <cmath>
@@ -23,6 +24,9 @@ constexpr uint8_t kMappingPerVertex = 0, kMappingPredicted = 3;  // 1: per corne
 constexpr uint8_t kMappingUnassigned = 2;
 constexpr uint8_t kCodingGrid = 0, kCodingExact = 1, kCodingOctahedral = 3, kCodingGeometryOrder = 4;
 constexpr uint8_t kCodingGridGraded = 5, kCodingGeometryOrderGraded = 6;  // 15.10
+constexpr uint8_t kCodingGuided = 7;                                       // 15.12
+// 15.12's options: the geometry order, the graded start; other bits are 0.
+constexpr uint8_t kGuidedGeometryOrder = 1, kGuidedGradedStart = 2, kGuidedOptionBits = 3;
 // 15.1: coding 2 stays unassigned (the vector valid_attr_unknown_coding_skipped uses it).
 constexpr uint8_t kCodingUnassigned = 2;
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
@@ -75,12 +79,15 @@ Status read_sizes(ByteReader* in, uint32_t vertex_count, Header* h, bool* skippe
     return bad(*h, "value_count " + std::to_string(h->value_count) + " is not V = " + std::to_string(vertex_count) +
                        " with mapping 0");
   if (!in->get_u8(&h->coding)) return bad(*h, "coding missing");
-  if (h->coding > kCodingGeometryOrderGraded || h->coding == kCodingUnassigned) {  // 15.1 check 6
+  if (h->coding > kCodingGuided || h->coding == kCodingUnassigned) {  // 15.1 check 6
     *skipped = true;
     return Status::Ok();
   }
   if (h->coding == kCodingOctahedral && h->components != 3)
     return bad(*h, "coding 3 (octahedral normals) with " + std::to_string(h->components) + " components, not 3");
+  if (h->coding == kCodingGuided && h->components != 2)
+    return bad(*h, "coding 7 (guided texture coordinates) with " + std::to_string(h->components) +
+                       " components, not 2");
   if (h->mapping != kMappingPerVertex) {
     uint64_t m = 0;
     if (!in->get_varint(&m) || m > in->remaining())
@@ -166,25 +173,37 @@ Status read_grid(ByteReader* in, const Header& h, float origin[3], double step[3
   return Status::Ok();
 }
 
-// Sections 15.4, 15.9 and 15.10: the values predicted over the attribute
-// mesh, in label order (codings 0 and 5) or 14.6's geometry order (codings 4
-// and 6), the class probabilities starting at 1024 (0, 4) or as 14.4.1 (5, 6).
+// Sections 15.4, 15.9, 15.10 and 15.12: the values predicted over the
+// attribute mesh, in label order (codings 0 and 5) or 14.6's geometry order
+// (codings 4 and 6), the class probabilities starting at 1024 (0, 4) or as
+// 14.4.1 (5, 6); coding 7 says both in its options and is guided by the
+// positions (q by CONN label, as 15.7 takes them).
 Status decode_grid_values(ByteReader* in, const Header& h, const Mesh& faces, const std::vector<uint32_t>& m,
-                          AttributeCoding* coding, std::vector<float>* values) {
+                          const std::vector<uint32_t>& positions, AttributeCoding* coding, std::vector<float>* values) {
   float* origin = coding->origin.data();
   double* step = coding->step.data();
   uint32_t* top = coding->top.data();
+  uint8_t options = 0;
+  if (h.coding == kCodingGuided && (!in->get_u8(&options) || options > kGuidedOptionBits))
+    return bad(h, "options missing or with a bit of 2..7 set", "15.12");
+  coding->options = options;
   if (Status s = read_grid(in, h, origin, step, top); !s.ok()) return s;
   Mesh attribute_mesh;
   attribute_mesh.face_sizes = faces.face_sizes;
   attribute_mesh.corners = m;
   std::vector<uint32_t> q;
   const PredictedGridNames names{h.label, "value", "values", "component"};
-  const bool geometry = h.coding == kCodingGeometryOrder || h.coding == kCodingGeometryOrderGraded;
-  const bool graded = h.coding == kCodingGridGraded || h.coding == kCodingGeometryOrderGraded;
+  const bool geometry = h.coding == kCodingGeometryOrder || h.coding == kCodingGeometryOrderGraded ||
+                        (options & kGuidedGeometryOrder);
+  const bool graded = h.coding == kCodingGridGraded || h.coding == kCodingGeometryOrderGraded ||
+                      (options & kGuidedGradedStart);
+  PositionGuide guide;
+  guide.vertex_of_corner = faces.corners.data();
+  guide.positions = positions.data();
   if (Status s = decode_predicted_grid(in->cursor(), in->remaining(), attribute_mesh, uint32_t(h.value_count), top,
                                        names, &q, graded ? ClassStart::kGraded : ClassStart::kFlat,
-                                       geometry ? PredictionOrder::kGeometry : PredictionOrder::kLabels);
+                                       geometry ? PredictionOrder::kGeometry : PredictionOrder::kLabels,
+                                       h.coding == kCodingGuided ? &guide : nullptr);
       !s.ok())
     return s;
   const size_t c = h.components;
@@ -290,7 +309,7 @@ Status decode_attribute(const uint8_t* payload, size_t size, const Mesh& faces, 
   }
   if (h.coding == kCodingOctahedral)
     return decode_octahedral_values(&in, h, faces, out->corner_values, quantized, coding, &out->values);
-  return decode_grid_values(&in, h, faces, out->corner_values, coding, &out->values);
+  return decode_grid_values(&in, h, faces, out->corner_values, quantized, coding, &out->values);
 }
 
 }  // namespace qmc

@@ -165,7 +165,7 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
 // Messages name the i-th vertex visited.
 Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& faces, uint32_t count,
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
-                             ClassStart start, PredictionOrder order) {
+                             ClassStart start, PredictionOrder order, const PositionGuide* guide) {
   if (!range_stream_justifies(count, size))  // section 14.1, before anything is reserved
     return Status(ErrorCode::kLimitExceeded, names.chunk + ": " + std::to_string(count) + " " + names.items +
                                                  " for " + std::to_string(size) +
@@ -173,7 +173,8 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   quantized->resize(size_t(count) * 3);
   VertexCorners corners;
   corners.build(count, faces.face_sizes, faces.corners);
-  const PredictionVisit visit(corners, order);
+  PredictionVisit visit(corners, order);
+  visit.guide_by(guide);
   std::vector<uint32_t> activity(count);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start));
   RangeDecoder rc(stream, size);

@@ -22,6 +22,8 @@ namespace {
 constexpr uint8_t kMappingPerVertex = 0, kMappingPerCorner = 1, kMappingPredicted = 3;
 constexpr uint8_t kCodingGrid = 0, kCodingExact = 1, kCodingOctahedral = 3, kCodingGeometryOrder = 4;
 constexpr uint8_t kCodingGridGraded = 5, kCodingGeometryOrderGraded = 6;  // 15.10
+constexpr uint8_t kCodingGuided = 7;                                       // 15.12
+constexpr uint8_t kGuidedGeometryOrder = 1, kGuidedGradedStart = 2;        // 15.12's options
 // 15.8: normals within this of unit length take coding 3.
 constexpr double kUnitTolerance = 1e-3;
 constexpr uint32_t kNone = UINT32_MAX;
@@ -116,11 +118,13 @@ std::vector<uint8_t> encode_predicted_mapping(const std::vector<uint32_t>& m, co
 // 15.4: the uniform grid of the values' bounding box (one step, 14.1), the
 // grid fields and the range-coded stream; empty if 14.1's bound fails. The
 // smallest stream of the label order (coding 0) and, where allowed, 14.6's
-// order (coding 4, 15.9) and under kGradedStartBelow values 14.4.1's start
-// (codings 5 and 6, 15.10), the lowest coding on a tie; *coding says which.
+// order (coding 4, 15.9), under kGradedStartBelow values 14.4.1's start
+// (codings 5 and 6, 15.10), and with a guide the same guided by the
+// positions (coding 7, 15.12, its options byte counted), the lowest coding
+// on a tie; *coding says which.
 std::vector<uint8_t> encode_grid_values(const std::vector<float>& table, uint32_t c, int bits, const Mesh& mesh,
-                                        bool geometry_order_allowed, bool graded_start_allowed, double* step_out,
-                                        uint8_t* coding) {
+                                        bool geometry_order_allowed, bool graded_start_allowed,
+                                        const PositionGuide* guide, double* step_out, uint8_t* coding) {
   const size_t n = table.size() / c;
   float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for (uint32_t a = 0; a < c; ++a) {
@@ -150,20 +154,30 @@ std::vector<uint8_t> encode_grid_values(const std::vector<float>& table, uint32_
   for (uint32_t a = 0; a < c; ++a) put_varint(&out, top[a]);
   std::vector<uint8_t> stream = encode_predicted_grid(q, top, mesh, nullptr, CandidateChoice::kFewestBits);
   *coding = kCodingGrid;
-  const auto keep_if_smaller = [&](uint8_t candidate, ClassStart start, PredictionOrder order) {
-    std::vector<uint8_t> other = encode_predicted_grid(q, top, mesh, nullptr, CandidateChoice::kFewestBits, start, order);
-    if (other.size() < stream.size()) {
+  uint8_t options = 0;  // coding 7's
+  const auto keep_if_smaller = [&](uint8_t candidate, ClassStart start, PredictionOrder order, const PositionGuide* g) {
+    std::vector<uint8_t> other =
+        encode_predicted_grid(q, top, mesh, nullptr, CandidateChoice::kFewestBits, start, order, g);
+    if (other.size() + (g ? 1 : 0) < stream.size() + (*coding == kCodingGuided ? 1 : 0)) {
       stream = std::move(other);
       *coding = candidate;
+      options = uint8_t((order == PredictionOrder::kGeometry ? kGuidedGeometryOrder : 0) |
+                        (start == ClassStart::kGraded ? kGuidedGradedStart : 0));
     }
   };
-  if (geometry_order_allowed) keep_if_smaller(kCodingGeometryOrder, ClassStart::kFlat, PredictionOrder::kGeometry);
-  if (graded_start_allowed && n < kGradedStartBelow) {
-    keep_if_smaller(kCodingGridGraded, ClassStart::kGraded, PredictionOrder::kLabels);
+  const bool graded = graded_start_allowed && n < kGradedStartBelow;
+  for (const PositionGuide* g : {static_cast<const PositionGuide*>(nullptr), guide}) {
+    if (g) keep_if_smaller(kCodingGuided, ClassStart::kFlat, PredictionOrder::kLabels, g);
     if (geometry_order_allowed)
-      keep_if_smaller(kCodingGeometryOrderGraded, ClassStart::kGraded, PredictionOrder::kGeometry);
+      keep_if_smaller(g ? kCodingGuided : kCodingGeometryOrder, ClassStart::kFlat, PredictionOrder::kGeometry, g);
+    if (graded) keep_if_smaller(g ? kCodingGuided : kCodingGridGraded, ClassStart::kGraded, PredictionOrder::kLabels, g);
+    if (graded && geometry_order_allowed)
+      keep_if_smaller(g ? kCodingGuided : kCodingGeometryOrderGraded, ClassStart::kGraded, PredictionOrder::kGeometry,
+                      g);
+    if (!guide) break;
   }
   if (!range_stream_justifies(n, stream.size())) return {};
+  if (*coding == kCodingGuided) out.insert(out.begin(), options);
   out.insert(out.end(), stream.begin(), stream.end());
   *step_out = step;
   return out;
@@ -309,8 +323,13 @@ Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, c
     Mesh attribute_mesh;
     attribute_mesh.face_sizes = file_mesh.face_sizes;
     attribute_mesh.corners = per_vertex ? file_mesh.corners : m;
+    PositionGuide guide;  // 15.12: the CONN vertex of each corner and the positions' integers
+    guide.vertex_of_corner = file_mesh.corners.data();
+    guide.positions = quantized.data();
+    const bool guided = options.attribute_guided && c == 2 && quantized.size() == 3 * vertex_count;
     values = encode_grid_values(table, c, bits_for(attribute.kind, options), attribute_mesh,
-                                options.attribute_geometry_order, options.attribute_graded_start, &stats->step, &coding);
+                                options.attribute_geometry_order, options.attribute_graded_start,
+                                guided ? &guide : nullptr, &stats->step, &coding);
   }
   stats->exact = values.empty();
   if (stats->exact) {
@@ -318,8 +337,12 @@ Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, c
     for (float x : table) put_f32le(&values, x);
   }
   stats->octahedral = coding == kCodingOctahedral;
-  stats->geometry_order = coding == kCodingGeometryOrder || coding == kCodingGeometryOrderGraded;
-  stats->graded_start = coding == kCodingGridGraded || coding == kCodingGeometryOrderGraded;
+  const uint8_t guided_options = coding == kCodingGuided ? values[0] : 0;
+  stats->guided = coding == kCodingGuided;
+  stats->geometry_order = coding == kCodingGeometryOrder || coding == kCodingGeometryOrderGraded ||
+                          (guided_options & kGuidedGeometryOrder);
+  stats->graded_start = coding == kCodingGridGraded || coding == kCodingGeometryOrderGraded ||
+                        (guided_options & kGuidedGradedStart);
 
   payload->clear();
   put_varint(payload, vertex_count);

@@ -267,8 +267,9 @@ Status add_attributes(const Mesh& mesh, const EncodeOptions& options, const File
   QuantizationInfo info;
   std::vector<uint32_t> quantized;
   std::vector<float> decoded;
-  bool normals = false;  // only normals are predicted from the positions
-  for (const MeshAttribute& a : mesh.attributes) normals = normals || a.kind == AttributeKind::kNormal;
+  bool normals = false;  // normals (15.7) and two-component values (15.12) are predicted from the positions
+  for (const MeshAttribute& a : mesh.attributes)
+    normals = normals || a.kind == AttributeKind::kNormal || (options.attribute_guided && a.components == 2);
   if (Status s = normals ? decode_positions(positions.data(), positions.size(), conn.mesh,
                                             uint32_t(mesh.vertex_count()), &info, &quantized, &decoded)
                          : Status::Ok();

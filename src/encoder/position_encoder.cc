@@ -267,11 +267,12 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
 // 14.2 - 14.4 in label order or 14.6's geometry order.
 std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const uint32_t top[3], const Mesh& faces,
                                            PositionStats* stats, CandidateChoice choice, ClassStart start,
-                                           PredictionOrder order) {
+                                           PredictionOrder order, const PositionGuide* guide) {
   const uint32_t n = uint32_t(q.size() / 3);
   VertexCorners corners;
   corners.build(n, faces.face_sizes, faces.corners);
-  const PredictionVisit visit(corners, order);
+  PredictionVisit visit(corners, order);
+  visit.guide_by(guide);
   std::vector<uint32_t> activity(n);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start));
   MeteredRangeEncoder rc;

@@ -46,12 +46,13 @@ inline constexpr size_t kGradedStartBelow = 1000;
 
 // Sections 14.2 - 14.4 over any faces whose corners are below q.size() / 3:
 // the range-coded stream of POSN method 1, 3 or 4 (in 14.6's order) or of
-// an aTTR's values (15.4, 15.9, 15.10). The caller checks 14.1's bound on the
-// stream's length.
+// an aTTR's values (15.4, 15.9, 15.10, 15.12 with a guide). The caller
+// checks 14.1's bound on the stream's length.
 std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const uint32_t top[3], const Mesh& faces,
                                            PositionStats* stats, CandidateChoice choice,
                                            ClassStart start = ClassStart::kFlat,
-                                           PredictionOrder order = PredictionOrder::kLabels);
+                                           PredictionOrder order = PredictionOrder::kLabels,
+                                           const PositionGuide* guide = nullptr);
 
 // Method 1, or 3 with the graded start (section 14), or 4 in the geometry
 // order, over the file's faces; stats may be null. Empty when the vertices
