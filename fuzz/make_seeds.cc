@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "bitio/byte_io.h"
+#include "bitio/predicted_mapping.h"
+#include "bitio/range_coder.h"
 #include "qmc/format.h"
 
 namespace fs = std::filesystem;
@@ -88,6 +90,70 @@ static void write_gim_plane_seed(const fs::path& path, const GimPlaneHeader& h, 
   write(path, seed.data(), seed.size());
 }
 
+// predicted_mapping input (fuzz/predicted_mapping_fuzzer.cc): soups of a few
+// dozen faces with seams (a vertex's corners split between two values),
+// values shared between vertices and values given per face, coded by the
+// encoder's template (spec 15.11). No vector holds such a soup.
+static void write_predicted_mapping_seeds(const fs::path& dir) {
+  uint32_t state = 12345;
+  const auto next = [&](uint32_t below) {
+    state = state * 1103515245u + 12345u;
+    return (state >> 8) % below;
+  };
+  for (int seed = 0; seed < 12; ++seed) {
+    const uint32_t vertices = 6 + 5 * uint32_t(seed), faces = 8 + 7 * uint32_t(seed);
+    std::vector<uint8_t> input{uint8_t(vertices - 1), uint8_t(faces - 1), 0, 0};
+    std::vector<uint32_t> sizes, corners;
+    for (uint32_t f = 0; f < faces; ++f) {
+      const uint32_t degree = 3 + next(seed % 3 == 0 ? 1 : 3);
+      input.push_back(uint8_t(degree - 3));
+      sizes.push_back(degree);
+      for (uint32_t i = 0; i < degree; ++i) {
+        corners.push_back(next(vertices));
+        input.push_back(uint8_t(corners.back()));
+      }
+    }
+    // By first reference: per face (seed % 4 == 3), else the vertex's value,
+    // a second one on some vertices (a seam), now and then any value met.
+    std::vector<uint32_t> m, first(vertices, UINT32_MAX), second(vertices, UINT32_MAX);
+    uint32_t met = 0;
+    size_t k = 0;
+    for (uint32_t f = 0; f < faces; ++f) {
+      const uint32_t face_value = met;
+      for (uint32_t i = 0; i < sizes[f]; ++i, ++k) {
+        const uint32_t v = corners[k];
+        uint32_t x;
+        if (seed % 4 == 3) {
+          x = face_value;
+        } else if (met > 0 && next(16) == 0) {
+          x = next(met);
+        } else {
+          uint32_t& slot = (v % 5 == 0 && f % 2 == 1) ? second[v] : first[v];
+          x = slot == UINT32_MAX ? met : slot;
+          slot = x;
+        }
+        if (x == met) ++met;
+        m.push_back(x);
+      }
+    }
+    input[2] = uint8_t(met);
+    input[3] = uint8_t(met >> 8);
+    const std::vector<uint8_t> single = qmc::single_value_vertices(corners, m, vertices);
+    qmc::RangeEncoder rc;
+    qmc::PredictedMappingModel model;
+    qmc::PredictedMapping mapping;
+    mapping.reset(vertices, sizes, corners);
+    uint32_t coded = 0;
+    for (size_t j = 0; j < m.size(); ++j) {
+      qmc::MappingFault fault = qmc::MappingFault::kNone;
+      mapping.code(&rc, &model, j, met, &coded, m.data(), &single, &fault);
+    }
+    const std::vector<uint8_t> stream = rc.finish();
+    input.insert(input.end(), stream.begin(), stream.end());
+    write(dir / ("soup_" + std::to_string(seed)), input.data(), input.size());
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc != 3) {
     std::fprintf(stderr, "usage: make_seeds VECTORS_DIR OUT_DIR\n");
@@ -96,8 +162,10 @@ int main(int argc, char** argv) {
   const fs::path out = argv[2];
   for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "polygon_connectivity", "polygon_coding7", "positions",
                         "predicted_positions", "geometry_order",
-                        "huffman", "roundtrip", "order", "loop_levels", "gim_file", "gim_plane", "attributes", "face_labels"})
+                        "huffman", "roundtrip", "order", "loop_levels", "gim_file", "gim_plane", "attributes", "face_labels",
+                        "predicted_mapping"})
     fs::create_directories(out / t);
+  write_predicted_mapping_seeds(out / "predicted_mapping");
   int n = 0;
   for (const auto& entry : fs::directory_iterator(argv[1])) {
     std::ifstream in(entry.path(), std::ios::binary);

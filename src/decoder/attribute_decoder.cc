@@ -22,7 +22,8 @@ namespace {
 constexpr uint8_t kMappingPerVertex = 0, kMappingPredicted = 3;  // 1: per corner, 15.3
 // 15.1: mapping 2 stays unassigned (the vector valid_attr_unknown_mapping_skipped uses it).
 constexpr uint8_t kMappingUnassigned = 2;
-constexpr uint8_t kCodingGrid = 0, kCodingExact = 1, kCodingOctahedral = 3, kCodingGeometryOrder = 4;
+// Coding 0 (15.4) has no name here: decode_grid_values reads it like 4 - 7.
+constexpr uint8_t kCodingExact = 1, kCodingOctahedral = 3, kCodingGeometryOrder = 4;
 constexpr uint8_t kCodingGridGraded = 5, kCodingGeometryOrderGraded = 6;  // 15.10
 constexpr uint8_t kCodingGuided = 7;                                       // 15.12
 // 15.12's options: the geometry order, the graded start; other bits are 0.
