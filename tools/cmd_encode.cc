@@ -239,6 +239,7 @@ int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   o.attribute_graded_start = false;    // and codings 5 and 6 (15.10) after it,
   o.attribute_predicted_mapping = false;  // and mapping 3 (15.11)
   o.attribute_guided = false;             // and coding 7 (15.12)
+  o.angle_weighted_normals = false;       // and coding 8 (15.13)
   if (args->newest_minor >= 7) return -1;
   o.graded_class_start = false;
   if (args->newest_minor >= 6) return -1;
@@ -451,6 +452,7 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
                 : a.predicted_mapping ? "per corner, predicted from the faces (spec 15.11)"
                                       : "per corner",
                 a.exact        ? "exact binary32"
+                : a.angle_weighted ? "unit normals, octahedral, faces weighted by angle (spec 15.13)"
                 : a.octahedral ? "unit normals, octahedral (spec 15.7)"
                                : ("grid step " + shortest_number(a.step) +
                                   (a.guided ? ", guided by the positions (spec 15.12)" : "") +

@@ -126,6 +126,7 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
                 : c.coding == 5 ? "predicted on a grid, graded start"
                 : c.coding == 6 ? "predicted on a grid, geometry order, graded start"
                 : c.coding == 3 ? "unit normals, octahedral"
+                : c.coding == 8 ? "unit normals, octahedral, faces weighted by angle"
                 : c.coding == 7 ? (c.options == 0   ? "predicted on a grid, guided by the positions"
                                    : c.options == 1 ? "predicted on a grid, guided by the positions, geometry order"
                                    : c.options == 2 ? "predicted on a grid, guided by the positions, graded start"

@@ -49,7 +49,7 @@ int run_verify(int argc, char** argv) {
   for (size_t i = 0; r.faces_equal && i < decoded.mesh.attributes.size(); ++i)
     std::printf("attribute %s: at every corner, %s\n", decoded.mesh.attributes[i].name.c_str(),
                 decoded.attribute_codings[i].on_grid() ? "within half its step"
-                : decoded.attribute_codings[i].coding == 3 ? "within its octahedral cell"
+                : decoded.attribute_codings[i].octahedral() ? "within its octahedral cell"
                                                            : "bit for bit");
   for (size_t i = 0; r.faces_equal && i < decoded.mesh.face_labels.size(); ++i)
     std::printf("labels    %s: on every face, %zu values\n", decoded.mesh.face_labels[i].name.c_str(),

@@ -59,6 +59,8 @@ qmc::EncodeOptions format_1_6_options() {
   options.attribute_graded_start = false;
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
   options.attribute_guided = false;             // and coding 7 (15.12)
+  options.angle_weighted_normals = false;       // and coding 8 (15.13)
+  options.angle_weighted_normals = false;       // and coding 8 (15.13)
   return options;
 }
 
@@ -2554,6 +2556,7 @@ std::vector<uint8_t> encode_posn_as_written(const Mesh& mesh, int method, int bi
   options.attribute_graded_start = false;
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
   options.attribute_guided = false;             // and coding 7 (15.12)
+  options.angle_weighted_normals = false;       // and coding 8 (15.13)
   return encode_posn_method(mesh, options, method);
 }
 
@@ -2719,6 +2722,7 @@ std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, 
   options.attribute_graded_start = false;  // codings 5 and 6 came after these vectors
   options.attribute_predicted_mapping = false;  // and mapping 3 (15.11)
   options.attribute_guided = false;             // and coding 7 (15.12)
+  options.angle_weighted_normals = false;       // and coding 8 (15.13)
   std::vector<uint8_t> out;
   qmc::EncodeStats stats;
   if (qmc::Status s = qmc::encode(mesh, options, &out, &stats);
@@ -2811,6 +2815,7 @@ void write_attribute_coding56_vectors(VectorWriter* w) {
   qmc::EncodeOptions options;
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
   options.attribute_guided = false;             // and coding 7 (15.12)
+  options.angle_weighted_normals = false;       // and coding 8 (15.13)
   const std::vector<uint8_t> six = encode_attribute_coding(textured, options, 6, "coding 6 texcoords");
   w->valid("valid_attr_coding6_texcoords", six, &textured);
   qmc::EncodeOptions label_order = options;
@@ -2859,6 +2864,36 @@ void write_attribute_coding56_vectors(VectorWriter* w) {
   c[at].payload = with_tops_of_one(c[at].payload);
   w->invalid("invalid_attr_coding6_value_outside_grid", join_chunks(c), ErrorCode::kBadSymbol);
 }
+
+// Where an aTTR payload's values start: after the mapping stream, if the
+// mapping (the byte after the components) is per corner.
+size_t values_offset(const std::vector<uint8_t>& payload) {
+  qmc::ByteReader r(payload.data(), payload.size());
+  r.skip(attr_field_offsets(payload).after_coding);
+  if (payload[attr_field_offsets(payload).components + 1] != 0) {
+    uint64_t mapping_bytes = 0;
+    r.get_varint(&mapping_bytes);
+    r.skip(size_t(mapping_bytes));
+  }
+  return r.position();
+}
+
+// A file's first aTTR chunk, to make files with another payload in its place.
+class AttributeChunk {
+ public:
+  explicit AttributeChunk(const std::vector<uint8_t>& file)
+      : chunks_(split_chunks(file)), at_(find_chunk(chunks_, qmc::kChunkAttribute)) {}
+  const std::vector<uint8_t>& payload() const { return chunks_[at_].payload; }
+  std::vector<uint8_t> with(std::vector<uint8_t> payload) const {
+    Chunks c = chunks_;
+    c[at_].payload = std::move(payload);
+    return join_chunks(c);
+  }
+
+ private:
+  Chunks chunks_;
+  size_t at_;
+};
 
 // Section 15.12: aTTR coding 7, what `qmc encode` writes where guiding by the
 // positions is the smaller; the generator fails on another coding or options.
@@ -3035,31 +3070,98 @@ void write_attribute_coding7_vectors(VectorWriter* w) {
   w->valid("valid_attr_coding7_many_corners", coding7_over_soup(), nullptr);
 
   // 15.12's rules.
-  Chunks c = split_chunks(both);
-  const size_t at = find_chunk(c, qmc::kChunkAttribute);
-  const std::vector<uint8_t> payload = c[at].payload;
-  const auto with_payload = [&](std::vector<uint8_t> p) {
-    Chunks d = c;
-    d[at].payload = std::move(p);
-    return join_chunks(d);
-  };
-  w->invalid("invalid_attr_coding7_truncated", with_payload({payload.begin(), payload.end() - 8}),
+  const AttributeChunk chunk(both);
+  const std::vector<uint8_t>& payload = chunk.payload();
+  w->invalid("invalid_attr_coding7_truncated", chunk.with({payload.begin(), payload.end() - 8}),
              ErrorCode::kTruncated);
-  w->invalid("invalid_attr_coding7_value_outside_grid", with_payload(with_tops_of_one(payload, 1)),
+  w->invalid("invalid_attr_coding7_value_outside_grid", chunk.with(with_tops_of_one(payload, 1)),
              ErrorCode::kBadSymbol);
   // The options byte: after the mapping stream, before the grid.
-  qmc::ByteReader r(payload.data(), payload.size());
-  r.skip(attr_field_offsets(payload).after_coding);
-  uint64_t mapping_bytes = 0;
-  r.get_varint(&mapping_bytes);
-  const size_t options_at = r.position() + size_t(mapping_bytes);
   std::vector<uint8_t> bit_2 = payload;
-  bit_2[options_at] |= 4;
-  w->invalid("invalid_attr_coding7_option_bit_2", with_payload(bit_2), ErrorCode::kBadChunkPayload);
+  bit_2[values_offset(payload)] |= 4;
+  w->invalid("invalid_attr_coding7_option_bit_2", chunk.with(bit_2), ErrorCode::kBadChunkPayload);
   // Coding 7 is for two components: the same chunk saying 3.
   std::vector<uint8_t> three = payload;
   three[attr_field_offsets(payload).components] = 3;
-  w->invalid("invalid_attr_coding7_three_components", with_payload(three), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_attr_coding7_three_components", chunk.with(three), ErrorCode::kBadChunkPayload);
+}
+
+// Unit normals weighting each face by its angle at the vertex (15.13's
+// kind), per vertex, or per corner with a crease along x = 0 (each half's
+// faces on their own).
+void add_angle_weighted_normals(Mesh* mesh, bool crease) {
+  const size_t n = mesh->vertex_count();
+  std::vector<double> sum(6 * n, 0.0);  // per vertex, the x < 0 faces' then the others'
+  std::vector<uint32_t> half_of_corner;
+  size_t start = 0;
+  for (uint32_t degree : mesh->face_sizes) {
+    double centroid = 0;
+    for (uint32_t i = 0; i < degree; ++i) centroid += mesh->positions[3 * size_t(mesh->corners[start + i])];
+    const uint32_t half = crease && centroid >= 0 ? 1 : 0;
+    for (uint32_t i = 0; i < degree; ++i) {
+      const float* c = &mesh->positions[3 * size_t(mesh->corners[start + i])];
+      const float* a = &mesh->positions[3 * size_t(mesh->corners[start + (i + 1) % degree])];
+      const float* b = &mesh->positions[3 * size_t(mesh->corners[start + (i + degree - 1) % degree])];
+      const double e[3] = {double(a[0]) - c[0], double(a[1]) - c[1], double(a[2]) - c[2]};
+      const double f[3] = {double(b[0]) - c[0], double(b[1]) - c[1], double(b[2]) - c[2]};
+      const double g[3] = {e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]};
+      const double length = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+      if (length > 0) {
+        const double angle = std::atan2(length, e[0] * f[0] + e[1] * f[1] + e[2] * f[2]);
+        for (int k = 0; k < 3; ++k) sum[6 * size_t(mesh->corners[start + i]) + 3 * half + k] += angle * g[k] / length;
+      }
+      half_of_corner.push_back(half);
+    }
+    start += degree;
+  }
+  // One value per (vertex, half) some corner uses, numbered as met.
+  MeshAttribute normal{"normal", qmc::AttributeKind::kNormal, 3, {}, {}};
+  std::vector<uint32_t> number(2 * n, UINT32_MAX);
+  for (size_t k = 0; k < mesh->corners.size(); ++k) {
+    const size_t j = 2 * size_t(mesh->corners[k]) + half_of_corner[k];
+    if (number[j] == UINT32_MAX) {
+      number[j] = uint32_t(normal.value_count());
+      const double* s3 = &sum[3 * j];
+      const double length = std::sqrt(s3[0] * s3[0] + s3[1] * s3[1] + s3[2] * s3[2]);
+      for (int c = 0; c < 3; ++c) normal.values.push_back(length > 0 ? float(s3[c] / length) : (c == 2 ? 1.f : 0.f));
+    }
+    normal.corner_values.push_back(number[j]);
+  }
+  mesh->attributes.push_back(std::move(normal));
+}
+
+void write_attribute_coding8_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  using namespace qmc::tools;
+  const qmc::EncodeOptions options;  // what `qmc encode` writes
+  // A bumpy grid of irregular triangles, and of quads, and the triangles with a crease.
+  Mesh triangles = jittered_textured_grid(12, 12, 99, true);
+  triangles.attributes.clear();
+  add_angle_weighted_normals(&triangles, false);
+  const std::vector<uint8_t> smooth = encode_attribute_coding(triangles, options, 8, "coding 8 normals");
+  w->valid("valid_attr_coding8_normals", smooth, &triangles);
+  Mesh quads = jittered_textured_grid(10, 10, 103, false);
+  quads.attributes.clear();
+  add_angle_weighted_normals(&quads, false);
+  w->valid("valid_attr_coding8_quads", encode_attribute_coding(quads, options, 8, "coding 8 on quads"), &quads);
+  Mesh creased = jittered_textured_grid(12, 12, 107, true);
+  creased.attributes.clear();
+  add_angle_weighted_normals(&creased, true);
+  w->valid("valid_attr_coding8_crease", encode_attribute_coding(creased, options, 8, "coding 8 with a crease"),
+           &creased);
+
+  // 15.13's rules on coding 3's path.
+  const AttributeChunk chunk(smooth);
+  const std::vector<uint8_t>& payload = chunk.payload();
+  w->invalid("invalid_attr_coding8_truncated", chunk.with({payload.begin(), payload.end() - 8}),
+             ErrorCode::kTruncated);
+  std::vector<uint8_t> two = payload;
+  two[attr_field_offsets(payload).components] = 2;
+  w->invalid("invalid_attr_coding8_two_components", chunk.with(two), ErrorCode::kBadChunkPayload);
+  // B = 2: the grid of 4 points a side, the residuals coded for 10 bits land outside it.
+  std::vector<uint8_t> coarse = payload;
+  coarse[values_offset(payload)] = 2;
+  w->invalid("invalid_attr_coding8_value_outside_grid", chunk.with(coarse), ErrorCode::kBadSymbol);
 }
 
 // Section 15.11: aTTR mapping 3, what `qmc encode` writes where its stream
@@ -3119,6 +3221,7 @@ void write_attribute_mapping3_vectors(VectorWriter* w) {
   using namespace qmc::tools;
   qmc::EncodeOptions options;  // what `qmc encode` wrote
   options.attribute_guided = false;  // coding 7 (15.12) came after these vectors
+  options.angle_weighted_normals = false;  // and coding 8 (15.13)
   // Texture coordinates with seams: charts on a torus of triangles, and on one of quads.
   Mesh textured = perturbed(triangulated(make_torus(20, 8)), 81, 0.004f);
   add_chart_texcoords(&textured);
@@ -3210,6 +3313,7 @@ int main(int argc, char** argv) {
   write_attribute_coding56_vectors(&w);
   write_attribute_mapping3_vectors(&w);
   write_attribute_coding7_vectors(&w);
+  write_attribute_coding8_vectors(&w);
   w.finish();
   return 0;
 }

@@ -128,6 +128,12 @@ struct EncodeOptions {
   // Decoders of the revisions before it skip such an attribute; false keeps
   // codings 0 and 4 - 6.
   bool attribute_guided = true;
+  // Unit normals may take aTTR coding 8 (spec 15.13: coding 3 with each face
+  // weighted by its angle at the vertex, as many tools compute vertex
+  // normals, instead of its area) where that is smaller: human_neutral's
+  // normals ~15 % smaller. Decoders of the revisions before it skip such an
+  // attribute; false keeps coding 3.
+  bool angle_weighted_normals = true;
   std::vector<std::string> texts;            // written as teXt chunks ("key=value")
   // Write an oRDR chunk (section 4.5) so that the decoder restores the
   // input's order of vertices, faces and corners exactly; nothing is
@@ -236,7 +242,8 @@ struct AttributeStats {
   bool per_corner = false;       // mapping 1 or 3 (else one value per vertex)
   bool predicted_mapping = false;  // mapping 3: predicted from the faces around each vertex (15.11)
   bool exact = false;            // coding 1 (else predicted on a grid)
-  bool octahedral = false;       // coding 3: unit normals, octahedral (15.7)
+  bool octahedral = false;       // coding 3 or 8: unit normals, octahedral (15.7)
+  bool angle_weighted = false;   // coding 8: predicted with the faces weighted by angle (15.13)
   bool geometry_order = false;   // coding 4 or 6, or 7 with option 1: the values in 14.6's order (15.9)
   bool graded_start = false;     // coding 5 or 6, or 7 with option 2: the class probabilities start as 14.4.1
   bool guided = false;           // coding 7: guided by the positions (15.12)

@@ -12,6 +12,8 @@
 #pragma once
 
 #include <cfloat>
+#include <cmath>
+#include <cstdint>
 
 #if defined(__FAST_MATH__)
 #error "qmc's decoder needs IEEE 754 arithmetic (spec 6.4): build it without -ffast-math"
@@ -46,5 +48,14 @@ inline double rounded(double x) {
 
 // a * b rounded once to binary64, never fused into an addition.
 inline double mul(double a, double b) { return rounded(a * b); }
+
+// The largest r with r r <= x, for 0 <= x < 2^62 (spec 15.12, 15.13). The
+// correction makes it exact whatever the floating-point square root returns.
+inline int64_t integer_sqrt(int64_t x) {
+  int64_t r = int64_t(std::sqrt(double(x)));
+  while (r > 0 && r * r > x) --r;
+  while ((r + 1) * (r + 1) <= x) ++r;
+  return r;
+}
 
 }  // namespace qmc

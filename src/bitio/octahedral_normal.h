@@ -63,12 +63,11 @@ struct CornerCycle {
   }
 };
 
-// 15.7's prediction of a value from the positions q (3 per vertex) at its
-// corners [first, last): the frame and the grid point (pu, pv) of M.
-inline void predict_octahedral(const uint32_t* first, const uint32_t* last, const std::vector<uint32_t>& corners,
-                               const CornerCycle& cycle, const uint32_t* q, uint32_t m_steps, OctahedralFrame* frame,
-                               uint32_t* pu, uint32_t* pv) {
-  last = first + std::min<ptrdiff_t>(last - first, kOctahedralCorners);
+// 15.7: the sum S of the cross products a x b of the value's corners
+// [first, last) (at most 16), a = q[n] - q[c] and b = q[p] - q[c], all shifted
+// by the one s that brings every component into 21 bits.
+inline void area_weighted_sum(const uint32_t* first, const uint32_t* last, const std::vector<uint32_t>& corners,
+                              const CornerCycle& cycle, const uint32_t* q, int64_t sum[3]) {
   int64_t edge[kOctahedralCorners][2][3];  // per corner, a = q[n] - q[c] and b = q[p] - q[c]
   int64_t largest = 0;  // of x >= 0 and -x - 1 < 0: floor(x / 2^s) fits in 21 bits iff largest >> s does
   for (const uint32_t* k = first; k != last; ++k) {
@@ -82,7 +81,7 @@ inline void predict_octahedral(const uint32_t* first, const uint32_t* last, cons
   }
   int s = 0;
   while ((largest >> s) >= (int64_t(1) << 20)) ++s;  // floor(x / 2^s) in -2^20 .. 2^20 - 1
-  int64_t sum[3] = {0, 0, 0};
+  sum[0] = sum[1] = sum[2] = 0;
   for (ptrdiff_t j = 0; j < last - first; ++j) {
     int64_t a[3], b[3];
     for (int i = 0; i < 3; ++i) {
@@ -93,6 +92,85 @@ inline void predict_octahedral(const uint32_t* first, const uint32_t* last, cons
     sum[1] += a[2] * b[0] - a[0] * b[2];
     sum[2] += a[0] * b[1] - a[1] * b[0];
   }
+}
+
+// 15.13: atan(2^-i) in units of pi / 2^16, rounded, i = 0 .. 15.
+inline constexpr int64_t kCordicAngle[16] = {16384, 9672, 5110, 2594, 1302, 652, 326, 163,
+                                             81,    41,   20,   10,   5,    3,    1,   1};
+
+// 15.13: the angle atan2(y, x) of a vector with y > 0, in units of pi / 2^16
+// (0 .. 2^16), by 16 steps of CORDIC in integers.
+inline int64_t integer_angle(int64_t x, int64_t y) {
+  int64_t z = 0;
+  if (x < 0) {  // turn by -pi/2: (x, y) -> (y, -x), both then >= 0
+    const int64_t t = x;
+    x = y;
+    y = -t;
+    z = int64_t(1) << 15;
+  }
+  while (std::max(x, y) < (int64_t(1) << 24)) {
+    x *= 2;
+    y *= 2;
+  }
+  for (int i = 0; i < 16; ++i) {
+    const int64_t dx = floor_shift(y, i), dy = floor_shift(x, i);
+    if (y > 0) {
+      x += dx;
+      y -= dy;
+      z += kCordicAngle[i];
+    } else {
+      x -= dx;
+      y += dy;
+      z -= kCordicAngle[i];
+    }
+  }
+  return z;
+}
+
+// 15.13: the sum S over the value's corners [first, last) (at most 16) of
+// each corner's unit face normal (2^20 long) times its angle: the normal
+// that weights every face by its angle at the vertex, as many tools compute
+// vertex normals. Each corner's a and b are shifted into 15 bits on their own.
+inline void angle_weighted_sum(const uint32_t* first, const uint32_t* last, const std::vector<uint32_t>& corners,
+                               const CornerCycle& cycle, const uint32_t* q, int64_t sum[3]) {
+  sum[0] = sum[1] = sum[2] = 0;
+  for (const uint32_t* k = first; k != last; ++k) {
+    const uint32_t c = corners[*k], n = corners[cycle.next[*k]], p = corners[cycle.previous[*k]];
+    int64_t a[3], b[3], largest = 0;
+    for (int i = 0; i < 3; ++i) {
+      a[i] = int64_t(q[3 * size_t(n) + i]) - int64_t(q[3 * size_t(c) + i]);
+      b[i] = int64_t(q[3 * size_t(p) + i]) - int64_t(q[3 * size_t(c) + i]);
+      largest = std::max({largest, a[i] < 0 ? -a[i] - 1 : a[i], b[i] < 0 ? -b[i] - 1 : b[i]});
+    }
+    int s = 0;
+    while ((largest >> s) >= (int64_t(1) << 14)) ++s;  // floor(x / 2^s) in -2^14 .. 2^14 - 1
+    for (int i = 0; i < 3; ++i) {
+      a[i] = floor_shift(a[i], s);
+      b[i] = floor_shift(b[i], s);
+    }
+    const int64_t g[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    const int64_t length = integer_sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    if (length == 0) continue;  // a degenerate corner adds nothing
+    const int64_t angle = integer_angle(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], length);
+    for (int i = 0; i < 3; ++i) {
+      const int64_t scaled = g[i] * (int64_t(1) << 20), unit = scaled / length - (scaled % length < 0 ? 1 : 0);
+      sum[i] += unit * angle;
+    }
+  }
+}
+
+// 15.7's prediction of a value from the positions q (3 per vertex) at its
+// corners [first, last): the frame and the grid point (pu, pv) of M, from
+// the sum S of 15.7 (area weights) or, with angle_weighted, of 15.13.
+inline void predict_octahedral(const uint32_t* first, const uint32_t* last, const std::vector<uint32_t>& corners,
+                               const CornerCycle& cycle, const uint32_t* q, uint32_t m_steps, OctahedralFrame* frame,
+                               uint32_t* pu, uint32_t* pv, bool angle_weighted = false) {
+  last = first + std::min<ptrdiff_t>(last - first, kOctahedralCorners);
+  int64_t sum[3];
+  if (angle_weighted)
+    angle_weighted_sum(first, last, corners, cycle, q, sum);
+  else
+    area_weighted_sum(first, last, corners, cycle, q, sum);
   const auto l1 = [&] { return std::abs(sum[0]) + std::abs(sum[1]) + std::abs(sum[2]); };
   while (l1() >= (int64_t(1) << 40))
     for (int64_t& x : sum) x = floor_shift(x, 1);

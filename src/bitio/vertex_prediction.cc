@@ -4,8 +4,8 @@
 #include "bitio/vertex_prediction.h"
 
 #include <algorithm>
-#include <cmath>
 
+#include "bitio/exact_arith.h"        // integer_sqrt
 #include "bitio/octahedral_normal.h"  // floor_shift
 
 namespace qmc {
@@ -110,15 +110,6 @@ void add_strip(const VertexCorners& m, uint32_t corner, int direction, const Vis
   search_across(m, p1, p2, false, corner, c, [&](uint32_t y) {
     if (at.before(y) && y != p1 && y != p2) add_candidate(c, kWeightStrip, q, p1, p1, y, kOne);
   });
-}
-
-// 15.12: the largest r with r r <= x (x < 2^62). The correction makes the
-// result exact whatever the floating-point square root returned.
-int64_t integer_sqrt(int64_t x) {
-  int64_t r = int64_t(std::sqrt(double(x)));
-  while (r > 0 && r * r > x) --r;
-  while ((r + 1) * (r + 1) <= x) ++r;
-  return r;
 }
 
 // 15.12: the six components of E and F shifted right by the smallest s that

@@ -1,7 +1,7 @@
 // The aTTR chunk, spec/qmc-format.md section 15: header and checks (15.1),
 // the per-corner mapping (15.3, 15.11), and the values predicted over the
 // attribute mesh (15.4, 15.9, 15.10; guided by the positions, 15.12), unit
-// normals in an octahedral frame (15.7), or stored as binary32 (15.5).
+// normals in an octahedral frame (15.7, 15.13), or stored as binary32 (15.5).
 #include "decoder/attribute_decoder.h"
 
 #include <cmath>
@@ -26,6 +26,7 @@ constexpr uint8_t kMappingUnassigned = 2;
 constexpr uint8_t kCodingExact = 1, kCodingOctahedral = 3, kCodingGeometryOrder = 4;
 constexpr uint8_t kCodingGridGraded = 5, kCodingGeometryOrderGraded = 6;  // 15.10
 constexpr uint8_t kCodingGuided = 7;                                       // 15.12
+constexpr uint8_t kCodingAngleWeighted = 8;                                // 15.13
 // 15.12's options: the geometry order, the graded start; other bits are 0.
 constexpr uint8_t kGuidedGeometryOrder = 1, kGuidedGradedStart = 2, kGuidedOptionBits = 3;
 // 15.1: coding 2 stays unassigned (the vector valid_attr_unknown_coding_skipped uses it).
@@ -80,12 +81,13 @@ Status read_sizes(ByteReader* in, uint32_t vertex_count, Header* h, bool* skippe
     return bad(*h, "value_count " + std::to_string(h->value_count) + " is not V = " + std::to_string(vertex_count) +
                        " with mapping 0");
   if (!in->get_u8(&h->coding)) return bad(*h, "coding missing");
-  if (h->coding > kCodingGuided || h->coding == kCodingUnassigned) {  // 15.1 check 6
+  if (h->coding > kCodingAngleWeighted || h->coding == kCodingUnassigned) {  // 15.1 check 6
     *skipped = true;
     return Status::Ok();
   }
-  if (h->coding == kCodingOctahedral && h->components != 3)
-    return bad(*h, "coding 3 (octahedral normals) with " + std::to_string(h->components) + " components, not 3");
+  if ((h->coding == kCodingOctahedral || h->coding == kCodingAngleWeighted) && h->components != 3)
+    return bad(*h, "coding " + std::to_string(h->coding) + " (octahedral normals) with " +
+                       std::to_string(h->components) + " components, not 3");
   if (h->coding == kCodingGuided && h->components != 2)
     return bad(*h, "coding 7 (guided texture coordinates) with " + std::to_string(h->components) +
                        " components, not 2");
@@ -220,8 +222,9 @@ Status truncated_in_value(const Header& h, size_t i) {
                 h.label + ": the range-coded stream ends inside value " + std::to_string(i) + " (section 15.7)");
 }
 
-// Section 15.7: unit normals on the octahedral grid of B bits, each in the
-// frame of its prediction from the positions q (coder order).
+// Sections 15.7 and 15.13: unit normals on the octahedral grid of B bits,
+// each in the frame of its prediction from the positions q (coder order),
+// the faces weighted by area (coding 3) or by their angle (coding 8).
 Status decode_octahedral_values(ByteReader* in, const Header& h, const Mesh& faces, const std::vector<uint32_t>& m,
                                 const std::vector<uint32_t>& q, AttributeCoding* coding, std::vector<float>* values) {
   uint8_t bits = 0;
@@ -243,7 +246,7 @@ Status decode_octahedral_values(ByteReader* in, const Header& h, const Mesh& fac
     OctahedralFrame frame;
     uint32_t predicted[2];
     predict_octahedral(value_corners.begin(i), value_corners.end(i), faces.corners, cycle, q.data(), steps, &frame,
-                       &predicted[0], &predicted[1]);
+                       &predicted[0], &predicted[1], h.coding == kCodingAngleWeighted);
     const int bucket = octahedral_bucket(activity);
     uint32_t grid[2];
     activity = 0;
@@ -308,7 +311,7 @@ Status decode_attribute(const uint8_t* payload, size_t size, const Mesh& faces, 
     read_exact_values(&in, size_t(h.value_count) * h.components, &out->values);
     return Status::Ok();
   }
-  if (h.coding == kCodingOctahedral)
+  if (h.coding == kCodingOctahedral || h.coding == kCodingAngleWeighted)
     return decode_octahedral_values(&in, h, faces, out->corner_values, quantized, coding, &out->values);
   return decode_grid_values(&in, h, faces, out->corner_values, quantized, coding, &out->values);
 }

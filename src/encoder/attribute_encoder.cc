@@ -23,6 +23,7 @@ constexpr uint8_t kMappingPerVertex = 0, kMappingPerCorner = 1, kMappingPredicte
 constexpr uint8_t kCodingGrid = 0, kCodingExact = 1, kCodingOctahedral = 3, kCodingGeometryOrder = 4;
 constexpr uint8_t kCodingGridGraded = 5, kCodingGeometryOrderGraded = 6;  // 15.10
 constexpr uint8_t kCodingGuided = 7;                                       // 15.12
+constexpr uint8_t kCodingAngleWeighted = 8;                                // 15.13
 constexpr uint8_t kGuidedGeometryOrder = 1, kGuidedGradedStart = 2;        // 15.12's options
 // 15.8: normals within this of unit length take coding 3.
 constexpr double kUnitTolerance = 1e-3;
@@ -221,10 +222,12 @@ void nearest_octahedral(const float* n, OctahedralFrame frame, uint32_t steps, u
     }
 }
 
-// 15.7: bits, then the residuals of every value in its predicted frame; m
-// is the value of every corner, q the positions' integers in file order.
+// 15.7 (15.13 with angle_weighted): bits, then the residuals of every value
+// in its predicted frame; m is the value of every corner, q the positions'
+// integers in file order.
 std::vector<uint8_t> encode_octahedral_values(const std::vector<float>& table, int bits, const Mesh& mesh,
-                                              const std::vector<uint32_t>& m, const std::vector<uint32_t>& q) {
+                                              const std::vector<uint32_t>& m, const std::vector<uint32_t>& q,
+                                              bool angle_weighted) {
   const size_t n = table.size() / 3;
   const uint32_t steps = (1u << bits) - 1;
   ValueCorners value_corners;
@@ -238,7 +241,7 @@ std::vector<uint8_t> encode_octahedral_values(const std::vector<float>& table, i
     OctahedralFrame frame;
     uint32_t predicted[2], grid[2];
     predict_octahedral(value_corners.begin(i), value_corners.end(i), mesh.corners, cycle, q.data(), steps, &frame,
-                       &predicted[0], &predicted[1]);
+                       &predicted[0], &predicted[1], angle_weighted);
     nearest_octahedral(&table[3 * i], frame, steps, grid);
     const int bucket = octahedral_bucket(activity);
     activity = 0;
@@ -312,11 +315,20 @@ Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, c
                           options.normal_bits >= kOctahedralMinBits &&
                           options.normal_bits <= kOctahedralMaxBits && unit_normals(attribute) &&
                           quantized.size() == 3 * vertex_count;
-  if (octahedral) {
-    values = encode_octahedral_values(table, options.normal_bits, file_mesh, per_vertex ? file_mesh.corners : m,
-                                      quantized);
+  if (octahedral) {  // 15.7's area weights, or 15.13's angle weights where smaller (15.7 on a tie)
+    const std::vector<uint32_t>& corner_values = per_vertex ? file_mesh.corners : m;
+    values = encode_octahedral_values(table, options.normal_bits, file_mesh, corner_values, quantized, false);
+    coding = kCodingOctahedral;
+    if (options.angle_weighted_normals) {
+      std::vector<uint8_t> angle = encode_octahedral_values(table, options.normal_bits, file_mesh, corner_values,
+                                                            quantized, true);
+      if (angle.size() < values.size()) {
+        values.swap(angle);
+        coding = kCodingAngleWeighted;
+      }
+    }
     if (!range_stream_justifies(value_count, values.size() - 1)) values.clear();
-    coding = values.empty() ? kCodingGrid : kCodingOctahedral;
+    if (values.empty()) coding = kCodingGrid;
     stats->step = 2.0 / ((1u << options.normal_bits) - 1);
   }
   if (!options.exact_attributes && values.empty()) {
@@ -336,7 +348,8 @@ Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, c
     coding = kCodingExact;
     for (float x : table) put_f32le(&values, x);
   }
-  stats->octahedral = coding == kCodingOctahedral;
+  stats->octahedral = coding == kCodingOctahedral || coding == kCodingAngleWeighted;
+  stats->angle_weighted = coding == kCodingAngleWeighted;
   const uint8_t guided_options = coding == kCodingGuided ? values[0] : 0;
   stats->guided = coding == kCodingGuided;
   stats->geometry_order = coding == kCodingGeometryOrder || coding == kCodingGeometryOrderGraded ||

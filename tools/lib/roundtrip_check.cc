@@ -80,10 +80,10 @@ std::vector<std::array<double, 3>> attribute_tolerances(const DecodedFile& decod
   std::vector<std::array<double, 3>> out;
   for (const AttributeCoding& c : decoded.attribute_codings) {
     std::array<double, 3> t{};
-    // Coding 3 (15.7): the grid point is one of the four around the input's
+    // Codings 3 and 8 (15.7, 15.13): the grid point is one of the four around the input's
     // octahedral projection, |du|, |dv| <= 2 / M; the map back to the unit
     // sphere stretches that by less than 3 per component.
-    if (c.coding == 3) t.fill(12.0 / double(c.top[0]));
+    if (c.octahedral()) t.fill(12.0 / double(c.top[0]));
     for (int a = 0; a < 3 && c.on_grid(); ++a) {
       const double last = double(c.origin[a]) + double(c.top[a]) * c.step[a];
       t[a] = 0.5 * c.step[a] * (1 + 1e-9) + float_ulp(std::fmax(std::fabs(c.origin[a]), std::fabs(last)));
