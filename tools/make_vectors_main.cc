@@ -3014,24 +3014,20 @@ std::vector<uint8_t> coding7_over_soup() {
   const std::vector<uint8_t> stream = qmc::encode_predicted_grid(
       q, top, d.mesh, nullptr, qmc::CandidateChoice::kFewestBits, qmc::ClassStart::kFlat, qmc::PredictionOrder::kLabels,
       &guide);
-  std::vector<uint8_t> p;
-  qmc::put_varint(&p, n);
-  qmc::put_varint(&p, d.mesh.corners.size());
-  qmc::put_u8(&p, 2);
-  p.push_back('u');
-  p.push_back('v');
-  for (uint8_t b : {1, 2, 0}) qmc::put_u8(&p, b);  // kind, components, mapping 0
-  qmc::put_varint(&p, n);
-  qmc::put_u8(&p, 7);  // coding 7
-  qmc::put_u8(&p, 0);  // options: label order, flat start
-  qmc::put_u8(&p, 0);  // grid 0
-  qmc::put_f32le(&p, 0.0f);
-  qmc::put_f32le(&p, 0.0f);
-  qmc::put_f64le(&p, 1.0 / 8191);
-  qmc::put_varint(&p, top[0]);
-  qmc::put_varint(&p, top[1]);
-  p.insert(p.end(), stream.begin(), stream.end());
-  return with_chunk_before(plain, qmc::kChunkEnd, qmc::kChunkAttribute, p);
+  AttrFields f;  // "uv", a texture coordinate of 2 components
+  f.vertices = f.values = n;
+  f.corners = d.mesh.corners.size();
+  f.mapping = 0;
+  f.coding = 7;
+  qmc::put_u8(&f.rest, 0);  // options: label order, flat start
+  qmc::put_u8(&f.rest, 0);  // grid 0
+  qmc::put_f32le(&f.rest, 0.0f);
+  qmc::put_f32le(&f.rest, 0.0f);
+  qmc::put_f64le(&f.rest, 1.0 / 8191);
+  qmc::put_varint(&f.rest, top[0]);
+  qmc::put_varint(&f.rest, top[1]);
+  f.rest.insert(f.rest.end(), stream.begin(), stream.end());
+  return with_chunk_before(plain, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(f));
 }
 
 void write_attribute_coding7_vectors(VectorWriter* w) {

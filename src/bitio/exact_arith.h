@@ -11,6 +11,7 @@
 // build instead.
 #pragma once
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdint>
@@ -48,6 +49,30 @@ inline double rounded(double x) {
 
 // a * b rounded once to binary64, never fused into an addition.
 inline double mul(double a, double b) { return rounded(a * b); }
+
+// floor(x / 2^s) for any sign (spec 15.7, 15.12, 15.13).
+inline int64_t floor_shift(int64_t x, int s) { return x >= 0 ? x >> s : -((-x - 1) >> s) - 1; }
+
+// floor(n / d) for any sign of n, d > 0 (spec 14.3.3, 15.12, 15.13).
+inline int64_t floor_div(int64_t n, int64_t d) {
+  const int64_t q = n / d;
+  return (n % d != 0 && n < 0) ? q - 1 : q;
+}
+
+// Spec 15.12 and 15.13: the six components of a and b shifted right (floor
+// division by 2^s) by the smallest s that brings them all into
+// -2^14 .. 2^14 - 1, so that products of three of them fit in 64 bits.
+inline void shift_into_15_bits(int64_t a[3], int64_t b[3]) {
+  int64_t largest = 0;  // of x >= 0 and -x - 1 < 0: floor(x / 2^s) fits iff largest >> s does
+  for (int i = 0; i < 3; ++i)
+    for (const int64_t x : {a[i], b[i]}) largest = std::max(largest, x < 0 ? -x - 1 : x);
+  int s = 0;
+  while ((largest >> s) >= (int64_t(1) << 14)) ++s;
+  for (int i = 0; i < 3; ++i) {
+    a[i] = floor_shift(a[i], s);
+    b[i] = floor_shift(b[i], s);
+  }
+}
 
 // The largest r with r r <= x, for 0 <= x < 2^62 (spec 15.12, 15.13). The
 // correction makes it exact whatever the floating-point square root returns.

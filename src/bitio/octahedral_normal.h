@@ -25,8 +25,6 @@ struct OctahedralFrame {
   int sigma = 1;
 };
 
-// floor(x / 2^s) for any sign (15.7).
-inline int64_t floor_shift(int64_t x, int s) { return x >= 0 ? x >> s : -((-x - 1) >> s) - 1; }
 
 // The corners of every value, in corner order (m: the value of each corner).
 class ValueCorners {
@@ -136,25 +134,18 @@ inline void angle_weighted_sum(const uint32_t* first, const uint32_t* last, cons
   sum[0] = sum[1] = sum[2] = 0;
   for (const uint32_t* k = first; k != last; ++k) {
     const uint32_t c = corners[*k], n = corners[cycle.next[*k]], p = corners[cycle.previous[*k]];
-    int64_t a[3], b[3], largest = 0;
+    int64_t a[3], b[3];
     for (int i = 0; i < 3; ++i) {
       a[i] = int64_t(q[3 * size_t(n) + i]) - int64_t(q[3 * size_t(c) + i]);
       b[i] = int64_t(q[3 * size_t(p) + i]) - int64_t(q[3 * size_t(c) + i]);
-      largest = std::max({largest, a[i] < 0 ? -a[i] - 1 : a[i], b[i] < 0 ? -b[i] - 1 : b[i]});
     }
-    int s = 0;
-    while ((largest >> s) >= (int64_t(1) << 14)) ++s;  // floor(x / 2^s) in -2^14 .. 2^14 - 1
-    for (int i = 0; i < 3; ++i) {
-      a[i] = floor_shift(a[i], s);
-      b[i] = floor_shift(b[i], s);
-    }
+    shift_into_15_bits(a, b);
     const int64_t g[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
     const int64_t length = integer_sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
     if (length == 0) continue;  // a degenerate corner adds nothing
     const int64_t angle = integer_angle(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], length);
     for (int i = 0; i < 3; ++i) {
-      const int64_t scaled = g[i] * (int64_t(1) << 20), unit = scaled / length - (scaled % length < 0 ? 1 : 0);
-      sum[i] += unit * angle;
+      sum[i] += floor_div(g[i] * (int64_t(1) << 20), length) * angle;
     }
   }
 }

@@ -80,12 +80,6 @@ class PredictedMapping {
     earlier_.reset(vertex_count, corners);
     state_.assign(vertex_count, kVertexUnmet);
     values_.assign(corners.size(), 0);
-    first_in_face_.assign(corners.size(), 0);
-    size_t start = 0;
-    for (uint32_t d : face_sizes) {
-      first_in_face_[start] = 1;
-      start += d;
-    }
   }
 
   // Corner k's value m_k: decoded (truth null), or coded from truth[k] with
@@ -142,7 +136,7 @@ class PredictedMapping {
   template <class Coder>
   uint32_t fallback(Coder* coder, PredictedMappingModel* model, size_t k, uint32_t v, int later, uint64_t value_count,
                     uint32_t* met, const uint32_t* truth, MappingFault* fault) {
-    if (!first_in_face_[k] && state_[(*corners_)[k - 1]] == kVertexSeveral &&
+    if (!first_in_face(k) && state_[(*corners_)[k - 1]] == kVertexSeveral &&
         coder->code(truth && truth[k] == values_[k - 1], &model->face[later])) {
       lists_.append(v, values_[k - 1]);
       return values_[k - 1];
@@ -165,7 +159,7 @@ class PredictedMapping {
       const uint32_t a = (*corners_)[next], b = (*corners_)[previous];
       if (a != w_before && b != w_before && a != w_after && b != w_after) continue;
       *reference = values_[g];
-      if (first_in_face_[k] || (a != w_before && b != w_before)) return 0;
+      if (first_in_face(k) || (a != w_before && b != w_before)) return 0;
       const uint32_t at_w = a == w_before ? next : previous;
       if (at_w >= k) return 0;  // not decoded yet (v twice in one face)
       return values_[at_w] == values_[k - 1] ? 1 : 2;
@@ -174,11 +168,15 @@ class PredictedMapping {
     return 3;
   }
 
+  // Whether corner k opens its face (i = 0): only there is the corner before
+  // it in the face not k - 1.
+  bool first_in_face(size_t k) const { return k == 0 || cycle_.previous[k] != k - 1; }
+
   const std::vector<uint32_t>* corners_ = nullptr;
   CornerCycle cycle_;
   VertexValueLists lists_;    // S_v of 15.3
   VertexValueLists earlier_;  // C_v: v's corners so far, in order
-  std::vector<uint8_t> state_, first_in_face_;
+  std::vector<uint8_t> state_;
   std::vector<uint32_t> values_;  // m_k of the corners so far
 };
 

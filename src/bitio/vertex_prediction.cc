@@ -5,8 +5,7 @@
 
 #include <algorithm>
 
-#include "bitio/exact_arith.h"        // integer_sqrt
-#include "bitio/octahedral_normal.h"  // floor_shift
+#include "bitio/exact_arith.h"  // floor_div, integer_sqrt, shift_into_15_bits
 
 namespace qmc {
 namespace {
@@ -23,11 +22,6 @@ constexpr int64_t kWeightStrip = 1;
 constexpr int64_t kWeightGuided = 1;
 
 int64_t polygon_coefficient(uint32_t degree) { return kPolygonCoefficient[std::min<uint32_t>(degree, 12) - 4]; }
-
-int64_t floor_div(int64_t n, int64_t d) {  // d > 0
-  const int64_t q = n / d;
-  return (n % d != 0 && n < 0) ? q - 1 : q;
-}
 
 // Adds a candidate w x (base + coefficient (p - r) / 2^16) per axis, from
 // vertices' q, if there is room.
@@ -112,27 +106,13 @@ void add_strip(const VertexCorners& m, uint32_t corner, int direction, const Vis
   });
 }
 
-// 15.12: the six components of E and F shifted right by the smallest s that
-// brings them all into -2^14 .. 2^14 - 1 (floor division by 2^s).
-void shrink_to_15_bits(int64_t e[3], int64_t f[3]) {
-  int64_t largest = 0;  // of x >= 0 and -x - 1: floor(x / 2^s) fits iff largest >> s does
-  for (int i = 0; i < 3; ++i)
-    largest = std::max({largest, e[i] < 0 ? -e[i] - 1 : e[i], f[i] < 0 ? -f[i] - 1 : f[i]});
-  int s = 0;
-  while ((largest >> s) >= (int64_t(1) << 14)) ++s;
-  for (int i = 0; i < 3; ++i) {
-    e[i] = floor_shift(e[i], s);
-    f[i] = floor_shift(f[i], s);
-  }
-}
-
 // 15.12's side: -sgn(W) for the first o decoded before v, not a or b, with
 // W = D x (q[o] - q[a]) != 0; 0 if there is none. In a triangle the o are
 // the third vertices over the edge (a, b) that 14.2's search examines; in
 // a larger face, along(corner, +2).
 template <class Order>
 int guided_side(const VertexCorners& m, uint32_t corner, uint32_t a, uint32_t b, const int64_t d[2],
-                const Visit<Order>& at, const uint32_t* q) {
+                const Visit<Order>& at, const uint32_t* q, const VertexPrediction* c) {
   const auto side_of = [&](uint32_t o) {
     if (!at.before(o) || o == a || o == b) return 0;
     const int64_t w = d[0] * (int64_t(q[3 * size_t(o) + 1]) - int64_t(q[3 * size_t(a) + 1])) -
@@ -140,10 +120,9 @@ int guided_side(const VertexCorners& m, uint32_t corner, uint32_t a, uint32_t b,
     return w > 0 ? -1 : w < 0 ? 1 : 0;
   };
   if (m.degree(corner) > 3) return side_of(m.along(corner, 2));
-  int side = 0, examined = 0;
-  m.for_each_link(a, b, true, [&](uint32_t k, uint32_t o) {
-    if (m.face(k) != m.face(corner)) side = side_of(o);
-    return side == 0 && ++examined < kMaxExamined;
+  int side = 0;
+  search_across(m, a, b, true, corner, c, [&](uint32_t o) {
+    if (side == 0) side = side_of(o);
   });
   return side;
 }
@@ -165,7 +144,7 @@ bool add_guided(const VertexCorners& m, uint32_t corner, const VertexCorners::Si
     e[i] = int64_t(p[3 * vb + i]) - int64_t(p[3 * va + i]);
     f[i] = int64_t(p[3 * vc + i]) - int64_t(p[3 * va + i]);
   }
-  shrink_to_15_bits(e, f);
+  shift_into_15_bits(e, f);
   const int64_t ee = e[0] * e[0] + e[1] * e[1] + e[2] * e[2];
   if (ee == 0) return false;
   if (c->candidates >= kMaxCandidates) return true;
@@ -174,7 +153,7 @@ bool add_guided(const VertexCorners& m, uint32_t corner, const VertexCorners::Si
   const int64_t x = integer_sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
   const int64_t d[2] = {int64_t(q[3 * size_t(b)]) - int64_t(q[3 * size_t(a)]),
                         int64_t(q[3 * size_t(b) + 1]) - int64_t(q[3 * size_t(a) + 1])};
-  const int side = guided_side(m, corner, a, b, d, at, q);
+  const int side = guided_side(m, corner, a, b, d, at, q, c);
   if (side != 0) guide->orientation = side;
   const int64_t sigma = guide->orientation;
   const int64_t n[2] = {ef * d[0] - sigma * x * d[1], ef * d[1] + sigma * x * d[0]};

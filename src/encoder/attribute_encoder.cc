@@ -166,17 +166,23 @@ std::vector<uint8_t> encode_grid_values(const std::vector<float>& table, uint32_
                         (start == ClassStart::kGraded ? kGuidedGradedStart : 0));
     }
   };
-  const bool graded = graded_start_allowed && n < kGradedStartBelow;
-  for (const PositionGuide* g : {static_cast<const PositionGuide*>(nullptr), guide}) {
-    if (g) keep_if_smaller(kCodingGuided, ClassStart::kFlat, PredictionOrder::kLabels, g);
+  // The orders and starts allowed, with the coding of each unguided.
+  struct Variant {
+    uint8_t coding;
+    ClassStart start;
+    PredictionOrder order;
+  };
+  std::vector<Variant> variants = {{kCodingGrid, ClassStart::kFlat, PredictionOrder::kLabels}};
+  if (geometry_order_allowed) variants.push_back({kCodingGeometryOrder, ClassStart::kFlat, PredictionOrder::kGeometry});
+  if (graded_start_allowed && n < kGradedStartBelow) {
+    variants.push_back({kCodingGridGraded, ClassStart::kGraded, PredictionOrder::kLabels});
     if (geometry_order_allowed)
-      keep_if_smaller(g ? kCodingGuided : kCodingGeometryOrder, ClassStart::kFlat, PredictionOrder::kGeometry, g);
-    if (graded) keep_if_smaller(g ? kCodingGuided : kCodingGridGraded, ClassStart::kGraded, PredictionOrder::kLabels, g);
-    if (graded && geometry_order_allowed)
-      keep_if_smaller(g ? kCodingGuided : kCodingGeometryOrderGraded, ClassStart::kGraded, PredictionOrder::kGeometry,
-                      g);
-    if (!guide) break;
+      variants.push_back({kCodingGeometryOrderGraded, ClassStart::kGraded, PredictionOrder::kGeometry});
   }
+  for (size_t i = 1; i < variants.size(); ++i)
+    keep_if_smaller(variants[i].coding, variants[i].start, variants[i].order, nullptr);
+  for (size_t i = 0; guide && i < variants.size(); ++i)
+    keep_if_smaller(kCodingGuided, variants[i].start, variants[i].order, guide);
   if (!range_stream_justifies(n, stream.size())) return {};
   if (*coding == kCodingGuided) out.insert(out.begin(), options);
   out.insert(out.end(), stream.begin(), stream.end());

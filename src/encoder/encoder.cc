@@ -267,12 +267,14 @@ Status add_attributes(const Mesh& mesh, const EncodeOptions& options, const File
   QuantizationInfo info;
   std::vector<uint32_t> quantized;
   std::vector<float> decoded;
-  bool normals = false;  // normals (15.7) and two-component values (15.12) are predicted from the positions
+  bool predicted_from_positions = false;  // normals (15.7, 15.13), two-component values (15.12)
   for (const MeshAttribute& a : mesh.attributes)
-    normals = normals || a.kind == AttributeKind::kNormal || (options.attribute_guided && a.components == 2);
-  if (Status s = normals ? decode_positions(positions.data(), positions.size(), conn.mesh,
-                                            uint32_t(mesh.vertex_count()), &info, &quantized, &decoded)
-                         : Status::Ok();
+    predicted_from_positions = predicted_from_positions || a.kind == AttributeKind::kNormal ||
+                               (options.attribute_guided && a.components == 2);
+  if (Status s = predicted_from_positions ? decode_positions(positions.data(), positions.size(), conn.mesh,
+                                                              uint32_t(mesh.vertex_count()), &info, &quantized,
+                                                              &decoded)
+                                          : Status::Ok();
       !s.ok())
     return Status(ErrorCode::kInvalidArgument, "internal: the encoder's POSN does not decode: " + s.to_string());
   for (const MeshAttribute& attribute : mesh.attributes) {
