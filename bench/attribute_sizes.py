@@ -2,7 +2,7 @@
 """Attributes (spec 15, issue 16): qmc's aTTR bytes against Draco cl10's bytes
 for the same attribute at the same quantization bits, per corpus mesh.
 
-Usage: attribute_sizes.py QMC WORK_DIR MESH.obj...
+Usage: attribute_sizes.py QMC DECODE_BENCH RUNS WORK_DIR MESH.obj...
 
 Draco's bytes for an attribute are its file with positions and that
 attribute minus its file with positions only (draco_encoder -cl 10 -qp P
@@ -81,63 +81,23 @@ def draco_bytes(work, name, obj, keep_vt, keep_vn):
     return os.path.getsize(drc), drc
 
 
-def normal_corners(obj):
-    """The input normal of every corner, in face order."""
-    _, _, vn, faces = obj
-    return [vn[int(c[2]) - 1] for f in faces for c in f]
+def attribute_errors(qmc, original, decoded):
+    """What `qmc compare` says of the decoded OBJ's attributes, by name."""
+    out = json.loads(run(qmc, 'compare', '--json', '--samples', '1000', original, decoded))
+    return {a['name']: a for a in out['attributes']['compared']}
 
 
-def max_angle(a_list, b_list):
-    worst = 0.0
-    for a, b in zip(a_list, b_list):
-        la, lb = math.sqrt(sum(x * x for x in a)), math.sqrt(sum(x * x for x in b))
-        if la == 0 or lb == 0:
-            continue
-        cos = max(-1.0, min(1.0, sum(x * y for x, y in zip(a, b)) / (la * lb)))
-        worst = max(worst, math.degrees(math.acos(cos)))
-    return worst
-
-
-def positions(v_lines):
-    return [tuple(float(x) for x in line.split()[1:4]) for line in v_lines]
-
-
-def normal_error(obj, decoded_obj, step):
-    """Largest, over the input's corners, of the smallest angle between the
-    corner's normal and a normal of a decoded vertex within 2 grid steps of
-    its position (both codecs move a vertex by less than one step; several
-    vertices may share a position, and a seam gives one vertex several
-    normals, so the best match is taken)."""
-    v, _, vn, faces = obj
-    dv, _, dvn, dfaces = parse_obj(decoded_obj)
-    dpos = positions(dv)
-    normals_at = {}
-    for f in dfaces:
-        for c in f:
-            normals_at.setdefault(int(c[0]) - 1, []).append(dvn[int(c[2]) - 1])
-    cell = 2 * step
-    grid = {}
-    for i, p in enumerate(dpos):
-        grid.setdefault(tuple(int(math.floor(x / cell)) for x in p), []).append(i)
-    pos = positions(v)
-    worst = 0.0
-    for f in faces:
-        for c in f:
-            p = pos[int(c[0]) - 1]
-            key = tuple(int(math.floor(x / cell)) for x in p)
-            near = [i for dx in (-1, 0, 1) for dy in (-1, 0, 1) for dz in (-1, 0, 1)
-                    for i in grid.get((key[0] + dx, key[1] + dy, key[2] + dz), [])
-                    if sum((a - b) ** 2 for a, b in zip(p, dpos[i])) <= cell * cell]
-            normals = [d for i in near for d in normals_at.get(i, [])]
-            if not normals:
-                return float('nan')
-            worst = max(worst, min(max_angle([vn[int(c[2]) - 1]], [d]) for d in normals))
-    return worst
+def error_cell(qmc_err, draco_err, key, fmt):
+    cells = []
+    for err in (qmc_err, draco_err):
+        cells.append(fmt % err[key] if err is not None else '-')
+    return ' / '.join(cells)
 
 
 def main():
-    qmc, work, meshes = sys.argv[1], sys.argv[2], sys.argv[3:]
+    qmc, decode_bench, runs, work, meshes = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], sys.argv[5:]
     rows, ratios = [], {'texcoord': [], 'normal': [], 'whole': []}
+    pairs = []
     for path in meshes:
         name = os.path.splitext(os.path.basename(path))[0]
         obj = parse_obj(path)
@@ -162,27 +122,44 @@ def main():
             cells.append('%d / %d = **%.3f**' % (qmc_attr[attr], draco, ratio))
         whole_ratio = info['bytes'] / whole
         ratios['whole'].append(whole_ratio)
-        angle = '-'
+        qmc_obj = os.path.join(work, name + '_qmc.obj')
+        draco_obj = os.path.join(work, name + '_draco.obj')
+        run(qmc, 'decode', '--quiet', out, qmc_obj)
+        run('draco_decoder', '-i', whole_drc, '-o', draco_obj)
+        qmc_err, draco_err = attribute_errors(qmc, path, qmc_obj), attribute_errors(qmc, path, draco_obj)
+        uv = angle = '-'
+        if has_vt:
+            uv = '%s; %s' % (error_cell(qmc_err.get('texcoord'), draco_err.get('texcoord'), 'distance_max', '%.2e'),
+                             error_cell(qmc_err.get('texcoord'), draco_err.get('texcoord'), 'stretch_p99', '%.3f'))
         if has_vn:
-            qmc_obj = os.path.join(work, name + '_qmc.obj')
-            draco_obj = os.path.join(work, name + '_draco.obj')
-            run(qmc, 'decode', '--quiet', out, qmc_obj)
-            run('draco_decoder', '-i', whole_drc, '-o', draco_obj)
-            pos = positions(obj[0])
-            side = max(max(p[a] for p in pos) - min(p[a] for p in pos) for a in range(3))
-            step = side / (2 ** POSITION_BITS - 1)
-            angle = '%.3f / %.3f' % (normal_error(obj, qmc_obj, step), normal_error(obj, draco_obj, step))
-        rows.append('| %s | %d | %s | %s | %d / %d = **%.3f** | %s |' %
+            angle = error_cell(qmc_err.get('normal'), draco_err.get('normal'), 'angle_max_degrees', '%.3f')
+        pairs.append((path.split('corpus/')[-1], len(obj[0]), out, whole_drc))
+        rows.append('| %s | %d | %s | %s | %d / %d = **%.3f** | %s | %s |' %
                     (path.split('corpus/')[-1], len(obj[0]), cells[0], cells[1], info['bytes'], whole, whole_ratio,
-                     angle))
+                     uv, angle))
+    times = run(decode_bench, '--runs', runs, *[f for p in pairs for f in p[2:]]).splitlines()
     print('Positions %d bits, texture coordinates %d bits, normals %d bits in both codecs. qmc codes unit normals '
           'octahedrally (spec 15.7), predicted from the positions, as Draco does; its whole files also carry the '
           'face labels (spec 16: OBJ o, g, usemtl, s) that Draco drops.' % (POSITION_BITS, TEXCOORD_BITS, NORMAL_BITS))
     print()
     print('| mesh | vertices | texcoord: qmc / Draco bytes | normal: qmc / Draco bytes | whole file: qmc / Draco | '
+          'texcoord error, qmc / Draco: largest distance; stretch of 99 % of the texture area | '
           'largest normal angle error, degrees: qmc / Draco |')
-    print('| --- | ---: | ---: | ---: | ---: | ---: |')
+    print('| --- | ---: | ---: | ---: | ---: | ---: | ---: |')
     print('\n'.join(rows))
+    print()
+    print('Decode of the whole files (positions, connectivity and every attribute; qmc\'s also its face labels), '
+          'in process, %s interleaved rounds, median ms (`%s --runs %s` on each pair of files):' %
+          (runs, os.path.relpath(decode_bench), runs))
+    print()
+    print('| mesh | vertices | qmc ms | Draco cl10 ms | speed-up (Draco ms / qmc ms) | >= 2 |')
+    print('| --- | ---: | ---: | ---: | ---: | --- |')
+    speedups = []
+    for (name, vertices, _, _), line in zip(pairs, times):
+        t = line.split()
+        q, d = float(t[t.index('qmc_ms') + 1]), float(t[t.index('draco_ms') + 1])
+        speedups.append(d / q)
+        print('| %s | %d | %.3f | %.3f | %.3f | %s |' % (name, vertices, q, d, d / q, 'yes' if d / q >= 2 else '**no**'))
     print()
     for key, target in (('texcoord', 0.85), ('normal', 0.85), ('whole', 0.85)):
         r = ratios[key]
@@ -190,6 +167,8 @@ def main():
             met = sum(1 for x in r if x <= target)
             print('- %s: qmc <= %.2fx Draco cl10 on %d of %d meshes; geometric mean %.3f.' %
                   (key, target, met, len(r), math.exp(sum(map(math.log, r)) / len(r))))
+    print('- decode: qmc >= 2x Draco cl10\'s speed on %d of %d meshes; geometric mean %.3f.' %
+          (sum(1 for x in speedups if x >= 2), len(speedups), math.exp(sum(map(math.log, speedups)) / len(speedups))))
 
 
 if __name__ == '__main__':

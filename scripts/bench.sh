@@ -86,10 +86,10 @@ topology_result() {
     build/bench/qmc_topology_bench --runs "$runs" --large-runs "$large_runs" --bits 12 "$corpus"/quad/* "$corpus"/tri/*
 }
 
-# attributes_result: docs/results/attributes.md (issue 16), sizes only.
+# attributes_result: docs/results/attributes.md (issue 16): sizes, errors, decode times.
 attributes_result() {
   write_result docs/results/attributes.md "Attributes: qmc's aTTR chunks against Draco cl10" \
-    python3 bench/attribute_sizes.py build/tools/qmc "$work" "$corpus"/attr/*.obj "$corpus"/tri/cathead.obj \
+    python3 bench/attribute_sizes.py build/tools/qmc build/bench/qmc_file_decode_bench "$runs" "$work" "$corpus"/attr/*.obj "$corpus"/tri/cathead.obj \
     "$corpus"/quad/cylinder_ngon_caps.obj "$corpus"/quad/fish_control_mesh.obj "$corpus"/quad/spot_control_mesh.obj \
     "$corpus"/quad/suzanne.obj
 }

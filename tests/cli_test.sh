@@ -320,6 +320,16 @@ check info-attributes 0 "$qmc" info "$work/uv.qmc"
 contains info-attributes-normal "$work/out" '"normal" (spec 15): normal, 3 component(s), 1 values, per corner'
 check decode-attributes-obj 0 "$qmc" decode "$work/uv.qmc" "$work/uv_back.obj"
 contains decode-attributes-vt "$work/uv_back.obj" "^f [0-9]/[0-9]/1 [0-9]/[0-9]/1 [0-9]/[0-9]/1$"
+# compare: the attributes of the decoded file against the input's, corner by corner.
+check compare-attributes 0 "$qmc" compare "$work/uv.obj" "$work/uv_back.obj" --samples 1000
+contains compare-attributes-faces "$work/out" "B's faces matched to A's: 2 of 2"
+contains compare-attributes-stretch "$work/out" "stretch over 2 triangles: L2 \\(0\\.99\\|1\\.00\\)"
+contains compare-attributes-angle "$work/out" "angle max 0.0"
+awk '/^vt /{print "vt", 2 * $2, $3; next} {print}' "$work/uv.obj" >"$work/uv_stretched.obj"  # u doubled
+check compare-attributes-stretched 0 "$qmc" compare "$work/uv.obj" "$work/uv_stretched.obj" --json
+contains compare-attributes-stretched-max "$work/out" '"stretch_l2":1.58113883,"stretch_max":2,'
+contains compare-attributes-stretched-distance "$work/out" '"distance_max":1,'
+check compare-attributes-bad-distance 2 "$qmc" compare "$work/uv.obj" "$work/uv_back.obj" --match-distance 0
 # 15.10: a small table's class probabilities start graded where that is smaller (coding 5 here: a
 # quad torus of 160 vertices, (u, v) its (y, z)); --format 1.7 keeps codings 0 and 4.
 "$meshgen" torus 20 8 "$work/t160.obj" >/dev/null

@@ -5,6 +5,9 @@
 #include <cstdio>
 #include <string>
 
+#include <cstdlib>
+
+#include "attribute_distance.h"
 #include "cli_common.h"
 #include "commands.h"
 #include "mesh_distance.h"
@@ -13,7 +16,7 @@ namespace qmc::cli {
 namespace {
 
 const char kHelp[] =
-    "usage: qmc compare A B [--samples N] [--seed S] [--json]\n"
+    "usage: qmc compare A B [--samples N] [--seed S] [--match-distance D] [--json]\n"
     "\n"
     "Measures how far the surfaces of two meshes (.obj .off .ply .stl) are from\n"
     "each other, as Metro does (Cignoni, Rocchini, Scopigno 1998). Faces are\n"
@@ -27,6 +30,22 @@ const char kHelp[] =
     "  mean       max over both directions of the mean distance of the area samples\n"
     "  PSNR       20 log10(bbox diagonal of A / L2) dB (seed 002 eq. 1); inf (JSON:\n"
     "             null) when L2 is 0\n"
+    "\n"
+    "When A or B has attributes (texture coordinates, normals, colours), their\n"
+    "values are compared at corresponding corners: each vertex of B is matched\n"
+    "to the nearest vertex of A within D (model units; default 1/1000 of A's\n"
+    "bounding-box diagonal: raise it for positions quantized below 10 bits),\n"
+    "each face of B to the face of A with those corners (B's triangles may lie\n"
+    "in A's polygons), and per attribute of the same name (or kind):\n"
+    "\n"
+    "  distance   max and RMS over corners of |value in B - value in A|\n"
+    "  angle      normals: max, mean and RMS angle between the directions\n"
+    "  stretch    texture coordinates: of each triangle, the map from A's to B's\n"
+    "             texture coordinates, singular values s1 >= s2 (Sander et al.\n"
+    "             2001): L2 = sqrt((s1^2 + s2^2) / 2) area-weighted over A's\n"
+    "             texture (1: unchanged), max = largest max(s1, 1/s2), and the\n"
+    "             value 99% of A's texture area stays within; triangles whose\n"
+    "             texture turned over (flipped) or lost its area (collapsed)\n"
     "\n"
     "The sampling is deterministic for a given seed (default 1). Exit 0 when the\n"
     "distances were measured, 2 on bad usage, 3 if a mesh cannot be read or has no\n"
@@ -90,16 +109,91 @@ void print_json(const std::string& path_a, const Mesh& a, const std::string& pat
               d.relative(d.hausdorff), d.l2, d.relative(d.l2));
   std::printf("\"mean\":%.9g,\"mean_relative\":%.9g,\"psnr_db\":", d.mean, d.relative(d.mean));
   if (std::isinf(d.psnr_db))
-    std::printf("null}\n");
+    std::printf("null");
   else
-    std::printf("%.6f}\n", d.psnr_db);
+    std::printf("%.6f", d.psnr_db);
+}
+
+const char* kind_name(AttributeKind kind) {
+  switch (kind) {
+    case AttributeKind::kTextureCoordinate: return "texture coordinate";
+    case AttributeKind::kNormal: return "normal";
+    case AttributeKind::kColour: return "colour";
+    default: return "generic";
+  }
+}
+
+bool has_attributes(const Mesh& a, const Mesh& b) { return !a.attributes.empty() || !b.attributes.empty(); }
+
+void print_attributes_text(const tools::AttributeComparison& c, double diagonal) {
+  std::printf("attributes B's faces matched to A's: %zu of %zu (vertices within %.6g = %.3g of the bbox diagonal: "
+              "the farthest a vertex of B is from its nearest of A, searched up to %.6g",
+              c.faces_matched, c.faces_b, c.match_radius, diagonal > 0 ? c.match_radius / diagonal : 0.0,
+              c.vertex_tolerance);
+  if (c.vertices_unmatched) std::printf("; %zu vertices of B have none", c.vertices_unmatched);
+  std::printf(")");
+  if (c.faces_ambiguous) std::printf("; %zu left out as several faces of A fit them", c.faces_ambiguous);
+  std::printf("\n");
+  for (const tools::AttributeDistance& d : c.attributes) {
+    std::printf("%-10s %s, %u components", d.name.c_str(), kind_name(d.kind), d.components);
+    if (d.name_in_b != d.name) std::printf(" (B's \"%s\")", d.name_in_b.c_str());
+    std::printf(", %zu corners: distance max %.6e, rms %.6e\n", d.corners, d.distance_max, d.distance_rms);
+    if (d.kind == AttributeKind::kNormal && d.components == 3) {
+      std::printf("%-10s angle max %.4f, mean %.4f, rms %.4f degrees", "", d.angle_max_degrees, d.angle_mean_degrees,
+                  d.angle_rms_degrees);
+      if (d.zero_normals) std::printf(" (%zu corners with a zero normal left out)", d.zero_normals);
+      std::printf("\n");
+    }
+    if (d.kind == AttributeKind::kTextureCoordinate && d.components == 2) {
+      std::printf("%-10s stretch over %zu triangles: L2 %.6f, max %.6g, 99%% of the area within %.6g; %zu flipped, "
+                  "%zu collapsed",
+                  "", d.stretch_triangles, d.stretch_l2, d.stretch_max, d.stretch_p99, d.flipped, d.collapsed);
+      if (d.no_area_in_a) std::printf(" (%zu without texture area in A left out)", d.no_area_in_a);
+      std::printf("\n");
+    }
+  }
+  for (const std::string& name : c.only_in_a) std::printf("%-10s only in A\n", name.c_str());
+  for (const std::string& name : c.only_in_b) std::printf("%-10s only in B\n", name.c_str());
+}
+
+void print_attributes_json(const tools::AttributeComparison& c) {
+  std::printf(",\"attributes\":{\"vertex_tolerance\":%.9g,\"faces_b\":%zu,\"faces_matched\":%zu,"
+              "\"faces_ambiguous\":%zu,\"vertices_unmatched\":%zu,\"match_radius\":%.9g,\"compared\":[",
+              c.vertex_tolerance, c.faces_b, c.faces_matched, c.faces_ambiguous, c.vertices_unmatched,
+              c.match_radius);
+  for (size_t i = 0; i < c.attributes.size(); ++i) {
+    const tools::AttributeDistance& d = c.attributes[i];
+    std::printf("%s{\"name\":\"%s\",\"name_in_b\":\"%s\",\"kind\":\"%s\",\"components\":%u,\"corners\":%zu,"
+                "\"distance_max\":%.9g,\"distance_rms\":%.9g",
+                i ? "," : "", json_escape(d.name).c_str(), json_escape(d.name_in_b).c_str(), kind_name(d.kind),
+                d.components, d.corners, d.distance_max, d.distance_rms);
+    if (d.kind == AttributeKind::kNormal && d.components == 3)
+      std::printf(",\"angle_max_degrees\":%.9g,\"angle_mean_degrees\":%.9g,\"angle_rms_degrees\":%.9g,"
+                  "\"zero_normals\":%zu",
+                  d.angle_max_degrees, d.angle_mean_degrees, d.angle_rms_degrees, d.zero_normals);
+    if (d.kind == AttributeKind::kTextureCoordinate && d.components == 2)
+      std::printf(",\"stretch_triangles\":%zu,\"stretch_l2\":%.9g,\"stretch_max\":%.9g,\"stretch_p99\":%.9g,"
+                  "\"flipped\":%zu,\"collapsed\":%zu,\"no_area_in_a\":%zu",
+                  d.stretch_triangles, d.stretch_l2, d.stretch_max, d.stretch_p99, d.flipped, d.collapsed,
+                  d.no_area_in_a);
+    std::printf("}");
+  }
+  const auto names = [](const std::vector<std::string>& list) {
+    for (size_t i = 0; i < list.size(); ++i) std::printf("%s\"%s\"", i ? "," : "", json_escape(list[i]).c_str());
+  };
+  std::printf("],\"only_in_a\":[");
+  names(c.only_in_a);
+  std::printf("],\"only_in_b\":[");
+  names(c.only_in_b);
+  std::printf("]}");
 }
 
 }  // namespace
 
 int run_compare(int argc, char** argv) {
   CommandLine cl;
-  const CommandSpec spec{"compare", kHelp, {"--json"}, {{"--samples"}, {"--seed"}}, 2, 2};
+  const CommandSpec spec{"compare", kHelp, {"--json"}, {{"--samples"}, {"--seed"}, {"--match-distance"}}, 2, 2};
+  double match_distance = 0;  // 0: 1/1000 of A's bounding-box diagonal
   if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
   tools::MeshDistanceOptions options;
   for (const auto& [name, value] : cl.options) {
@@ -110,6 +204,11 @@ int run_compare(int argc, char** argv) {
     } else if (name == "--seed") {
       if (!parse_int(value, 0, 2147483647, &v)) return usage_error("compare", "--seed must be 0 to 2147483647");
       options.seed = uint64_t(v);
+    } else if (name == "--match-distance") {
+      char* end = nullptr;
+      match_distance = std::strtod(value.c_str(), &end);
+      if (end == value.c_str() || *end != '\0' || !(match_distance > 0) || !std::isfinite(match_distance))
+        return usage_error("compare", "--match-distance must be a positive number");
     }
   }
   const std::string& path_a = cl.positional[0];
@@ -132,10 +231,21 @@ int run_compare(int argc, char** argv) {
   Status status = tools::measure_mesh_distance(a, b, options, &d);
   if (shown) progress.done();
   if (!status.ok()) return fail("compare", status);
-  if (cl.has("--json"))
+  tools::AttributeComparison attributes;
+  const bool with_attributes = has_attributes(a, b);
+  if (with_attributes) {
+    const double tolerance = match_distance > 0 ? match_distance : d.bbox_diagonal / 1000;
+    if (tolerance > 0) status = tools::compare_attributes(a, b, tolerance, &attributes);
+    if (!status.ok()) return fail("compare", status);
+  }
+  if (cl.has("--json")) {
     print_json(path_a, a, path_b, b, options, d);
-  else
+    if (with_attributes) print_attributes_json(attributes);
+    std::printf("}\n");
+  } else {
     print_text(path_a, a, path_b, b, options, d);
+    if (with_attributes) print_attributes_text(attributes, d.bbox_diagonal);
+  }
   return kExitOk;
 }
 
