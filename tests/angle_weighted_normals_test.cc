@@ -30,6 +30,52 @@ TEST(AngleWeightedNormals, AngleOfTheSpec) {
     }
 }
 
+// 15.13's steps written as the spec words them (doubling one step at a time,
+// floor division by 2^i, a branch per step): the decoder's integer_angles,
+// which shifts once, shifts arithmetically and turns without branches, four
+// corners at a time, gives the same angles.
+int64_t angle_as_the_spec_words_it(int64_t x, int64_t y) {
+  int64_t z = 0;
+  if (x < 0) {
+    const int64_t t = x;
+    x = y;
+    y = -t;
+    z = 1 << 15;
+  }
+  while (std::max(x, y) < (int64_t(1) << 24)) x *= 2, y *= 2;
+  const auto floor_div_pow2 = [](int64_t v, int i) {
+    const int64_t d = int64_t(1) << i, q = v / d;
+    return (v % d != 0 && v < 0) ? q - 1 : q;
+  };
+  for (int i = 0; i < 16; ++i) {
+    const int64_t dx = floor_div_pow2(y, i), dy = floor_div_pow2(x, i);
+    if (y > 0) {
+      x += dx, y -= dy, z += kCordicAngle[i];
+    } else {
+      x -= dx, y += dy, z -= kCordicAngle[i];
+    }
+  }
+  return z;
+}
+
+TEST(AngleWeightedNormals, FastAnglesAreTheSpecsSteps) {
+  tools::SplitMix64 random(15);
+  int64_t x[4], y[4], angle[4];
+  for (int round = 0; round < 100000; ++round) {
+    for (int j = 0; j < 4; ++j) {
+      // Dot products and cross-product lengths of 15-bit vectors: below 2^30.
+      const int bits = int(random.next() % 31);
+      const int64_t range = (int64_t(1) << bits) + 1;
+      x[j] = int64_t(random.next() % uint64_t(2 * range)) - range;
+      y[j] = 1 + int64_t(random.next() % uint64_t(range));
+    }
+    integer_angles(4, x, y, angle);
+    for (int j = 0; j < 4; ++j) ASSERT_EQ(angle[j], angle_as_the_spec_words_it(x[j], y[j])) << x[j] << ", " << y[j];
+  }
+  for (int64_t v : {int64_t(-1), int64_t(-2), int64_t(-3), -(int64_t(1) << 40), (int64_t(1) << 40) + 3})
+    for (int s = 0; s < 45; ++s) EXPECT_EQ(floor_shift(v, s), int64_t(std::floor(double(v) / std::ldexp(1.0, s))));
+}
+
 // Angle-weighted normals of an irregular bumpy grid: the encoder keeps
 // coding 8, smaller than coding 3, and the decoded normals are as near the
 // input as coding 3's (within one octahedral cell).

@@ -50,8 +50,22 @@ inline double rounded(double x) {
 // a * b rounded once to binary64, never fused into an addition.
 inline double mul(double a, double b) { return rounded(a * b); }
 
-// floor(x / 2^s) for any sign (spec 15.7, 15.12, 15.13).
-inline int64_t floor_shift(int64_t x, int s) { return x >= 0 ? x >> s : -((-x - 1) >> s) - 1; }
+// floor(x / 2^s) for any sign (spec 15.7, 15.12, 15.13): the arithmetic
+// right shift, which C++20 defines and which every C++17 compiler this builds
+// with implements (checked here, so that one which did not would not build).
+static_assert((int64_t(-5) >> 1) == -3 && (int64_t(-1) >> 40) == -1, "needs an arithmetic right shift");
+inline int64_t floor_shift(int64_t x, int s) { return x >> s; }
+
+// The number of bits of x > 0 (floor(log2 x) + 1).
+inline int bit_length64(uint64_t x) {
+#if defined(__GNUC__) || defined(__clang__)
+  return 64 - __builtin_clzll(x);
+#else
+  int n = 0;
+  for (; x != 0; x >>= 1) ++n;
+  return n;
+#endif
+}
 
 // floor(n / d) for any sign of n, d > 0 (spec 14.3.3, 15.12, 15.13).
 inline int64_t floor_div(int64_t n, int64_t d) {
@@ -66,8 +80,7 @@ inline void shift_into_15_bits(int64_t a[3], int64_t b[3]) {
   int64_t largest = 0;  // of x >= 0 and -x - 1 < 0: floor(x / 2^s) fits iff largest >> s does
   for (int i = 0; i < 3; ++i)
     for (const int64_t x : {a[i], b[i]}) largest = std::max(largest, x < 0 ? -x - 1 : x);
-  int s = 0;
-  while ((largest >> s) >= (int64_t(1) << 14)) ++s;
+  const int s = largest < (int64_t(1) << 14) ? 0 : bit_length64(uint64_t(largest)) - 14;
   for (int i = 0; i < 3; ++i) {
     a[i] = floor_shift(a[i], s);
     b[i] = floor_shift(b[i], s);

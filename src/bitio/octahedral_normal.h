@@ -53,8 +53,8 @@ struct CornerCycle {
     uint64_t start = 0;
     for (uint32_t d : face_sizes) {
       for (uint32_t i = 0; i < d; ++i) {
-        next[start + i] = uint32_t(start + (i + 1) % d);
-        previous[start + i] = uint32_t(start + (i + d - 1) % d);
+        next[start + i] = uint32_t(start + (i + 1 == d ? 0 : i + 1));
+        previous[start + i] = uint32_t(start + (i == 0 ? d - 1 : i - 1));
       }
       start += d;
     }
@@ -77,8 +77,8 @@ inline void area_weighted_sum(const uint32_t* first, const uint32_t* last, const
         largest = std::max(largest, x < 0 ? -x - 1 : x);
       }
   }
-  int s = 0;
-  while ((largest >> s) >= (int64_t(1) << 20)) ++s;  // floor(x / 2^s) in -2^20 .. 2^20 - 1
+  // floor(x / 2^s) in -2^20 .. 2^20 - 1 for the smallest such s
+  const int s = largest < (int64_t(1) << 20) ? 0 : bit_length64(uint64_t(largest)) - 20;
   sum[0] = sum[1] = sum[2] = 0;
   for (ptrdiff_t j = 0; j < last - first; ++j) {
     int64_t a[3], b[3];
@@ -97,32 +97,42 @@ inline constexpr int64_t kCordicAngle[16] = {16384, 9672, 5110, 2594, 1302, 652,
                                              81,    41,   20,   10,   5,    3,    1,   1};
 
 // 15.13: the angle atan2(y, x) of a vector with y > 0, in units of pi / 2^16
-// (0 .. 2^16), by 16 steps of CORDIC in integers.
-inline int64_t integer_angle(int64_t x, int64_t y) {
-  int64_t z = 0;
-  if (x < 0) {  // turn by -pi/2: (x, y) -> (y, -x), both then >= 0
-    const int64_t t = x;
-    x = y;
-    y = -t;
-    z = int64_t(1) << 15;
-  }
-  while (std::max(x, y) < (int64_t(1) << 24)) {
-    x *= 2;
-    y *= 2;
-  }
-  for (int i = 0; i < 16; ++i) {
-    const int64_t dx = floor_shift(y, i), dy = floor_shift(x, i);
-    if (y > 0) {
-      x += dx;
-      y -= dy;
-      z += kCordicAngle[i];
-    } else {
-      x -= dx;
-      y += dy;
-      z -= kCordicAngle[i];
+// (0 .. 2^16), by 16 steps of CORDIC in integers; of `count` <= 16 vectors
+// at once (x[j], y[j] -> angle[j]), whose independent steps the processor
+// can overlap.
+inline void integer_angles(int count, const int64_t* x_in, const int64_t* y_in, int64_t* angle) {
+  int64_t x[kOctahedralCorners], y[kOctahedralCorners];
+  for (int j = 0; j < count; ++j) {
+    x[j] = x_in[j];
+    y[j] = y_in[j];
+    angle[j] = 0;
+    if (x[j] < 0) {  // turn by -pi/2: (x, y) -> (y, -x), both then >= 0
+      x[j] = y_in[j];
+      y[j] = -x_in[j];
+      angle[j] = int64_t(1) << 15;
     }
+    // Doubled until the larger reaches 2^24: by 25 - bitlen at once.
+    const int doublings = std::max(0, 25 - bit_length64(uint64_t(std::max(x[j], y[j]))));
+    x[j] *= int64_t(1) << doublings;
+    y[j] *= int64_t(1) << doublings;
   }
-  return z;
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < count; ++j) {
+      // Turn towards y = 0: add (dx, -dy, angle) for y > 0, subtract them
+      // otherwise; (v ^ flip) - flip is v, or -v when flip is all ones.
+      const int64_t dx = floor_shift(y[j], i), dy = floor_shift(x[j], i);
+      const int64_t flip = -int64_t(y[j] <= 0);
+      x[j] += (dx ^ flip) - flip;
+      y[j] -= (dy ^ flip) - flip;
+      angle[j] += (kCordicAngle[i] ^ flip) - flip;
+    }
+}
+
+// The same of one vector.
+inline int64_t integer_angle(int64_t x, int64_t y) {
+  int64_t angle;
+  integer_angles(1, &x, &y, &angle);
+  return angle;
 }
 
 // 15.13: the sum S over the value's corners [first, last) (at most 16) of
@@ -131,7 +141,8 @@ inline int64_t integer_angle(int64_t x, int64_t y) {
 // vertex normals. Each corner's a and b are shifted into 15 bits on their own.
 inline void angle_weighted_sum(const uint32_t* first, const uint32_t* last, const std::vector<uint32_t>& corners,
                                const CornerCycle& cycle, const uint32_t* q, int64_t sum[3]) {
-  sum[0] = sum[1] = sum[2] = 0;
+  int64_t g[kOctahedralCorners][3], length[kOctahedralCorners], dot[kOctahedralCorners], angle[kOctahedralCorners];
+  int count = 0;  // the corners that are not degenerate
   for (const uint32_t* k = first; k != last; ++k) {
     const uint32_t c = corners[*k], n = corners[cycle.next[*k]], p = corners[cycle.previous[*k]];
     int64_t a[3], b[3];
@@ -140,14 +151,18 @@ inline void angle_weighted_sum(const uint32_t* first, const uint32_t* last, cons
       b[i] = int64_t(q[3 * size_t(p) + i]) - int64_t(q[3 * size_t(c) + i]);
     }
     shift_into_15_bits(a, b);
-    const int64_t g[3] = {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-    const int64_t length = integer_sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
-    if (length == 0) continue;  // a degenerate corner adds nothing
-    const int64_t angle = integer_angle(a[0] * b[0] + a[1] * b[1] + a[2] * b[2], length);
-    for (int i = 0; i < 3; ++i) {
-      sum[i] += floor_div(g[i] * (int64_t(1) << 20), length) * angle;
-    }
+    int64_t* cross = g[count];
+    cross[0] = a[1] * b[2] - a[2] * b[1];
+    cross[1] = a[2] * b[0] - a[0] * b[2];
+    cross[2] = a[0] * b[1] - a[1] * b[0];
+    length[count] = integer_sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
+    if (length[count] == 0) continue;  // a degenerate corner adds nothing
+    dot[count++] = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
   }
+  integer_angles(count, dot, length, angle);
+  sum[0] = sum[1] = sum[2] = 0;
+  for (int j = 0; j < count; ++j)
+    for (int i = 0; i < 3; ++i) sum[i] += floor_div(g[j][i] * (int64_t(1) << 20), length[j]) * angle[j];
 }
 
 // 15.7's prediction of a value from the positions q (3 per vertex) at its
