@@ -56,7 +56,7 @@ inline double mul(double a, double b) { return rounded(a * b); }
 static_assert((int64_t(-5) >> 1) == -3 && (int64_t(-1) >> 40) == -1, "needs an arithmetic right shift");
 inline int64_t floor_shift(int64_t x, int s) { return x >> s; }
 
-// The number of bits of x > 0 (floor(log2 x) + 1).
+// The number of bits of x > 0 (floor(log2 x) + 1); bit_length (position_coding.h) takes 0 too.
 inline int bit_length64(uint64_t x) {
 #if defined(__GNUC__) || defined(__clang__)
   return 64 - __builtin_clzll(x);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 
+#include "bitio/exact_arith.h"  // bit_length64
 #include "bitio/residual_code.h"
 #include "bitio/vertex_prediction.h"
 
@@ -26,11 +27,7 @@ inline constexpr int kPositionMaxClass = 30;  // |r| <= top <= 2^30 - 1
 enum class ClassStart : uint8_t { kFlat, kGraded };
 inline constexpr uint16_t kGradedClassStart[7] = {150, 300, 700, 1200, 1700, 1900, 1950};  // e = -3 .. 3
 
-inline int bit_length(uint32_t v) {
-  int n = 0;
-  for (; v != 0; v >>= 1) ++n;
-  return n;
-}
+inline int bit_length(uint32_t v) { return v == 0 ? 0 : bit_length64(v); }
 
 // Adaptive probabilities of one POSN payload, all starting at 1024.
 struct PositionResidualModel {
