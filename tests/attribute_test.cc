@@ -399,6 +399,39 @@ TEST(AttributeObj, ReadsAndWritesTextureCoordinatesAndNormals) {
   EXPECT_EQ(tools::write_mesh_to_memory(m, "off", &written).code(), ErrorCode::kInvalidArgument);
 }
 
+// What a format cannot hold, by name: what `qmc decode --drop-unsupported`
+// leaves out. The normal here has one value for all corners, so PLY holds it
+// per vertex; a normal that differs between two corners of a vertex it
+// cannot, nor the face labels.
+TEST(AttributeFormats, UnwritablePartsNameWhatEachFormatCannotHold) {
+  const std::string text =
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"
+      "vt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\nvt 0.5 0.5\n"
+      "vn 0 0 1\nvn 0 1 0\n"
+      "g left\nf 1/1/1 2/2/1 3/3/1\ng right\nf 3/5/2 2/2/1 4/4/1\n";
+  Mesh m;
+  ASSERT_TRUE(tools::read_mesh_from_memory(text, "obj", &m, nullptr).ok());
+  ASSERT_EQ(m.face_labels.size(), 1u);
+  const auto names = [&](const char* format) {
+    std::vector<std::string> out;
+    for (const tools::UnwritablePart& part : tools::unwritable_parts(m, format)) out.push_back(part.name);
+    return out;
+  };
+  EXPECT_EQ(names("obj"), std::vector<std::string>{});
+  EXPECT_EQ(names("OFF"), (std::vector<std::string>{"texcoord", "normal", "group"}));
+  EXPECT_EQ(names("ply"), (std::vector<std::string>{"normal", "group"}));
+  EXPECT_EQ(names("stl"), std::vector<std::string>{});  // write_mesh refuses the format itself
+  // Each reason is write_mesh's own refusal, and without them the mesh writes.
+  std::string written;
+  const Status refused = tools::write_mesh_to_memory(m, "ply", &written);
+  ASSERT_EQ(refused.code(), ErrorCode::kInvalidArgument);
+  EXPECT_EQ(refused.message(), tools::unwritable_parts(m, "ply").front().reason);
+  m.attributes.erase(m.attributes.begin() + 1);
+  m.face_labels.clear();
+  EXPECT_TRUE(tools::unwritable_parts(m, "ply").empty());
+  EXPECT_TRUE(tools::write_mesh_to_memory(m, "ply", &written).ok());
+}
+
 // PLY: per-vertex normals and uchar colours, texture coordinates per corner
 // (a face texcoord list), through a .qmc file and back in the same form.
 TEST(AttributePly, NormalsColoursAndFaceTexcoordsRoundTrip) {

@@ -371,6 +371,21 @@ check decode-attributes-keep-order-obj 0 "$qmc" decode "$work/uv_kept.qmc" "$wor
 contains decode-attributes-kept-face "$work/uv_kept.obj" "^f 3/[0-9]/1 2/[0-9]/1 4/[0-9]/1$"
 check decode-attributes-off-refused 3 "$qmc" decode "$work/uv.qmc" "$work/uv_back.off"
 contains decode-attributes-off-names "$work/err" 'attribute "texcoord"'
+contains decode-attributes-off-flags "$work/err" "pass --drop texcoord or --drop-unsupported"
+# What OUT's format cannot hold is left out only when asked, and then said.
+check decode-drop-unsupported 0 "$qmc" decode "$work/uv.qmc" "$work/uv_dropped.off" --drop-unsupported
+contains decode-drop-unsupported-said "$work/err" "dropped (--drop-unsupported): .*uv.qmc: texcoord (.*uv_dropped.off cannot hold it)"
+contains decode-drop-unsupported-normal "$work/err" "dropped (--drop-unsupported): .*uv.qmc: normal"
+contains decode-drop-unsupported-mesh "$work/uv_dropped.off" "^4 2 0$"
+check decode-drop-unsupported-quiet 0 "$qmc" decode "$work/uv.qmc" "$work/uv_quiet.off" --drop-unsupported --quiet
+check decode-drop-unsupported-quiet-silent 0 test ! -s "$work/err"
+check decode-drop-named 0 "$qmc" decode "$work/uv.qmc" "$work/uv_no_normal.obj" --drop normal
+contains decode-drop-named-said "$work/err" "dropped (--drop normal): .*uv.qmc: normal"
+contains decode-drop-named-keeps-uv "$work/uv_no_normal.obj" "^vt 0.5[0-9]* 0.5[0-9]*$"
+check decode-drop-named-no-vn 1 grep -q "^vn" "$work/uv_no_normal.obj"
+check decode-drop-both-to-off 0 "$qmc" decode "$work/uv.qmc" "$work/uv_both.off" --drop normal --drop texcoord
+check decode-drop-unknown 2 "$qmc" decode "$work/uv.qmc" "$work/uv_x.obj" --drop colour
+check decode-drop-canonical 2 "$qmc" decode --canonical "$work/uv.qmc" "$work/uv.bin" --drop normal
 check encode-attributes-exact 0 "$qmc" encode "$work/uv.obj" "$work/uv_exact.qmc" --exact-attributes --keep-order
 check verify-attributes-exact 0 "$qmc" verify "$work/uv.obj" "$work/uv_exact.qmc"
 contains verify-attributes-bit-for-bit "$work/out" "attribute normal: at every corner, bit for bit"

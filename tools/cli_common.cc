@@ -131,6 +131,20 @@ bool parse_int(const std::string& text, long min, long max, long* out) {
   return true;
 }
 
+bool drop_named(Mesh* mesh, const std::string& name) {
+  const auto attribute = std::find_if(mesh->attributes.begin(), mesh->attributes.end(),
+                                      [&](const MeshAttribute& a) { return a.name == name; });
+  if (attribute != mesh->attributes.end()) {
+    mesh->attributes.erase(attribute);
+    return true;
+  }
+  const auto labels = std::find_if(mesh->face_labels.begin(), mesh->face_labels.end(),
+                                   [&](const FaceLabels& l) { return l.name == name; });
+  if (labels == mesh->face_labels.end()) return false;
+  mesh->face_labels.erase(labels);
+  return true;
+}
+
 double max_quantization_step(const QuantizationInfo& q) {
   return std::max({q.step[0], q.step[1], q.step[2]});
 }

@@ -68,6 +68,10 @@ Status decoder_limits(const CommandLine& cl, DecoderLimits* limits);
 // decode() with those limits; a refusal by a limit names the option.
 Status decode_with_limits(const DecoderLimits& limits, const std::vector<uint8_t>& bytes, DecodedFile* out);
 
+// --drop NAME (encode, decode): removes the attribute, else the face
+// labels, called `name` from *mesh; false if it has neither.
+bool drop_named(Mesh* mesh, const std::string& name);
+
 // Largest per-axis quantization step of a decoded file (section 6.4).
 double max_quantization_step(const QuantizationInfo& q);
 

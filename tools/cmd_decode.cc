@@ -10,7 +10,8 @@
 namespace qmc::cli {
 
 static const char kDecodeHelp[] =
-    "usage: qmc decode IN.qmc OUT.{obj,off,ply} [--level J] [--max-output-mb N] [--quiet]\n"
+    "usage: qmc decode IN.qmc OUT.{obj,off,ply} [--level J] [--drop NAME]... [--drop-unsupported]\n"
+    "                  [--max-output-mb N] [--quiet]\n"
     "       qmc decode --canonical IN.qmc OUT [--max-output-mb N] [--quiet]\n"
     "\n"
     "Decodes IN.qmc and writes the mesh, vertices in the file's order (spec 5.2.1).\n"
@@ -19,6 +20,13 @@ static const char kDecodeHelp[] =
     "options:\n"
     "  --level J     progressive files (spec 12): write level J, 0 = the base mesh\n"
     "                (default: the finest level)\n"
+    "  --drop NAME   leave the attribute or face labels NAME (spec 15, 16) out of\n"
+    "                OUT (repeatable); printed\n"
+    "  --drop-unsupported  leave out what OUT's format cannot hold (.off: every\n"
+    "                attribute and face label; .ply: per-corner normals and\n"
+    "                colours, face labels; .obj: a second texture-coordinate or\n"
+    "                normal attribute), each printed; without it such a file is\n"
+    "                refused, naming what OUT would lose\n"
     "  --canonical   write the canonical output (spec 10.2, 12.9, 13.10) that the\n"
     "                conformance manifest hashes, whatever the extension of OUT;\n"
     "                this is the decoder command conformance/run.py expects\n";
@@ -34,13 +42,46 @@ static int write_canonical(const CommandLine& cl, const DecodedFile& file, const
   return kExitOk;
 }
 
+// --drop NAME, then what OUT's format cannot hold: refused, naming the
+// flags, or with --drop-unsupported left out. Each part left out is printed
+// (stderr) unless --quiet. Returns -1 to go on, else the exit code.
+static int drop_parts(const CommandLine& cl, const std::string& input, const std::string& output, Mesh* mesh) {
+  const bool quiet = cl.has("--quiet");
+  for (const auto& [option, name] : cl.options) {
+    if (option != "--drop") continue;
+    if (!drop_named(mesh, name))
+      return usage_error("decode", "--drop " + name + ": " + input + " has no attribute or face labels of that name");
+    if (!quiet) std::fprintf(stderr, "dropped (--drop %s): %s: %s\n", name.c_str(), input.c_str(), name.c_str());
+  }
+  const std::vector<tools::UnwritablePart> parts = tools::unwritable_parts(*mesh, tools::mesh_format_of(output));
+  if (parts.empty()) return -1;
+  if (!cl.has("--drop-unsupported"))
+    return fail("decode", Status(ErrorCode::kInvalidArgument, output + ": " + parts.front().reason +
+                                                                  "; or pass --drop " + parts.front().name +
+                                                                  " or --drop-unsupported to leave it out"));
+  for (const tools::UnwritablePart& part : parts) {
+    if (!quiet)
+      std::fprintf(stderr, "dropped (--drop-unsupported): %s: %s (%s cannot hold it)\n", input.c_str(),
+                   part.name.c_str(), output.c_str());
+    drop_named(mesh, part.name);
+  }
+  return -1;
+}
+
 int run_decode(int argc, char** argv) {
   CommandLine cl;
   static const std::string help = std::string(kDecodeHelp) + kMaxOutputHelp;
-  const CommandSpec spec{"decode", help.c_str(), {"--quiet", "--canonical"}, {{"--level"}, {kMaxOutputOption}}, 2, 2};
+  const CommandSpec spec{"decode",
+                         help.c_str(),
+                         {"--quiet", "--canonical", "--drop-unsupported"},
+                         {{"--level"}, {"--drop"}, {kMaxOutputOption}},
+                         2,
+                         2};
   if (int rc = parse_command_line(spec, argc, argv, &cl); rc >= 0) return rc;
   if (cl.has("--canonical") && cl.value("--level"))
     return usage_error("decode", "--canonical covers every level; --level does not apply");
+  if (cl.has("--canonical") && (cl.value("--drop") || cl.has("--drop-unsupported")))
+    return usage_error("decode", "--canonical writes everything the file holds; --drop and --drop-unsupported do not apply");
   DecoderLimits limits;
   if (Status s = decoder_limits(cl, &limits); !s.ok()) return usage_error("decode", s.message());
   const std::string& input = cl.positional[0];
@@ -66,6 +107,7 @@ int run_decode(int argc, char** argv) {
   }
   if (level_note.empty() && file.loop_level_count)
     level_note = ", finest level " + std::to_string(file.loop_level_count);
+  if (int rc = drop_parts(cl, input, output, &file.mesh); rc >= 0) return rc;
   if (Status s = tools::write_mesh(output, file.mesh); !s.ok()) return fail("decode", s);
   const std::string source = file.gim.present ? "a " + std::to_string(file.gim.width) + " x " +
                                                     std::to_string(file.gim.height) + " geometry image"

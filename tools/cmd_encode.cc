@@ -598,15 +598,7 @@ int refuse_dropping(const EncodeArgs& args, const std::vector<std::string>& note
 // Returns -1 to go on, else the exit code.
 int drop_attributes(const EncodeArgs& args, Mesh* mesh) {
   for (const std::string& name : args.drop) {
-    const auto attribute = std::find_if(mesh->attributes.begin(), mesh->attributes.end(),
-                                        [&](const MeshAttribute& a) { return a.name == name; });
-    const auto labels = std::find_if(mesh->face_labels.begin(), mesh->face_labels.end(),
-                                     [&](const FaceLabels& l) { return l.name == name; });
-    if (attribute != mesh->attributes.end())
-      mesh->attributes.erase(attribute);
-    else if (labels != mesh->face_labels.end())
-      mesh->face_labels.erase(labels);
-    else
+    if (!drop_named(mesh, name))
       return usage_error("encode", "--drop " + name + ": " + args.input + " has no attribute or face labels of that name");
     if (!args.quiet) std::fprintf(stderr, "dropped (--drop %s): %s: %s\n", name.c_str(), args.input.c_str(), name.c_str());
   }

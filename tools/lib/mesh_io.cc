@@ -1958,7 +1958,7 @@ void write_ply(const Mesh& mesh, TextSink* out) {
     if (one_value_per_vertex(mesh, a, &value_of))
       per_vertex.emplace_back(&a, std::move(value_of));
     else
-      corner_texcoord = &a;  // check_attributes_fit let only texcoords through
+      corner_texcoord = &a;  // unwritable_parts let only texcoords through
   }
   out->put("ply\nformat ascii 1.0\nelement vertex ");
   out->put_uint(mesh.vertex_count());
@@ -2010,38 +2010,39 @@ void write_ply(const Mesh& mesh, TextSink* out) {
 
 // What the format cannot write is an error, never a silent loss: OBJ writes
 // one texture-coordinate, one normal and one per-vertex colour attribute, PLY per-vertex normals,
-// colours, alpha and texcoords (per corner too), OFF none.
-Status check_attributes_fit(const Mesh& mesh, const std::string& format) {
-  for (const MeshAttribute& a : mesh.attributes) {
-    const bool obj_kind = a.kind == AttributeKind::kTextureCoordinate || a.kind == AttributeKind::kNormal;
-    if (format == "obj" && ((obj_kind && obj_attribute(mesh, a.kind) == &a) || obj_vertex_colour(mesh) == &a)) continue;
-    std::vector<uint32_t> value_of;
-    if (format == "ply" && !ply_property_names(a).empty() &&
-        (one_value_per_vertex(mesh, a, &value_of) || (a.kind == AttributeKind::kTextureCoordinate && a.components == 2)))
-      continue;
-    return invalid("the mesh has attribute \"" + a.name + "\", which ." + format +
-                   (format == "obj"   ? " cannot hold besides the first texture coordinates, normals and vertex colours"
-                    : format == "ply" ? " cannot hold (PLY: normals, colour and alpha one per vertex, texcoord)"
-                                      : " output cannot hold; write .obj, .ply or .qmc"));
-  }
-  return Status::Ok();
+// colours, alpha and texcoords (per corner too), OFF none. Empty if `a` fits.
+std::string attribute_unwritable(const Mesh& mesh, const MeshAttribute& a, const std::string& format) {
+  const bool obj_kind = a.kind == AttributeKind::kTextureCoordinate || a.kind == AttributeKind::kNormal;
+  if (format == "obj" && ((obj_kind && obj_attribute(mesh, a.kind) == &a) || obj_vertex_colour(mesh) == &a)) return "";
+  std::vector<uint32_t> value_of;
+  if (format == "ply" && !ply_property_names(a).empty() &&
+      (one_value_per_vertex(mesh, a, &value_of) || (a.kind == AttributeKind::kTextureCoordinate && a.components == 2)))
+    return "";
+  return "the mesh has attribute \"" + a.name + "\", which ." + format +
+         (format == "obj"   ? " cannot hold besides the first texture coordinates, normals and vertex colours"
+          : format == "ply" ? " cannot hold (PLY holds normals, colours and alpha one per vertex, texture coordinates per vertex or per corner)"
+                            : " output cannot hold; write .obj, .ply or .qmc");
 }
 
 // OBJ writes the labels it reads (o, g, usemtl, s), as long as no face goes
 // back to having none after a face with one (OBJ has no statement for it).
-Status check_labels_fit(const Mesh& mesh, const std::string& format) {
-  for (const FaceLabels& l : mesh.face_labels) {
-    if (format != "obj" || *obj_keyword(l.name) == '\0')
-      return invalid("the mesh has face labels \"" + l.name + "\", which ." + format +
-                     " output cannot hold; write .obj (object, group, material, smoothing) or .qmc");
-    bool labelled = false;
-    for (uint32_t v : l.face_values) {
-      if (labelled && v == l.none())
-        return invalid("face labels \"" + l.name + "\": a face without one after faces with one, which .obj cannot say");
-      labelled = labelled || v != l.none();
-    }
+// Empty if `l` fits.
+std::string labels_unwritable(const FaceLabels& l, const std::string& format) {
+  if (format != "obj" || *obj_keyword(l.name) == '\0')
+    return "the mesh has face labels \"" + l.name + "\", which ." + format +
+           " output cannot hold; write .obj (object, group, material, smoothing) or .qmc";
+  bool labelled = false;
+  for (uint32_t v : l.face_values) {
+    if (labelled && v == l.none())
+      return "face labels \"" + l.name + "\": a face without one after faces with one, which .obj cannot say";
+    labelled = labelled || v != l.none();
   }
-  return Status::Ok();
+  return "";
+}
+
+Status check_parts_fit(const Mesh& mesh, const std::string& format) {
+  const std::vector<UnwritablePart> parts = unwritable_parts(mesh, format);
+  return parts.empty() ? Status::Ok() : invalid(parts.front().reason);
 }
 
 // Writing a mesh we could not read back would only move the failure later.
@@ -2096,13 +2097,25 @@ Status read_mesh_from_memory(std::string_view text_or_bytes, std::string_view fo
   return read_named(text_or_bytes, lowered, "<" + lowered + " data>", mesh, warnings);
 }
 
+std::string mesh_format_of(const std::string& path) { return extension_of(path); }
+
+std::vector<UnwritablePart> unwritable_parts(const Mesh& mesh, std::string_view format) {
+  const std::string lowered = to_lower(format);
+  std::vector<UnwritablePart> parts;
+  if (!is_writable_format(lowered)) return parts;
+  for (const MeshAttribute& a : mesh.attributes)
+    if (std::string reason = attribute_unwritable(mesh, a, lowered); !reason.empty()) parts.push_back({a.name, reason});
+  for (const FaceLabels& l : mesh.face_labels)
+    if (std::string reason = labels_unwritable(l, lowered); !reason.empty()) parts.push_back({l.name, reason});
+  return parts;
+}
+
 Status write_mesh_to_memory(const Mesh& mesh, std::string_view format, std::string* text) {
   std::string lowered = to_lower(format);
   if (!is_writable_format(lowered)) return invalid("cannot write format " + quoted(format) + " (expected obj, off or ply)");
   if (text == nullptr) return invalid("write_mesh_to_memory: text is null");
   Status status = validate_for_writing(mesh);
-  if (status.ok()) status = check_attributes_fit(mesh, lowered);
-  if (status.ok()) status = check_labels_fit(mesh, lowered);
+  if (status.ok()) status = check_parts_fit(mesh, lowered);
   if (!status.ok()) return status;
   TextSink sink(nullptr);
   write_any(mesh, lowered, &sink);
@@ -2114,8 +2127,7 @@ Status write_mesh(const std::string& path, const Mesh& mesh) {
   std::string format = extension_of(path);
   if (!is_writable_format(format)) return invalid(path + ": cannot write this extension (expected .obj, .off or .ply)");
   Status status = validate_for_writing(mesh);
-  if (status.ok()) status = check_attributes_fit(mesh, format);
-  if (status.ok()) status = check_labels_fit(mesh, format);
+  if (status.ok()) status = check_parts_fit(mesh, format);
   if (!status.ok()) return Status(status.code(), path + ": " + status.message());
   return write_file_atomically(path, [&](std::FILE* file) {
     TextSink sink(file);

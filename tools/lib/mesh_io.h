@@ -43,6 +43,22 @@ qmc::Status read_mesh_from_memory(std::string_view text_or_bytes, std::string_vi
 // or has an attribute the format cannot hold, gives kInvalidArgument.
 qmc::Status write_mesh(const std::string& path, const qmc::Mesh& mesh);
 
+// The format read_mesh and write_mesh take `path` to be in: its extension,
+// lower case ("obj" for "a/B.OBJ"), empty without one.
+std::string mesh_format_of(const std::string& path);
+
+// What write_mesh would refuse to put in a file of `format` ("obj", "off",
+// "ply"; case-insensitive; none for any other format, which write_mesh
+// refuses as a whole): the attributes, then the face labels, of `mesh`
+// that the format cannot hold, in the mesh's order, each with the message
+// write_mesh gives for it. Leaving them all out makes the mesh writable (as
+// far as its attributes and labels go).
+struct UnwritablePart {
+  std::string name;    // the attribute's or the face labels' name
+  std::string reason;  // why, as write_mesh says it
+};
+std::vector<UnwritablePart> unwritable_parts(const qmc::Mesh& mesh, std::string_view format);
+
 // As write_mesh, into *text; `format` is "obj", "off" or "ply".
 qmc::Status write_mesh_to_memory(const qmc::Mesh& mesh, std::string_view format, std::string* text);
 
