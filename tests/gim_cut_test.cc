@@ -3,7 +3,7 @@
 // holes, rejected inputs), the mean-value parametrization onto the image
 // rectangle with aligned seams, and regular sampling with bit-identical seam
 // pixels. Corpus meshes when ../shared/corpus is present (skipped otherwise).
-#include "encoder/gim_cut.h"
+#include "geometry/gim_cut.h"
 
 #include <gtest/gtest.h>
 
@@ -19,9 +19,9 @@
 #include <string>
 #include <vector>
 
-#include "encoder/gim_parametrization.h"
-#include "encoder/gim_sampling.h"
-#include "encoder/triangle_bvh.h"
+#include "geometry/gim_parametrization.h"
+#include "geometry/gim_sampling.h"
+#include "geometry/triangle_bvh.h"
 #include "mesh_generators.h"
 #include "mesh_io.h"
 #include "corpus_dir.h"

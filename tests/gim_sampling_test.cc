@@ -16,12 +16,12 @@
 #include <string>
 #include <vector>
 
-#include "encoder/gim_adaptive_sampling.h"
-#include "encoder/gim_cut.h"
-#include "encoder/gim_hausdorff.h"
-#include "encoder/gim_parametrization.h"
-#include "encoder/gim_roi.h"
-#include "encoder/gim_sampling.h"
+#include "geometry/gim_adaptive_sampling.h"
+#include "geometry/gim_cut.h"
+#include "geometry/gim_hausdorff.h"
+#include "geometry/gim_parametrization.h"
+#include "geometry/gim_roi.h"
+#include "geometry/gim_sampling.h"
 #include "mesh_distance.h"
 #include "mesh_io.h"
 #include "corpus_dir.h"

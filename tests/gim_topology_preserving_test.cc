@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "decoder/gim_mesh_builder.h"
-#include "encoder/gim_cut.h"
-#include "encoder/gim_parametrization.h"
-#include "encoder/gim_topology_preserving.h"
+#include "geometry/gim_cut.h"
+#include "geometry/gim_parametrization.h"
+#include "geometry/gim_topology_preserving.h"
 #include "mesh_generators.h"
 #include "mesh_io.h"
 #include "corpus_dir.h"

@@ -19,10 +19,10 @@
 #include <vector>
 
 #include "decoder/loop_subdivision.h"
-#include "encoder/loop_fitting.h"
-#include "encoder/loop_remesher.h"
-#include "encoder/quadric_simplifier.h"
-#include "encoder/triangle_bvh.h"
+#include "geometry/loop_fitting.h"
+#include "geometry/loop_remesher.h"
+#include "geometry/quadric_simplifier.h"
+#include "geometry/triangle_bvh.h"
 #include "mesh_generators.h"
 #include "mesh_io.h"
 #include "mesh_test_support.h"

@@ -43,7 +43,7 @@ struct GeometryImageOptions {
   bool store_blank_pixels = false;   // code the samples of blank pixels (flag bit 1)
   bool normal_planes = false;        // add unit-normal planes (kinds 3, 4, 5)
   // Seed 000 section 4: a region of interest (the text format of
-  // src/encoder/gim_roi.h: vertex / face lists or a box); empty: none.
+  // src/geometry/gim_roi.h: vertex / face lists or a box); empty: none.
   std::string roi;
   uint32_t hausdorff_iterations = 2000;  // bound of seed 000's algorithm 1
 };

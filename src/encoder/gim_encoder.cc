@@ -9,15 +9,15 @@
 #include <cmath>
 
 #include "bitio/union_find.h"
-#include "encoder/triangle_bvh.h"  // Vec3d
+#include "geometry/triangle_bvh.h"  // Vec3d
 
-#include "encoder/gim_adaptive_sampling.h"
-#include "encoder/gim_cut.h"
-#include "encoder/gim_hausdorff.h"
-#include "encoder/gim_parametrization.h"
-#include "encoder/gim_roi.h"
-#include "encoder/gim_sampling.h"
-#include "encoder/gim_topology_preserving.h"
+#include "geometry/gim_adaptive_sampling.h"
+#include "geometry/gim_cut.h"
+#include "geometry/gim_hausdorff.h"
+#include "geometry/gim_parametrization.h"
+#include "geometry/gim_roi.h"
+#include "geometry/gim_sampling.h"
+#include "geometry/gim_topology_preserving.h"
 #include "encoder/gim_writer.h"
 
 namespace qmc {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "encoder/gim_types.h"
+#include "geometry/gim_types.h"
 #include "qmc/encoder.h"
 #include "qmc/status.h"
 

@@ -15,12 +15,12 @@
 #include "decoder/loop_subdivision.h"
 #include "encoder/chunk_writer.h"
 #include "encoder/encoder_internal.h"
-#include "encoder/loop_fitting.h"
+#include "geometry/loop_fitting.h"
 #include "encoder/loop_level_encoder.h"
-#include "encoder/loop_remesher.h"
+#include "geometry/loop_remesher.h"
 #include "encoder/position_encoder.h"
-#include "encoder/quadric_simplifier.h"
-#include "encoder/triangle_bvh.h"
+#include "geometry/quadric_simplifier.h"
+#include "geometry/triangle_bvh.h"
 
 namespace qmc {
 namespace {

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "encoder/gim_types.h"
+#include "geometry/gim_types.h"
 
 namespace qmc::tools {
 

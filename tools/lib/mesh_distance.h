@@ -56,14 +56,14 @@
 #include <functional>
 #include <vector>
 
-#include "encoder/triangle_bvh.h"
+#include "geometry/triangle_bvh.h"
 #include "qmc/mesh.h"
 #include "qmc/status.h"
 
 namespace qmc::tools {
 
-// The geometry and the nearest-triangle search are the encoder's
-// (src/encoder/triangle_bvh.h); these names keep the tools' spelling.
+// The geometry and the nearest-triangle search are the geometry library's
+// (src/geometry/triangle_bvh.h); these names keep the tools' spelling.
 using qmc::point_triangle_distance_squared;
 using qmc::TriangleBvh;
 using qmc::Vec3d;

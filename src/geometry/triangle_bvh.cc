@@ -1,6 +1,6 @@
 // Triangle BVH: closest point and nearest line hit (seed 003 §3.1.2 and step
 // III; the definitions are in triangle_bvh.h).
-#include "encoder/triangle_bvh.h"
+#include "geometry/triangle_bvh.h"
 
 #include <algorithm>
 #include <cmath>

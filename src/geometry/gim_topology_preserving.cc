@@ -3,7 +3,7 @@
 // output, and step 1, "Gaining nearly uniform distribution" (eq. 2, the
 // geometry phase of Xu et al.'s capacity-constrained Delaunay triangulation,
 // without the connectivity phase so the triangles stay the input's).
-#include "encoder/gim_topology_preserving.h"
+#include "geometry/gim_topology_preserving.h"
 
 #include <algorithm>
 #include <chrono>

@@ -3,7 +3,7 @@
 // §3.1 passes its own column and row positions), with seed 002's seam pairs
 // so the rebuilt surface has no cracks. See gim_sampling.h for the contract.
 #include "bitio/union_find.h"
-#include "encoder/gim_sampling.h"
+#include "geometry/gim_sampling.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,6 +1,6 @@
 // Seed 000 §3.2-3.3: Hausdorff-error-driven adjustment of geometry image
 // samples (see gim_hausdorff.h for the choices made where the seed is silent).
-#include "encoder/gim_hausdorff.h"
+#include "geometry/gim_hausdorff.h"
 
 #include <algorithm>
 #include <array>

@@ -20,7 +20,7 @@
 #include <functional>
 #include <vector>
 
-#include "encoder/gim_types.h"
+#include "geometry/gim_types.h"
 #include "qmc/status.h"
 
 namespace qmc {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "decoder/loop_subdivision.h"
-#include "encoder/triangle_bvh.h"
+#include "geometry/triangle_bvh.h"
 #include "qmc/status.h"
 
 namespace qmc {

@@ -3,7 +3,7 @@
 // laid out so that the two sides of every cut land on matching border pixels
 // (seed 002: "the edge of the pairs is recorded to ensure that no cracks
 // occur on the surface"). See gim_parametrization.h for the contract.
-#include "encoder/gim_parametrization.h"
+#include "geometry/gim_parametrization.h"
 
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>

@@ -1,12 +1,12 @@
 // Seed 000 §4: enhanced-ROI geometry images (see gim_roi.h).
-#include "encoder/gim_roi.h"
+#include "geometry/gim_roi.h"
 
 #include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <numeric>
 
-#include "encoder/gim_sampling.h"
+#include "geometry/gim_sampling.h"
 
 namespace qmc {
 namespace {

@@ -1,13 +1,13 @@
 // Seed 003 step III: Suzuki et al.'s local adjustment of the control mesh so
 // that its Loop limit surface fits the original (see loop_fitting.h).
-#include "encoder/loop_fitting.h"
+#include "geometry/loop_fitting.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 
-#include "encoder/loop_remesher.h"
+#include "geometry/loop_remesher.h"
 
 namespace qmc {
 namespace {

@@ -1,7 +1,7 @@
 // Seed 003 steps IV-VI: subdivision, displacement along limit normals onto
 // the original surface (§3.1.2), and the inverse Loop by the vertex-point
 // system (§3.2); see loop_remesher.h.
-#include "encoder/loop_remesher.h"
+#include "geometry/loop_remesher.h"
 
 #include <algorithm>
 #include <chrono>

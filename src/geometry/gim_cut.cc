@@ -2,7 +2,7 @@
 // et al.'s cut graph, its pruning and straightening, a long path for closed
 // genus 0). See gim_cut.h for the contract.
 #include "bitio/union_find.h"
-#include "encoder/gim_cut.h"
+#include "geometry/gim_cut.h"
 
 #include <algorithm>
 #include <chrono>

@@ -26,7 +26,7 @@
 #include <cstdint>
 #include <functional>
 
-#include "encoder/gim_types.h"
+#include "geometry/gim_types.h"
 #include "qmc/mesh.h"
 #include "qmc/status.h"
 

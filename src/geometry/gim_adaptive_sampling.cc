@@ -1,5 +1,5 @@
 // Seed 000 §3.1, vertex density equalization (see gim_adaptive_sampling.h).
-#include "encoder/gim_adaptive_sampling.h"
+#include "geometry/gim_adaptive_sampling.h"
 
 #include <algorithm>
 

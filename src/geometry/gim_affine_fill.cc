@@ -12,7 +12,7 @@
 #include <deque>
 #include <limits>
 
-#include "encoder/gim_topology_preserving.h"
+#include "geometry/gim_topology_preserving.h"
 
 namespace qmc {
 namespace {

@@ -60,8 +60,8 @@
 #include <functional>
 #include <vector>
 
-#include "encoder/gim_types.h"
-#include "encoder/triangle_bvh.h"
+#include "geometry/gim_types.h"
+#include "geometry/triangle_bvh.h"
 #include "qmc/status.h"
 
 namespace qmc {

@@ -1,6 +1,6 @@
 // Seed 003 step II: Garland-Heckbert quadric simplification that keeps the
 // topology (see quadric_simplifier.h), on OpenMesh's DecimaterT.
-#include "encoder/quadric_simplifier.h"
+#include "geometry/quadric_simplifier.h"
 
 // OpenMesh's VectorT is deliberately left uninitialized by its default
 // constructor, and GCC says so wherever a property vector grows.

@@ -41,7 +41,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "encoder/gim_topology_preserving.h"
+#include "geometry/gim_topology_preserving.h"
 
 namespace qmc {
 namespace {
