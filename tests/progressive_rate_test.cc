@@ -121,6 +121,45 @@ TEST(ProgressiveRate, ErrorTargetGivesTheSmallestMeasuredFileWithinIt) {
   EXPECT_NEAR(choice.distance.relative(choice.distance.l2), chosen.relative_l2, 1e-15);
 }
 
+// Where the error crosses the target between two scales of the grid, the
+// search goes on at their geometric means: with scales {1, 16} and two
+// refinements, 4 and then 8 (4 within the target) or 2 (4 not).
+TEST(ProgressiveRate, ErrorTargetRefinesTheScaleBetweenTheGrid) {
+  const Mesh mesh = rippled_torus();
+  tools::RateSearch s;
+  s.levels = {1};
+  s.position_bits = {12};
+  s.samples = 20000;
+  const auto l2_at = [&](double scale) {
+    tools::RateSearch one = s;
+    one.step_scales = {scale};
+    tools::RateChoice probe;
+    EXPECT_TRUE(tools::choose_progressive(mesh, {}, {1e-9, 0}, one, {}, &probe).ok());
+    return probe.tried.back().relative_l2;
+  };
+  const double fine = l2_at(1), coarse = l2_at(16);
+  ASSERT_LT(fine, coarse);
+  const double target = std::sqrt(fine * coarse);
+
+  s.step_scales = {1, 16};
+  tools::RateChoice grid;
+  ASSERT_TRUE(tools::choose_progressive(mesh, {}, {target, 0}, s, {}, &grid).ok());
+  s.refinements = 2;
+  tools::RateChoice refined;
+  ASSERT_TRUE(tools::choose_progressive(mesh, {}, {target, 0}, s, {}, &refined).ok());
+  std::vector<double> scales;
+  for (const tools::RatePoint& p : refined.tried) scales.push_back(p.step_scale);
+  ASSERT_EQ(scales.size(), grid.tried.size() + 2);
+  EXPECT_EQ(scales[scales.size() - 2], 4.0);
+  const tools::RatePoint& at4 = refined.tried[scales.size() - 2];
+  const bool four_within = at4.relative_l2 >= 0 ? at4.relative_l2 <= target : true;  // unmeasured: not smaller
+  EXPECT_EQ(scales.back(), four_within ? 8.0 : 2.0);
+  ASSERT_GE(grid.chosen, 0);
+  ASSERT_GE(refined.chosen, 0);
+  EXPECT_LE(refined.tried[size_t(refined.chosen)].relative_l2, target);
+  EXPECT_LE(refined.bytes.size(), grid.bytes.size());
+}
+
 TEST(ProgressiveRate, HausdorffTargetBoundsTheHausdorffDistance) {
   const Mesh mesh = rippled_torus();
   tools::RateChoice probe;

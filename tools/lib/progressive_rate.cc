@@ -145,6 +145,15 @@ Status search_error(const ProgressiveEncoder& encoder, const EncodeOptions& opti
         return st;
       if (go_larger) lo = mid + 1; else hi = mid - 1;
     }
+    // Between the last scale that did not miss (hi) and the first that did
+    // (lo), the search goes on in halves of the ratio (geometric means).
+    if (hi < 0) continue;
+    double passed = s.step_scales[size_t(hi)], missed = s.step_scales[size_t(lo)];
+    for (int step = 0; step < s.refinements && missed > passed; ++step) {
+      const double scale = std::sqrt(passed * missed);
+      if (Status st = try_candidate(encoder, options, bits, scale, search, &go_larger); !st.ok()) return st;
+      (go_larger ? passed : missed) = scale;
+    }
   }
   return Status::Ok();
 }
@@ -210,6 +219,7 @@ RateSearch default_rate_search(const Mesh& mesh) {
   if (s.levels.empty()) s.levels = {1};
   s.position_bits = {8, 9, 10, 11, 12, 13};
   s.step_scales = {1, 2, 4, 8, 16, 32, 64};
+  s.refinements = 2;
   return s;
 }
 

@@ -44,13 +44,17 @@ struct RateSearch {
   std::vector<int> levels;           // K
   std::vector<int> position_bits;    // of the base mesh
   std::vector<double> step_scales;   // EncodeOptions::finest_step_scale
+  // Error target: after the search over step_scales, this many more steps
+  // of it between the two neighbouring scales where the error crossed the
+  // target, each at the geometric mean of the two it lies between.
+  int refinements = 0;
   size_t samples = MeshDistanceOptions{}.samples;  // of each error measurement
 };
 
 // The defaults: K from 6 down to 1 where the base keeps at least 64 of the
 // input's triangles (deep files first: they are the small ones, and a small
 // best file spares measuring larger candidates), base bits 8..13, step
-// scales 1, 2, 4, ..., 64.
+// scales 1, 2, 4, ..., 64, refined twice (to within a factor 2^(1/4)).
 RateSearch default_rate_search(const Mesh& mesh);
 
 struct RatePoint {
@@ -75,7 +79,8 @@ struct RateChoice {
 // progressive_levels, position_bits and finest_step_scale the search sets).
 // For an error target: per K, the most accurate candidate first (largest
 // bits, smallest scale); a K that misses the target with it is dropped;
-// then per bits a binary search for the largest scale within the error.
+// then per bits a binary search for the largest scale within the error,
+// continued `refinements` times between the grid's scales.
 // Candidates not smaller than the best so far are not measured. For a size
 // target: per K and bits, a binary search for the smallest scale whose file
 // fits, then that file measured; the lowest error wins. A K that cannot be
