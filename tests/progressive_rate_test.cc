@@ -3,6 +3,7 @@
 // search of tools/lib/progressive_rate.h.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -201,6 +202,41 @@ TEST(ProgressiveRate, SizeTargetGivesTheMostAccurateFileThatFits) {
   tools::RateChoice none;
   ASSERT_TRUE(tools::choose_progressive(mesh, {}, {0, 100}, small_search(), {}, &none).ok());
   EXPECT_EQ(none.chosen, -1);
+}
+
+// A size target refines likewise, toward the smallest scale (the most
+// accurate file) that fits: between 16 (fits) and 1 (does not), 4, then 2
+// (4 fits) or 8 (4 does not).
+TEST(ProgressiveRate, SizeTargetRefinesTheScaleBetweenTheGrid) {
+  const Mesh mesh = rippled_torus();
+  std::vector<uint8_t> fine, coarse;
+  ASSERT_TRUE(encode(mesh, progressive(1, 1), &fine).ok());
+  ASSERT_TRUE(encode(mesh, progressive(1, 16), &coarse).ok());
+  ASSERT_LT(coarse.size(), fine.size());
+  const uint64_t limit = (fine.size() + coarse.size()) / 2;
+  tools::RateSearch s;
+  s.levels = {1};
+  s.position_bits = {12};
+  s.step_scales = {1, 16};
+  s.samples = 20000;
+  tools::RateChoice grid;
+  ASSERT_TRUE(tools::choose_progressive(mesh, {}, {0, limit}, s, {}, &grid).ok());
+  s.refinements = 2;
+  tools::RateChoice refined;
+  ASSERT_TRUE(tools::choose_progressive(mesh, {}, {0, limit}, s, {}, &refined).ok());
+  ASSERT_GE(grid.chosen, 0);
+  ASSERT_GE(refined.chosen, 0);
+  std::vector<double> scales;
+  for (const tools::RatePoint& p : refined.tried) scales.push_back(p.step_scale);
+  ASSERT_EQ(scales.size(), grid.tried.size() + 2);
+  const auto tried_at = [&](double scale) { return std::count(scales.begin(), scales.end(), scale) > 0; };
+  EXPECT_TRUE(tried_at(4.0));
+  std::vector<uint8_t> at4;
+  ASSERT_TRUE(encode(mesh, progressive(1, 4), &at4).ok());
+  EXPECT_TRUE(tried_at(at4.size() <= limit ? 2.0 : 8.0));
+  EXPECT_LE(refined.bytes.size(), limit);
+  EXPECT_LE(refined.tried[size_t(refined.chosen)].step_scale, 16.0);
+  EXPECT_LE(refined.tried[size_t(refined.chosen)].relative_l2, grid.tried[size_t(grid.chosen)].relative_l2);
 }
 
 TEST(ProgressiveRate, DefaultLevelsKeepAThousandBaseTriangles) {

@@ -159,29 +159,43 @@ Status search_error(const ProgressiveEncoder& encoder, const EncodeOptions& opti
 }
 
 // Size target, one K: per bits a binary search for the smallest scale whose
-// file fits (the bytes fall as the scale grows), then that file measured.
+// file fits (the bytes fall as the scale grows), continued `refinements`
+// times between that scale and the grid's next smaller one, then that file
+// measured.
 Status search_size(const ProgressiveEncoder& encoder, const EncodeOptions& options, const RateSearch& s,
                    Search* search) {
   for (int bits : s.position_bits) {
     int lo = 0, hi = int(s.step_scales.size()) - 1;
     Candidate fitting;
     bool found = false;
+    // Keeps `c` as the best fitting file of these bits if it fits.
+    const auto fits = [&](Candidate* c) {
+      if (!search->worth_measuring(*c)) {
+        search->skip(*c);
+        return false;
+      }
+      if (found) search->skip(fitting);
+      fitting = std::move(*c);
+      found = true;
+      return true;
+    };
     while (lo <= hi) {
       const int mid = (lo + hi) / 2;
       Candidate c;
       if (Status st = code_candidate(encoder, options, bits, s.step_scales[size_t(mid)], &c); !st.ok()) return st;
-      if (search->worth_measuring(c)) {
-        if (found) search->skip(fitting);
-        fitting = std::move(c);
-        found = true;
-        hi = mid - 1;
-      } else {
-        search->skip(c);
-        lo = mid + 1;
+      if (fits(&c)) hi = mid - 1; else lo = mid + 1;
+    }
+    if (!found) continue;
+    if (lo > 0) {
+      double passed = s.step_scales[size_t(lo)], missed = s.step_scales[size_t(lo - 1)];
+      for (int step = 0; step < s.refinements; ++step) {
+        const double scale = std::sqrt(passed * missed);
+        Candidate c;
+        if (Status st = code_candidate(encoder, options, bits, scale, &c); !st.ok()) return st;
+        (fits(&c) ? passed : missed) = scale;
       }
     }
-    if (found)
-      if (Status st = search->measure_and_keep(&fitting); !st.ok()) return st;
+    if (Status st = search->measure_and_keep(&fitting); !st.ok()) return st;
   }
   return Status::Ok();
 }

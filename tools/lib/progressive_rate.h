@@ -44,9 +44,10 @@ struct RateSearch {
   std::vector<int> levels;           // K
   std::vector<int> position_bits;    // of the base mesh
   std::vector<double> step_scales;   // EncodeOptions::finest_step_scale
-  // Error target: after the search over step_scales, this many more steps
-  // of it between the two neighbouring scales where the error crossed the
-  // target, each at the geometric mean of the two it lies between.
+  // After the search over step_scales, this many more steps of it between
+  // the two neighbouring scales where the error (error target) or the size
+  // (size target) crossed the target, each at the geometric mean of the two
+  // it lies between.
   int refinements = 0;
   size_t samples = MeshDistanceOptions{}.samples;  // of each error measurement
 };
@@ -83,7 +84,7 @@ struct RateChoice {
 // continued `refinements` times between the grid's scales.
 // Candidates not smaller than the best so far are not measured. For a size
 // target: per K and bits, a binary search for the smallest scale whose file
-// fits, then that file measured; the lowest error wins. A K that cannot be
+// fits, continued likewise, then that file measured; the lowest error wins. A K that cannot be
 // coded is listed with its reason; other errors of the encoder end the
 // search. `stage` (may be empty) hears what is being done.
 Status choose_progressive(const Mesh& mesh, const EncodeOptions& options, const RateTarget& target,
