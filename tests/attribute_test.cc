@@ -399,6 +399,61 @@ TEST(AttributeObj, ReadsAndWritesTextureCoordinatesAndNormals) {
   EXPECT_EQ(tools::write_mesh_to_memory(m, "off", &written).code(), ErrorCode::kInvalidArgument);
 }
 
+// Binary PLY: the header's format line, then each value in its declared
+// type's bytes, least significant first. One triangle, known bytes.
+TEST(AttributePly, BinaryLittleEndianHasTheDeclaredBytes) {
+  Mesh m;
+  m.positions = {1.0f, 0.0f, 0.0f, 0.0f, -2.0f, 0.0f, 0.0f, 0.0f, 0.5f};
+  m.face_sizes = {3};
+  m.corners = {0, 2, 1};
+  std::string written;
+  tools::MeshWriteOptions binary;
+  binary.binary_ply = true;
+  ASSERT_TRUE(tools::write_mesh_to_memory(m, "ply", &written, binary).ok());
+  const std::string header =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  ASSERT_EQ(written.substr(0, header.size()), header);
+  const std::string body = written.substr(header.size());
+  const std::string one("\x00\x00\x80\x3f", 4), zero(4, '\0'), minus_two("\x00\x00\x00\xc0", 4),
+      half("\x00\x00\x00\x3f", 4);
+  const std::string face = std::string("\x03", 1) + std::string("\x00\x00\x00\x00", 4) +
+                           std::string("\x02\x00\x00\x00", 4) + std::string("\x01\x00\x00\x00", 4);
+  EXPECT_EQ(body, one + zero + zero + zero + minus_two + zero + zero + zero + half + face);
+}
+
+// The same mesh, attributes and all, reads back from binary as from ASCII.
+TEST(AttributePly, BinaryReadsBackAsAscii) {
+  const std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+      "property float nx\nproperty float ny\nproperty float nz\n"
+      "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+      "element face 2\nproperty list uchar int vertex_indices\nproperty list uchar float texcoord\nend_header\n"
+      "0 0 0 0 0 1 255 0 0\n1 0 0 0 0 1 0 255 0\n0 1 0 0 0 1 0 0 255\n1 1 0.1 0 0 1 10 20 30\n"
+      "3 0 1 2 6 0 0 1 0 0 1\n4 2 1 3 0 8 0.5 0.5 1 0 1 1 0.25 0.75\n";
+  Mesh m;
+  ASSERT_TRUE(tools::read_mesh_from_memory(text, "ply", &m, nullptr).ok());
+  tools::MeshWriteOptions binary;
+  binary.binary_ply = true;
+  std::string ascii_text, binary_text;
+  ASSERT_TRUE(tools::write_mesh_to_memory(m, "ply", &ascii_text).ok());
+  ASSERT_TRUE(tools::write_mesh_to_memory(m, "ply", &binary_text, binary).ok());
+  Mesh from_ascii, from_binary;
+  ASSERT_TRUE(tools::read_mesh_from_memory(ascii_text, "ply", &from_ascii, nullptr).ok());
+  ASSERT_TRUE(tools::read_mesh_from_memory(binary_text, "ply", &from_binary, nullptr).ok());
+  EXPECT_EQ(from_binary.positions, from_ascii.positions);
+  EXPECT_EQ(from_binary.face_sizes, from_ascii.face_sizes);
+  EXPECT_EQ(from_binary.corners, from_ascii.corners);
+  ASSERT_EQ(from_binary.attributes.size(), 3u);
+  ASSERT_EQ(from_ascii.attributes.size(), 3u);
+  for (size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(from_binary.attributes[i].name, from_ascii.attributes[i].name);
+    EXPECT_EQ(from_binary.attributes[i].values, from_ascii.attributes[i].values) << i;
+    EXPECT_EQ(from_binary.attributes[i].corner_values, from_ascii.attributes[i].corner_values) << i;
+  }
+  EXPECT_EQ(from_binary.positions, m.positions);
+}
+
 // What a format cannot hold, by name: what `qmc decode --drop-unsupported`
 // leaves out. The normal here has one value for all corners, so PLY holds it
 // per vertex; a normal that differs between two corners of a vertex it

@@ -386,6 +386,15 @@ check decode-drop-named-no-vn 1 grep -q "^vn" "$work/uv_no_normal.obj"
 check decode-drop-both-to-off 0 "$qmc" decode "$work/uv.qmc" "$work/uv_both.off" --drop normal --drop texcoord
 check decode-drop-unknown 2 "$qmc" decode "$work/uv.qmc" "$work/uv_x.obj" --drop colour
 check decode-drop-canonical 2 "$qmc" decode --canonical "$work/uv.qmc" "$work/uv.bin" --drop normal
+# --binary: PLY as binary_little_endian, which reads back as the same mesh.
+check decode-binary-ply 0 "$qmc" decode "$work/uv.qmc" "$work/uv_binary.ply" --binary --drop normal
+starts_with decode-binary-ply-format "$work/uv_binary.ply" "ply
+format binary_little_endian 1.0"
+check decode-ascii-ply 0 "$qmc" decode "$work/uv.qmc" "$work/uv_ascii.ply" --drop normal
+check decode-binary-ply-same-surface 0 "$qmc" compare "$work/uv_ascii.ply" "$work/uv_binary.ply" --json
+contains decode-binary-ply-hausdorff-0 "$work/out" '"hausdorff":0,'
+contains decode-binary-ply-texcoords-same "$work/out" '"name":"texcoord".*"distance_max":0,'
+check decode-binary-obj-refused 2 "$qmc" decode "$work/uv.qmc" "$work/uv_binary.obj" --binary
 check encode-attributes-exact 0 "$qmc" encode "$work/uv.obj" "$work/uv_exact.qmc" --exact-attributes --keep-order
 check verify-attributes-exact 0 "$qmc" verify "$work/uv.obj" "$work/uv_exact.qmc"
 contains verify-attributes-bit-for-bit "$work/out" "attribute normal: at every corner, bit for bit"

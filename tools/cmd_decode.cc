@@ -11,7 +11,7 @@ namespace qmc::cli {
 
 static const char kDecodeHelp[] =
     "usage: qmc decode IN.qmc OUT.{obj,off,ply} [--level J] [--drop NAME]... [--drop-unsupported]\n"
-    "                  [--max-output-mb N] [--quiet]\n"
+    "                  [--binary] [--max-output-mb N] [--quiet]\n"
     "       qmc decode --canonical IN.qmc OUT [--max-output-mb N] [--quiet]\n"
     "\n"
     "Decodes IN.qmc and writes the mesh, vertices in the file's order (spec 5.2.1).\n"
@@ -28,6 +28,9 @@ static const char kDecodeHelp[] =
     "                attributes beyond the first texture coordinates, normals\n"
     "                and vertex colours), each printed; without it such a file\n"
     "                is refused, naming what OUT would lose\n"
+    "  --binary      write .ply as binary_little_endian (boat.obj's texture-\n"
+    "                mapped mesh: 1.4 MB instead of 3.7 MB), floats bit for bit;\n"
+    "                .obj and .off are text only\n"
     "  --canonical   write the canonical output (spec 10.2, 12.9, 13.10) that the\n"
     "                conformance manifest hashes, whatever the extension of OUT;\n"
     "                this is the decoder command conformance/run.py expects\n";
@@ -74,7 +77,7 @@ int run_decode(int argc, char** argv) {
   static const std::string help = std::string(kDecodeHelp) + kMaxOutputHelp;
   const CommandSpec spec{"decode",
                          help.c_str(),
-                         {"--quiet", "--canonical", "--drop-unsupported"},
+                         {"--quiet", "--canonical", "--drop-unsupported", "--binary"},
                          {{"--level"}, {"--drop"}, {kMaxOutputOption}},
                          2,
                          2};
@@ -87,6 +90,8 @@ int run_decode(int argc, char** argv) {
   if (Status s = decoder_limits(cl, &limits); !s.ok()) return usage_error("decode", s.message());
   const std::string& input = cl.positional[0];
   const std::string& output = cl.positional[1];
+  if (cl.has("--binary") && (cl.has("--canonical") || tools::mesh_format_of(output) != "ply"))
+    return usage_error("decode", "--binary writes .ply files; " + output + " is not one");
   if (int rc = refuse_overwriting_input("decode", input, output); rc >= 0) return rc;
   std::vector<uint8_t> bytes;
   if (Status s = read_file(input, &bytes); !s.ok()) return fail("decode", s);
@@ -109,7 +114,9 @@ int run_decode(int argc, char** argv) {
   if (level_note.empty() && file.loop_level_count)
     level_note = ", finest level " + std::to_string(file.loop_level_count);
   if (int rc = drop_parts(cl, input, output, &file.mesh); rc >= 0) return rc;
-  if (Status s = tools::write_mesh(output, file.mesh); !s.ok()) return fail("decode", s);
+  tools::MeshWriteOptions write_options;
+  write_options.binary_ply = cl.has("--binary");
+  if (Status s = tools::write_mesh(output, file.mesh, write_options); !s.ok()) return fail("decode", s);
   const std::string source = file.gim.present ? "a " + std::to_string(file.gim.width) + " x " +
                                                     std::to_string(file.gim.height) + " geometry image"
                                               : std::string(connectivity_method_name(file.method)) + " connectivity";

@@ -1945,12 +1945,52 @@ bool ply_uchar(const MeshAttribute& a) {
   return false;
 }
 
-void write_ply(const Mesh& mesh, TextSink* out) {
+// The values of PLY elements, as the header declares them: ASCII (a line
+// per element, values separated by spaces) or binary_little_endian (each
+// value in its type's bytes, least significant first, whatever the host).
+class PlyValues {
+ public:
+  PlyValues(TextSink* out, bool binary) : out_(out), binary_(binary) {}
+  void put_float(float x) {
+    if (!binary_) return text_value().put_float(x);
+    uint32_t bits;
+    std::memcpy(&bits, &x, sizeof bits);
+    put_little_endian(bits, 4);
+  }
+  // An integer of PLY type `type`: "uchar", "int" or "uint".
+  void put_integer(uint64_t v, const char* type) {
+    if (!binary_) return text_value().put_uint(v);
+    put_little_endian(v, std::strcmp(type, "uchar") == 0 ? 1 : 4);
+  }
+  void end_element() {
+    if (!binary_) out_->put("\n");
+    first_ = true;
+  }
+
+ private:
+  TextSink& text_value() {
+    if (!first_) out_->put(" ");
+    first_ = false;
+    return *out_;
+  }
+  void put_little_endian(uint64_t v, int bytes) {
+    char b[8];
+    for (int i = 0; i < bytes; ++i) b[i] = char((v >> (8 * i)) & 0xFF);
+    out_->put(std::string_view(b, size_t(bytes)));
+  }
+
+  TextSink* out_;
+  bool binary_;
+  bool first_ = true;
+};
+
+void write_ply(const Mesh& mesh, TextSink* out, bool binary) {
   uint32_t max_degree = 0;
   for (uint32_t size : mesh.face_sizes) max_degree = std::max(max_degree, size);
   // The narrowest common types that hold the data, so other tools read it.
   const char* count_type = max_degree <= 255 ? "uchar" : "uint";
   const char* index_type = mesh.vertex_count() <= uint64_t{INT32_MAX} ? "int" : "uint";
+  const char* texcoord_count_type = max_degree <= 127 ? "uchar" : "uint";
   std::vector<std::pair<const MeshAttribute*, std::vector<uint32_t>>> per_vertex;
   const MeshAttribute* corner_texcoord = nullptr;
   for (const MeshAttribute& a : mesh.attributes) {
@@ -1960,7 +2000,7 @@ void write_ply(const Mesh& mesh, TextSink* out) {
     else
       corner_texcoord = &a;  // unwritable_parts let only texcoords through
   }
-  out->put("ply\nformat ascii 1.0\nelement vertex ");
+  out->put(binary ? "ply\nformat binary_little_endian 1.0\nelement vertex " : "ply\nformat ascii 1.0\nelement vertex ");
   out->put_uint(mesh.vertex_count());
   out->put("\nproperty float x\nproperty float y\nproperty float z\n");
   for (const auto& [a, value_of] : per_vertex)
@@ -1968,43 +2008,33 @@ void write_ply(const Mesh& mesh, TextSink* out) {
   out->put("element face ");
   out->put_uint(mesh.face_count());
   out->put(std::string("\nproperty list ") + count_type + " " + index_type + " vertex_indices\n");
-  if (corner_texcoord) out->put(std::string("property list ") + (max_degree <= 127 ? "uchar" : "uint") + " float texcoord\n");
+  if (corner_texcoord) out->put(std::string("property list ") + texcoord_count_type + " float texcoord\n");
   out->put("end_header\n");
+  PlyValues values(out, binary);
   for (size_t v = 0; v < mesh.vertex_count(); ++v) {
-    out->put_float(mesh.positions[3 * v]);
-    out->put(" ");
-    out->put_float(mesh.positions[3 * v + 1]);
-    out->put(" ");
-    out->put_float(mesh.positions[3 * v + 2]);
+    for (int k = 0; k < 3; ++k) values.put_float(mesh.positions[3 * v + k]);
     for (const auto& [a, value_of] : per_vertex)
       for (uint32_t c = 0; c < a->components; ++c) {
         const float x = value_of[v] == UINT32_MAX ? 0.f : a->values[a->components * size_t(value_of[v]) + c];
-        out->put(" ");
         if (ply_uchar(*a))
-          out->put_uint(uint64_t(std::clamp(std::lround(x), 0L, 255L)));
+          values.put_integer(uint64_t(std::clamp(std::lround(x), 0L, 255L)), "uchar");
         else
-          out->put_float(x);
+          values.put_float(x);
       }
-    out->put("\n");
+    values.end_element();
   }
   size_t corner = 0;
   for (uint32_t size : mesh.face_sizes) {
-    out->put_uint(size);
-    for (uint32_t i = 0; i < size; ++i) {
-      out->put(" ");
-      out->put_uint(mesh.corners[corner + i]);
-    }
+    values.put_integer(size, count_type);
+    for (uint32_t i = 0; i < size; ++i) values.put_integer(mesh.corners[corner + i], index_type);
     if (corner_texcoord) {
-      out->put(" ");
-      out->put_uint(2 * uint64_t(size));
+      values.put_integer(2 * uint64_t(size), texcoord_count_type);
       for (uint32_t i = 0; i < size; ++i)
-        for (uint32_t c = 0; c < 2; ++c) {
-          out->put(" ");
-          out->put_float(corner_texcoord->values[2 * size_t(corner_texcoord->corner_values[corner + i]) + c]);
-        }
+        for (uint32_t c = 0; c < 2; ++c)
+          values.put_float(corner_texcoord->values[2 * size_t(corner_texcoord->corner_values[corner + i]) + c]);
     }
     corner += size;
-    out->put("\n");
+    values.end_element();
   }
 }
 
@@ -2065,13 +2095,13 @@ Status validate_for_writing(const Mesh& mesh) {
 
 bool is_writable_format(const std::string& format) { return format == "obj" || format == "off" || format == "ply"; }
 
-void write_any(const Mesh& mesh, const std::string& format, TextSink* out) {
+void write_any(const Mesh& mesh, const std::string& format, const MeshWriteOptions& options, TextSink* out) {
   if (format == "obj") {
     write_obj(mesh, out);
   } else if (format == "off") {
     write_off(mesh, out);
   } else {
-    write_ply(mesh, out);
+    write_ply(mesh, out, options.binary_ply);
   }
 }
 
@@ -2110,7 +2140,8 @@ std::vector<UnwritablePart> unwritable_parts(const Mesh& mesh, std::string_view 
   return parts;
 }
 
-Status write_mesh_to_memory(const Mesh& mesh, std::string_view format, std::string* text) {
+Status write_mesh_to_memory(const Mesh& mesh, std::string_view format, std::string* text,
+                            const MeshWriteOptions& options) {
   std::string lowered = to_lower(format);
   if (!is_writable_format(lowered)) return invalid("cannot write format " + quoted(format) + " (expected obj, off or ply)");
   if (text == nullptr) return invalid("write_mesh_to_memory: text is null");
@@ -2118,12 +2149,12 @@ Status write_mesh_to_memory(const Mesh& mesh, std::string_view format, std::stri
   if (status.ok()) status = check_parts_fit(mesh, lowered);
   if (!status.ok()) return status;
   TextSink sink(nullptr);
-  write_any(mesh, lowered, &sink);
+  write_any(mesh, lowered, options, &sink);
   *text = std::move(sink.text());
   return Status::Ok();
 }
 
-Status write_mesh(const std::string& path, const Mesh& mesh) {
+Status write_mesh(const std::string& path, const Mesh& mesh, const MeshWriteOptions& options) {
   std::string format = extension_of(path);
   if (!is_writable_format(format)) return invalid(path + ": cannot write this extension (expected .obj, .off or .ply)");
   Status status = validate_for_writing(mesh);
@@ -2131,7 +2162,7 @@ Status write_mesh(const std::string& path, const Mesh& mesh) {
   if (!status.ok()) return Status(status.code(), path + ": " + status.message());
   return write_file_atomically(path, [&](std::FILE* file) {
     TextSink sink(file);
-    write_any(mesh, format, &sink);
+    write_any(mesh, format, options, &sink);
     return sink.flush();
   });
 }
