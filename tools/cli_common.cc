@@ -145,6 +145,16 @@ bool drop_named(Mesh* mesh, const std::string& name) {
   return true;
 }
 
+int drop_each_named(const char* command, const std::vector<std::string>& names, const std::string& input, bool quiet,
+                    Mesh* mesh) {
+  for (const std::string& name : names) {
+    if (!drop_named(mesh, name))
+      return usage_error(command, "--drop " + name + ": " + input + " has no attribute or face labels of that name");
+    if (!quiet) std::fprintf(stderr, "dropped (--drop %s): %s: %s\n", name.c_str(), input.c_str(), name.c_str());
+  }
+  return -1;
+}
+
 double max_quantization_step(const QuantizationInfo& q) {
   return std::max({q.step[0], q.step[1], q.step[2]});
 }

@@ -71,6 +71,11 @@ Status decode_with_limits(const DecoderLimits& limits, const std::vector<uint8_t
 // --drop NAME (encode, decode): removes the attribute, else the face
 // labels, called `name` from *mesh; false if it has neither.
 bool drop_named(Mesh* mesh, const std::string& name);
+// Drops each of `names` from *mesh as drop_named does, printing each (stderr)
+// unless `quiet`; a name the mesh does not have is a usage error of
+// `command` naming `input`. Returns -1 to go on, else the exit code.
+int drop_each_named(const char* command, const std::vector<std::string>& names, const std::string& input, bool quiet,
+                    Mesh* mesh);
 
 // Largest per-axis quantization step of a decoded file (section 6.4).
 double max_quantization_step(const QuantizationInfo& q);

@@ -51,12 +51,10 @@ static int write_canonical(const CommandLine& cl, const DecodedFile& file, const
 // (stderr) unless --quiet. Returns -1 to go on, else the exit code.
 static int drop_parts(const CommandLine& cl, const std::string& input, const std::string& output, Mesh* mesh) {
   const bool quiet = cl.has("--quiet");
-  for (const auto& [option, name] : cl.options) {
-    if (option != "--drop") continue;
-    if (!drop_named(mesh, name))
-      return usage_error("decode", "--drop " + name + ": " + input + " has no attribute or face labels of that name");
-    if (!quiet) std::fprintf(stderr, "dropped (--drop %s): %s: %s\n", name.c_str(), input.c_str(), name.c_str());
-  }
+  std::vector<std::string> named;
+  for (const auto& [option, name] : cl.options)
+    if (option == "--drop") named.push_back(name);
+  if (int rc = drop_each_named("decode", named, input, quiet, mesh); rc >= 0) return rc;
   const std::vector<tools::UnwritablePart> parts = tools::unwritable_parts(*mesh, tools::mesh_format_of(output));
   if (parts.empty()) return -1;
   if (!cl.has("--drop-unsupported"))

@@ -598,11 +598,7 @@ int refuse_dropping(const EncodeArgs& args, const std::vector<std::string>& note
 // those files would lose without either is an error naming the flags.
 // Returns -1 to go on, else the exit code.
 int drop_attributes(const EncodeArgs& args, Mesh* mesh) {
-  for (const std::string& name : args.drop) {
-    if (!drop_named(mesh, name))
-      return usage_error("encode", "--drop " + name + ": " + args.input + " has no attribute or face labels of that name");
-    if (!args.quiet) std::fprintf(stderr, "dropped (--drop %s): %s: %s\n", name.c_str(), args.input.c_str(), name.c_str());
-  }
+  if (int rc = drop_each_named("encode", args.drop, args.input, args.quiet, mesh); rc >= 0) return rc;
   const bool carries_none = args.progressive || args.options.gim.size > 0;
   if (!carries_none || (mesh->attributes.empty() && mesh->face_labels.empty())) return -1;
   std::string names;

@@ -110,6 +110,20 @@ Status try_candidate(const ProgressiveEncoder& encoder, const EncodeOptions& opt
   return consider(&c, search, go_larger);
 }
 
+// `refinements` steps of a bisection of the step scale between `passed`
+// (within the target) and `missed` (not), each at their geometric mean;
+// try_scale(scale, &within) codes a candidate and says which side it is on.
+template <class TryScale>
+Status refine_scale(double passed, double missed, int refinements, TryScale try_scale) {
+  for (int step = 0; step < refinements && missed != passed; ++step) {
+    const double scale = std::sqrt(passed * missed);
+    bool within = false;
+    if (Status st = try_scale(scale, &within); !st.ok()) return st;
+    (within ? passed : missed) = scale;
+  }
+  return Status::Ok();
+}
+
 // Error target, one K. Its cheapest file first (fewest bits, largest
 // scale): no smaller than the best, and K cannot win. Then its most
 // accurate (most bits, smallest scale) decides whether K can reach the
@@ -148,12 +162,12 @@ Status search_error(const ProgressiveEncoder& encoder, const EncodeOptions& opti
     // Between the last scale that did not miss (hi) and the first that did
     // (lo), the search goes on in halves of the ratio (geometric means).
     if (hi < 0) continue;
-    double passed = s.step_scales[size_t(hi)], missed = s.step_scales[size_t(lo)];
-    for (int step = 0; step < s.refinements && missed > passed; ++step) {
-      const double scale = std::sqrt(passed * missed);
-      if (Status st = try_candidate(encoder, options, bits, scale, search, &go_larger); !st.ok()) return st;
-      (go_larger ? passed : missed) = scale;
-    }
+    if (Status st = refine_scale(s.step_scales[size_t(hi)], s.step_scales[size_t(lo)], s.refinements,
+                                 [&](double scale, bool* within) {
+                                   return try_candidate(encoder, options, bits, scale, search, within);
+                                 });
+        !st.ok())
+      return st;
   }
   return Status::Ok();
 }
@@ -186,15 +200,16 @@ Status search_size(const ProgressiveEncoder& encoder, const EncodeOptions& optio
       if (fits(&c)) hi = mid - 1; else lo = mid + 1;
     }
     if (!found) continue;
-    if (lo > 0) {
-      double passed = s.step_scales[size_t(lo)], missed = s.step_scales[size_t(lo - 1)];
-      for (int step = 0; step < s.refinements; ++step) {
-        const double scale = std::sqrt(passed * missed);
-        Candidate c;
-        if (Status st = code_candidate(encoder, options, bits, scale, &c); !st.ok()) return st;
-        (fits(&c) ? passed : missed) = scale;
-      }
-    }
+    if (lo > 0)
+      if (Status st = refine_scale(s.step_scales[size_t(lo)], s.step_scales[size_t(lo - 1)], s.refinements,
+                                   [&](double scale, bool* within) {
+                                     Candidate c;
+                                     const Status coded = code_candidate(encoder, options, bits, scale, &c);
+                                     *within = coded.ok() && fits(&c);
+                                     return coded;
+                                   });
+          !st.ok())
+        return st;
     if (Status st = search->measure_and_keep(&fitting); !st.ok()) return st;
   }
   return Status::Ok();
