@@ -22,6 +22,7 @@
 #include "geometry/loop_fitting.h"
 #include "geometry/loop_remesher.h"
 #include "geometry/quadric_simplifier.h"
+#include "geometry/surface_rim.h"
 #include "geometry/triangle_bvh.h"
 #include "mesh_generators.h"
 #include "mesh_io.h"
@@ -344,7 +345,7 @@ TEST(LoopRemesh, RandomMeshesOfAnyTopologyThroughThePipeline) {
     EXPECT_EQ(st.topology.genus(), int64_t(info.components) * info.genus_per_component) << seed;
     LoopMesh base = simplified.mesh;
     const TriangleBvh bvh(loop_mesh_triangles(input));
-    ASSERT_TRUE(fit_control_mesh(bvh, &base, 5, nullptr).ok()) << seed;
+    ASSERT_TRUE(fit_control_mesh(bvh, nullptr, &base, 5, nullptr).ok()) << seed;
     std::vector<LoopMesh> control;
     RemeshStats rs;
     ASSERT_TRUE(remesh(input, bvh, base, 2, &control, &rs).ok()) << seed;
@@ -426,26 +427,134 @@ TEST(LoopRemesh, LimitNormalsOfAFlatGridPointUpAndOfASphereOutward) {
 
 // ---------------------------------------------------------------- fitting and remesh
 
+// The Loop limit positions of a control mesh (3 per vertex), and its edges.
+std::vector<double> limits_of(const LoopMesh& control, LoopEdges* edges) {
+  EXPECT_TRUE(build_loop_edges(control, edges).ok());
+  std::vector<double> limits;
+  loop_limit_positions(control, *edges, &limits);
+  return limits;
+}
+
 TEST(LoopRemesh, FittingBringsTheLimitSurfaceToTheOriginal) {
   for (const LoopMesh& original : {sphere(), loop_mesh_of(tools::make_torus(64, 32))}) {
     LoopMesh control = simplify_and_check(original, 150, "fitting input").mesh;
     const TriangleBvh bvh(loop_mesh_triangles(original));
     FitStats st;
-    ASSERT_TRUE(fit_control_mesh(bvh, &control, 10, &st).ok());
+    ASSERT_TRUE(fit_control_mesh(bvh, nullptr, &control, 10, &st).ok());
     EXPECT_GT(st.iterations, 0);
     EXPECT_LE(st.iterations, 10);
     EXPECT_LT(st.final_rms, 0.2 * st.initial_rms);
     EXPECT_LT(st.final_max, 0.5 * st.initial_max);
     // Recomputed independently of the stats: limit positions against the surface.
     LoopEdges e;
-    ASSERT_TRUE(build_loop_edges(control, &e).ok());
-    std::vector<double> limits;
-    loop_limit_positions(control, e, &limits);
+    const std::vector<double> limits = limits_of(control, &e);
     double worst = 0;
     for (uint32_t v = 0; v < control.vertex_count(); ++v)
       worst = std::max(worst, std::sqrt(bvh.closest_point(at(limits, v)).distance_squared));
     EXPECT_NEAR(worst, st.final_max, 1e-12);
   }
+}
+
+// The faces of m whose corners all satisfy keep(x, y, z).
+template <class Keep>
+LoopMesh faces_where(const LoopMesh& m, Keep keep) {
+  LoopMesh out = m;
+  out.triangles.clear();
+  for (size_t f = 0; f < m.face_count(); ++f) {
+    bool all = true;
+    for (int k = 0; k < 3; ++k) {
+      const Vec3d p = at(m.positions, m.triangles[3 * f + k]);
+      all = all && keep(p.x, p.y, p.z);
+    }
+    if (all) out.triangles.insert(out.triangles.end(), &m.triangles[3 * f], &m.triangles[3 * f + 3]);
+  }
+  return out;
+}
+
+// m with its unreferenced vertices left out (the others keep their order).
+LoopMesh without_unreferenced(const LoopMesh& m) {
+  std::vector<uint32_t> label(m.vertex_count(), kNoVertex);
+  for (uint32_t v : m.triangles) label[v] = 0;
+  LoopMesh out;
+  for (uint32_t v = 0; v < m.vertex_count(); ++v)
+    if (label[v] == 0) {
+      label[v] = out.vertex_count();
+      out.positions.insert(out.positions.end(), &m.positions[3 * size_t(v)], &m.positions[3 * size_t(v) + 3]);
+    }
+  for (uint32_t v : m.triangles) out.triangles.push_back(label[v]);
+  return out;
+}
+
+// The largest distance from a boundary vertex's limit position to the rim.
+double boundary_limits_off_rim(const LoopMesh& control, const SurfaceRim& rim) {
+  LoopEdges e;
+  const std::vector<double> limits = limits_of(control, &e);
+  double worst = 0;
+  for (uint32_t v = 0; v < control.vertex_count(); ++v)
+    if (e.boundary_prev[v] != kNoVertex) {
+      const Vec3d p = at(limits, v);
+      worst = std::max(worst, norm(rim.nearest_on_loop(rim.nearest_loop(p), p) - p));
+    }
+  return worst;
+}
+
+// Surface_rim.h: the boundary's B-spline limit curve of a fitted base lies on
+// the original's boundary; fitted along the normals only, it falls inside
+// the hole (a cubic B-spline cuts the corners of its control polygon).
+TEST(LoopRemesh, FittingPutsTheBoundaryCurveOnTheOriginalsBoundary) {
+  // The unit sphere without its cap above z = 0.5: one rim, a circle of
+  // radius 0.87 as far as the triangles allow.
+  const LoopMesh original = faces_where(sphere(), [](double, double, double z) { return z <= 0.5; });
+  const SurfaceRim rim(original);
+  ASSERT_EQ(rim.loop_count(), 1u);
+  const LoopMesh simplified = simplify_and_check(original, 150, "capless sphere").mesh;
+  const TriangleBvh bvh(loop_mesh_triangles(original));
+  LoopMesh along_normals = simplified, onto_rim = simplified;
+  FitStats normals_only, with_rim;
+  ASSERT_TRUE(fit_control_mesh(bvh, nullptr, &along_normals, 10, &normals_only).ok());
+  ASSERT_TRUE(fit_control_mesh(bvh, &rim, &onto_rim, 10, &with_rim).ok());
+  EXPECT_EQ(normals_only.rim_targets, 0u);
+  EXPECT_GE(with_rim.rim_targets, 3u);
+  const double off_without = boundary_limits_off_rim(along_normals, rim);
+  const double off_with = boundary_limits_off_rim(onto_rim, rim);
+  EXPECT_GT(off_without, 1e-3);
+  EXPECT_LT(off_with, 1e-4);
+  EXPECT_LT(off_with, 0.05 * off_without);
+}
+
+// A U: a grid with a slot two cells wide down from its top edge (the column
+// of vertices at x = 0 left out above y = -0.5). The slot's
+// two sides are stretches of one rim loop, 0.1 apart; a limit point in the
+// slot, nearer the other side, is taken back to its own vertex's anchor.
+TEST(LoopRemesh, RimTargetsStayOnTheirOwnStretchOfTheRim) {
+  LoopMesh flat = loop_mesh_of(tools::make_grid(40, 40));
+  for (size_t i = 2; i < flat.positions.size(); i += 3) flat.positions[i] = 0;
+  const LoopMesh u = without_unreferenced(
+      faces_where(flat, [](double x, double y, double) { return !(std::fabs(x) < 0.04 && y > -0.5); }));
+  const SurfaceRim rim(u);
+  ASSERT_EQ(rim.loop_count(), 1u);
+  LoopEdges e;
+  ASSERT_TRUE(build_loop_edges(u, &e).ok());
+  const RimAnchors anchors = rim_anchors(rim, u, e);
+  uint32_t left = kNoVertex;  // the vertex at (-0.05, 0.5), on the slot's left side
+  for (uint32_t v = 0; v < u.vertex_count(); ++v) {
+    const Vec3d p = at(u.positions, v);
+    if (std::fabs(p.x + 0.05) < 1e-9 && std::fabs(p.y - 0.5) < 1e-9) left = v;
+  }
+  ASSERT_NE(left, kNoVertex);
+  ASSERT_NE(anchors.loop[left], kNoVertex);
+  EXPECT_LT(norm(anchors.anchor[left] - at(u.positions, left)), 1e-12);
+  // Grid spacing 0.05 (binary32 positions): reach 0.3 * 0.05.
+  EXPECT_NEAR(anchors.reach2[left], kRimReach * kRimReach * 0.05 * 0.05, 1e-9);
+  const Vec3d own = at(u.positions, left);
+  const Vec3d near_other_side = rim_target(rim, anchors, left, {0.04, 0.5, 0});
+  EXPECT_LT(norm(near_other_side - own), 1e-12);
+  const Vec3d near_own_side = rim_target(rim, anchors, left, {-0.045, 0.51, 0});
+  EXPECT_LT(norm(near_own_side - Vec3d{own.x, 0.51, 0}), 1e-12);
+  // Interior vertices have no anchor.
+  uint32_t interior = 0;
+  while (e.boundary_prev[interior] != kNoVertex) ++interior;
+  EXPECT_EQ(anchors.loop[interior], kNoVertex);
 }
 
 // Against loop_subdivide: the limit position of a vertex is where repeated
@@ -487,7 +596,7 @@ TEST(LoopRemesh, RemeshOfASphereLiesOnTheSphere) {
   const LoopMesh original = sphere();
   const TriangleBvh bvh(loop_mesh_triangles(original));
   LoopMesh base = simplify_and_check(original, 6912 / 64, "sphere").mesh;
-  ASSERT_TRUE(fit_control_mesh(bvh, &base, 10, nullptr).ok());
+  ASSERT_TRUE(fit_control_mesh(bvh, nullptr, &base, 10, nullptr).ok());
   std::vector<LoopMesh> control;
   RemeshStats st;
   ASSERT_TRUE(remesh(original, bvh, base, 3, &control, &st).ok());
@@ -593,7 +702,7 @@ TEST(LoopRemesh, CorpusPipelineKeepsTopologyAndLandsOnTheSurface) {
     const TriangleBvh bvh(loop_mesh_triangles(original));
     LoopMesh base = s.mesh;
     FitStats fit;
-    ASSERT_TRUE(fit_control_mesh(bvh, &base, 10, &fit).ok());
+    ASSERT_TRUE(fit_control_mesh(bvh, nullptr, &base, 10, &fit).ok());
     const double fit_seconds = std::chrono::duration<double>(Clock::now() - start).count();
     EXPECT_LT(fit.final_rms, fit.initial_rms) << x.name;
     std::vector<LoopMesh> control;

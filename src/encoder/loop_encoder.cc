@@ -148,7 +148,8 @@ Status ProgressiveEncoder::prepare(const Mesh& mesh, const EncodeOptions& option
   start = Clock::now();
   p->surface = std::make_unique<TriangleBvh>(loop_mesh_triangles(original));
   FitStats fit_stats;
-  if (Status s = fit_control_mesh(*p->surface, &base, 10, &fit_stats); !s.ok()) return s;
+  const SurfaceRim rim(original);
+  if (Status s = fit_control_mesh(*p->surface, &rim, &base, 10, &fit_stats); !s.ok()) return s;
   ls.seconds_fit = seconds_since(start);
   report(options, "remesh", 0.5);
   start = Clock::now();

@@ -190,7 +190,8 @@ void loop_limit_positions(const LoopMesh& mesh, const LoopEdges& edges, std::vec
   }
 }
 
-Status fit_control_mesh(const TriangleBvh& original, LoopMesh* control, int iterations, FitStats* stats) {
+Status fit_control_mesh(const TriangleBvh& original, const SurfaceRim* rim, LoopMesh* control, int iterations,
+                        FitStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   if (original.size() == 0) return Status(ErrorCode::kInvalidArgument, "fitting to an empty surface");
   LoopEdges edges;
@@ -203,17 +204,22 @@ Status fit_control_mesh(const TriangleBvh& original, LoopMesh* control, int iter
   const Distances before = distances(original, limits);
   st.initial_rms = before.rms, st.initial_max = before.max;
   const double reach = kNormalReach * original.bbox_diagonal();
+  const RimAnchors anchors = rim ? rim_anchors(*rim, *control, edges) : RimAnchors{};
   for (int pass = 0; pass < iterations; ++pass) {
     limit_normals_all_vertices(*control, edges, &normals);
     double largest = 0;
-    st.line_hits = st.fallbacks = 0;
+    st.line_hits = st.fallbacks = st.rim_targets = 0;
     for (uint32_t v = 0; v < control->vertex_count(); ++v) {
       const Vec3d limit = vertex(limits, v);
       Vec3d target;
-      if (onto_surface(original, limit, vertex(normals, v), reach, &target))
+      if (!anchors.loop.empty() && anchors.loop[v] != kNoVertex) {
+        target = rim_target(*rim, anchors, v, limit);
+        ++st.rim_targets;
+      } else if (onto_surface(original, limit, vertex(normals, v), reach, &target)) {
         ++st.line_hits;
-      else
+      } else {
         ++st.fallbacks;
+      }
       const Vec3d move = target - limit;
       largest = std::max(largest, dot(move, move));
       control->positions[3 * size_t(v)] += move.x;

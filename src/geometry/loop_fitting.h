@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "decoder/loop_subdivision.h"
+#include "geometry/surface_rim.h"
 #include "geometry/triangle_bvh.h"
 #include "qmc/status.h"
 
@@ -37,6 +38,7 @@ struct FitStats {
   double last_max_move = 0;    // largest vertex move of the last pass
   uint32_t line_hits = 0;      // of the last pass: targets along the limit normal
   uint32_t fallbacks = 0;      //   and closest points instead
+  uint32_t rim_targets = 0;    //   and points of the rim instead (boundary vertices, rim_target)
   double seconds = 0;
 };
 
@@ -53,10 +55,20 @@ struct FitStats {
 // displacements 10-25% smaller; the closest point stays the fallback where
 // the line misses, e.g. at holes.
 //
+// With a `rim` (the original's boundary, surface_rim.h) that is not empty,
+// each boundary vertex's target is instead rim_target's point of the rim
+// (anchors decided once, before the first pass): the limit boundary curve
+// then runs along the original's boundary, which nothing after this step can
+// correct. On stanford-bunny (5 holes, 2 levels) the finest level's Hausdorff
+// distance fell from 8.3e-3 to 2.8e-3 of the diagonal, and with the finest
+// step 4 times coarser the file was smaller and more accurate than before
+// (20,012 bytes at an L2 of 9.2e-5 of the diagonal, against 21,051 at 1.05e-4).
+//
 // `control` must be a mesh build_loop_edges accepts (anything else is
 // returned as its error) and `original` non-empty (else kInvalidArgument).
-// Connectivity is unchanged; stats may be null.
-Status fit_control_mesh(const TriangleBvh& original, LoopMesh* control, int iterations, FitStats* stats);
+// Connectivity is unchanged; stats and rim may be null.
+Status fit_control_mesh(const TriangleBvh& original, const SurfaceRim* rim, LoopMesh* control, int iterations,
+                        FitStats* stats);
 
 // The finest level's edge points off the surface, so that the piecewise-
 // linear level fits the input in the least-squares sense instead of
