@@ -17,10 +17,6 @@ constexpr int kDefaultIterations = 10;
 // quantization steps are far coarser.
 constexpr double kStopMove = 1e-6;
 
-Vec3d vertex(const std::vector<double>& positions, uint32_t v) {
-  return {positions[3 * size_t(v)], positions[3 * size_t(v) + 1], positions[3 * size_t(v) + 2]};
-}
-
 struct Distances {
   double rms = 0, max = 0;
 };
@@ -31,7 +27,7 @@ Distances distances(const TriangleBvh& surface, const std::vector<double>& limit
   Distances d;
   double sum = 0;
   for (uint32_t v = 0; v < n; ++v) {
-    const double d2 = surface.closest_point(vertex(limits, v)).distance_squared;
+    const double d2 = surface.closest_point(position_of(limits, v)).distance_squared;
     sum += d2;
     d.max = std::max(d.max, d2);
   }
@@ -69,8 +65,9 @@ LevelSamples level_samples(const TriangleBvh& surface, double reach, const LoopM
   s.area.resize(faces);
   s.face.resize(faces);
   for (size_t f = 0; f < faces; ++f) {
-    const Vec3d a = vertex(level.positions, level.triangles[3 * f]), b = vertex(level.positions, level.triangles[3 * f + 1]),
-                c = vertex(level.positions, level.triangles[3 * f + 2]);
+    const Vec3d a = position_of(level.positions, level.triangles[3 * f]),
+                b = position_of(level.positions, level.triangles[3 * f + 1]),
+                c = position_of(level.positions, level.triangles[3 * f + 2]);
     const Vec3d n = cross(b - a, c - a);
     s.area[f] = 0.5 * std::sqrt(dot(n, n));
     face_normal[f] = unit(n);
@@ -79,12 +76,12 @@ LevelSamples level_samples(const TriangleBvh& surface, double reach, const LoopM
   }
   s.vertex.resize(level.vertex_count());
   for (uint32_t v = 0; v < level.vertex_count(); ++v)
-    s.vertex[v] = distance_along(surface, reach, vertex(level.positions, v), unit(vertex_normal[v]));
+    s.vertex[v] = distance_along(surface, reach, position_of(level.positions, v), unit(vertex_normal[v]));
   s.edge.resize(edges.edge_count());
   for (uint32_t e = 0; e < edges.edge_count(); ++e) {
     Vec3d n = face_normal[edges.face0[e]];
     if (!edges.is_boundary(e)) n = n + face_normal[edges.face1[e]];
-    const Vec3d mid = (vertex(level.positions, edges.a[e]) + vertex(level.positions, edges.b[e])) * 0.5;
+    const Vec3d mid = (position_of(level.positions, edges.a[e]) + position_of(level.positions, edges.b[e])) * 0.5;
     s.edge[e] = distance_along(surface, reach, mid, unit(n));
   }
   return s;
@@ -115,8 +112,8 @@ void add_sample(double area_weight, double distance, double bound, uint32_t v, M
 double longest_edge(const LoopMesh& level, size_t f) {
   double longest = 0;
   for (int k = 0; k < 3; ++k) {
-    const Vec3d d = vertex(level.positions, level.triangles[3 * f + k]) -
-                    vertex(level.positions, level.triangles[3 * f + (k + 1) % 3]);
+    const Vec3d d = position_of(level.positions, level.triangles[3 * f + k]) -
+                    position_of(level.positions, level.triangles[3 * f + (k + 1) % 3]);
     longest = std::max(longest, dot(d, d));
   }
   return std::sqrt(longest);
@@ -150,10 +147,10 @@ void fit_edge_points_in_the_mean(const TriangleBvh& surface, double reach, uint3
     const MeanDistance m = mean_distances(*level, edges, level_samples(surface, reach, *level, edges));
     for (uint32_t e = 0; e < edge_points; ++e) {
       const uint32_t v = first_edge_point + e;
-      const Vec3d d = vertex(directions, e);
+      const Vec3d d = position_of(directions, e);
       const double length = std::sqrt(dot(d, d));
       if (!(m.weight[v] > 0) || !(length > 0)) continue;
-      const Vec3d moved = vertex(level->positions, v) + d * (m.sum[v] / m.weight[v] / length);
+      const Vec3d moved = position_of(level->positions, v) + d * (m.sum[v] / m.weight[v] / length);
       level->positions[3 * size_t(v)] = moved.x;
       level->positions[3 * size_t(v) + 1] = moved.y;
       level->positions[3 * size_t(v) + 2] = moved.z;
@@ -164,8 +161,9 @@ void fit_edge_points_in_the_mean(const TriangleBvh& surface, double reach, uint3
 std::vector<Triangle3d> loop_mesh_triangles(const LoopMesh& mesh) {
   std::vector<Triangle3d> out(mesh.face_count());
   for (size_t f = 0; f < out.size(); ++f)
-    out[f] = {vertex(mesh.positions, mesh.triangles[3 * f]), vertex(mesh.positions, mesh.triangles[3 * f + 1]),
-              vertex(mesh.positions, mesh.triangles[3 * f + 2])};
+    out[f] = {position_of(mesh.positions, mesh.triangles[3 * f]),
+              position_of(mesh.positions, mesh.triangles[3 * f + 1]),
+              position_of(mesh.positions, mesh.triangles[3 * f + 2])};
   return out;
 }
 
@@ -173,17 +171,18 @@ void loop_limit_positions(const LoopMesh& mesh, const LoopEdges& edges, std::vec
   const uint32_t n = mesh.vertex_count();
   limits->resize(3 * size_t(n));
   for (uint32_t v = 0; v < n; ++v) {
-    const Vec3d p = vertex(mesh.positions, v);
+    const Vec3d p = position_of(mesh.positions, v);
     Vec3d limit;
     if (edges.boundary_prev[v] != kNoVertex) {
-      limit = (p * 4 + vertex(mesh.positions, edges.boundary_prev[v]) + vertex(mesh.positions, edges.boundary_next[v])) *
+      limit = (p * 4 + position_of(mesh.positions, edges.boundary_prev[v]) +
+               position_of(mesh.positions, edges.boundary_next[v])) *
               (1.0 / 6);
     } else {
       const uint32_t valence = edges.valence[v];
       const double w = 3 / (8 * loop_beta(valence));
       Vec3d sum;
       for (uint32_t k = edges.neighbour_offset[v]; k < edges.neighbour_offset[v + 1]; ++k)
-        sum = sum + vertex(mesh.positions, edges.neighbours[k]);
+        sum = sum + position_of(mesh.positions, edges.neighbours[k]);
       limit = (p * w + sum) * (1 / (w + valence));
     }
     (*limits)[3 * size_t(v)] = limit.x, (*limits)[3 * size_t(v) + 1] = limit.y, (*limits)[3 * size_t(v) + 2] = limit.z;
@@ -210,12 +209,12 @@ Status fit_control_mesh(const TriangleBvh& original, const SurfaceRim* rim, Loop
     double largest = 0;
     st.line_hits = st.fallbacks = st.rim_targets = 0;
     for (uint32_t v = 0; v < control->vertex_count(); ++v) {
-      const Vec3d limit = vertex(limits, v);
+      const Vec3d limit = position_of(limits, v);
       Vec3d target;
       if (!anchors.loop.empty() && anchors.loop[v] != kNoVertex) {
         target = rim_target(*rim, anchors, v, limit);
         ++st.rim_targets;
-      } else if (onto_surface(original, limit, vertex(normals, v), reach, &target)) {
+      } else if (onto_surface(original, limit, position_of(normals, v), reach, &target)) {
         ++st.line_hits;
       } else {
         ++st.fallbacks;

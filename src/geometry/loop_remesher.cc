@@ -20,10 +20,6 @@ constexpr double kInverseTolerance = 1e-12;
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-Vec3d vertex(const std::vector<double>& positions, uint32_t v) {
-  return {positions[3 * size_t(v)], positions[3 * size_t(v) + 1], positions[3 * size_t(v) + 2]};
-}
-
 void store(std::vector<double>* positions, uint32_t v, const Vec3d& p) {
   (*positions)[3 * size_t(v)] = p.x, (*positions)[3 * size_t(v) + 1] = p.y, (*positions)[3 * size_t(v) + 2] = p.z;
 }
@@ -76,12 +72,12 @@ void ordered_ring(const CornerPairs& c, uint32_t v, bool boundary, std::vector<u
 }
 
 Vec3d interior_normal(const std::vector<double>& p, uint32_t v, const std::vector<uint32_t>& ring) {
-  const Vec3d centre = vertex(p, v);
+  const Vec3d centre = position_of(p, v);
   const double n = double(ring.size());
   Vec3d u, w;
   // Relative to v: the weights sum to 0, and small differences keep their bits.
   for (size_t j = 0; j < ring.size(); ++j) {
-    const Vec3d d = vertex(p, ring[j]) - centre;
+    const Vec3d d = position_of(p, ring[j]) - centre;
     u = u + d * std::cos(2 * kPi * double(j) / n);
     w = w + d * std::sin(2 * kPi * double(j) / n);
   }
@@ -89,10 +85,10 @@ Vec3d interior_normal(const std::vector<double>& p, uint32_t v, const std::vecto
 }
 
 Vec3d boundary_normal(const std::vector<double>& p, uint32_t v, const std::vector<uint32_t>& ring) {
-  const Vec3d centre = vertex(p, v);
+  const Vec3d centre = position_of(p, v);
   const size_t k = ring.size() - 1;
   if (k == 0) return {};
-  auto at = [&](size_t i) { return vertex(p, ring[i]) - centre; };
+  auto at = [&](size_t i) { return position_of(p, ring[i]) - centre; };
   const Vec3d along = at(0) - at(k);
   Vec3d across;
   if (k == 1) {
@@ -110,9 +106,10 @@ Vec3d boundary_normal(const std::vector<double>& p, uint32_t v, const std::vecto
 
 Vec3d face_normal_sum(const std::vector<double>& p, uint32_t v, const CornerPairs& c) {
   Vec3d sum;
-  const Vec3d centre = vertex(p, v);
+  const Vec3d centre = position_of(p, v);
   for (uint32_t i = c.offset[v]; i < c.offset[v + 1]; ++i)
-    sum = sum + cross(vertex(p, c.pairs[2 * size_t(i)]) - centre, vertex(p, c.pairs[2 * size_t(i) + 1]) - centre);
+    sum = sum + cross(position_of(p, c.pairs[2 * size_t(i)]) - centre,
+                      position_of(p, c.pairs[2 * size_t(i) + 1]) - centre);
   return sum;
 }
 
@@ -122,9 +119,9 @@ void displace(const TriangleBvh& bvh, const LoopEdges& edges, LoopMesh* fine, Re
   limit_normals_all_vertices(*fine, edges, &normals);
   const double reach = kNormalReach * bvh.bbox_diagonal();
   for (uint32_t v = 0; v < fine->vertex_count(); ++v) {
-    const Vec3d p = vertex(fine->positions, v);
+    const Vec3d p = position_of(fine->positions, v);
     Vec3d target;
-    if (onto_surface(bvh, p, vertex(normals, v), reach, &target))
+    if (onto_surface(bvh, p, position_of(normals, v), reach, &target))
       ++st->line_hits;
     else
       ++st->fallbacks;
@@ -190,8 +187,10 @@ int inverse_loop_vertex_points(const LoopEdges& e, const std::vector<double>& ve
                                 largest);
   auto neighbour_sum = [&](uint32_t v) {
     Vec3d s;
-    if (e.boundary_prev[v] != kNoVertex) return vertex(*x, e.boundary_prev[v]) + vertex(*x, e.boundary_next[v]);
-    for (uint32_t k = e.neighbour_offset[v]; k < e.neighbour_offset[v + 1]; ++k) s = s + vertex(*x, e.neighbours[k]);
+    if (e.boundary_prev[v] != kNoVertex)
+      return position_of(*x, e.boundary_prev[v]) + position_of(*x, e.boundary_next[v]);
+    for (uint32_t k = e.neighbour_offset[v]; k < e.neighbour_offset[v + 1]; ++k)
+      s = s + position_of(*x, e.neighbours[k]);
     return s;
   };
   // Rows with valence 3 (n beta = 9/16) or 2 are not diagonally dominant, so
@@ -203,12 +202,12 @@ int inverse_loop_vertex_points(const LoopEdges& e, const std::vector<double>& ve
   while (sweep < max_sweeps) {
     ++sweep;
     for (uint32_t v = 0; v < n; ++v) {
-      const Vec3d solved = (vertex(vertex_points, v) - neighbour_sum(v) * off[v]) * (1 / diagonal[v]);
-      store(x, v, vertex(*x, v) + (solved - vertex(*x, v)) * omega);
+      const Vec3d solved = (position_of(vertex_points, v) - neighbour_sum(v) * off[v]) * (1 / diagonal[v]);
+      store(x, v, position_of(*x, v) + (solved - position_of(*x, v)) * omega);
     }
     double worst = 0;
     for (uint32_t v = 0; v < n; ++v) {
-      const Vec3d r = vertex(*x, v) * diagonal[v] + neighbour_sum(v) * off[v] - vertex(vertex_points, v);
+      const Vec3d r = position_of(*x, v) * diagonal[v] + neighbour_sum(v) * off[v] - position_of(vertex_points, v);
       worst = std::max({worst, std::fabs(r.x), std::fabs(r.y), std::fabs(r.z)});
     }
     *residual = scale > 0 ? worst / scale : worst;

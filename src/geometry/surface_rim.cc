@@ -10,10 +10,6 @@
 namespace qmc {
 namespace {
 
-Vec3d position(const std::vector<double>& positions, uint32_t v) {
-  return {positions[3 * size_t(v)], positions[3 * size_t(v) + 1], positions[3 * size_t(v) + 2]};
-}
-
 // The directed edges (a, b) of faces whose reverse (b, a) is in no face.
 std::vector<std::pair<uint32_t, uint32_t>> boundary_edges(const LoopMesh& mesh) {
   std::vector<std::pair<uint32_t, uint32_t>> directed;
@@ -52,7 +48,8 @@ SurfaceRim::SurfaceRim(const LoopMesh& mesh) {
   for (const auto& [a, b] : edges) {
     const auto [it, added] = index_of_root.insert({loop.find(a), uint32_t(per_loop.size())});
     if (added) per_loop.emplace_back();
-    const Triangle3d segment{position(mesh.positions, a), position(mesh.positions, b), position(mesh.positions, b)};
+    const Vec3d from = position_of(mesh.positions, a), to = position_of(mesh.positions, b);
+    const Triangle3d segment{from, to, to};
     per_loop[it->second].push_back(segment);
     all.push_back(segment);
     loop_of_edge_.push_back(it->second);
@@ -75,7 +72,7 @@ RimAnchors rim_anchors(const SurfaceRim& rim, const LoopMesh& control, const Loo
   const std::vector<uint32_t> loop_of = control_loops(control, edges);
   std::map<std::pair<uint32_t, uint32_t>, uint32_t> votes;  // (control loop, rim loop) -> vertices
   for (uint32_t v = 0; v < n; ++v)
-    if (loop_of[v] != kNoVertex) ++votes[{loop_of[v], rim.nearest_loop(position(control.positions, v))}];
+    if (loop_of[v] != kNoVertex) ++votes[{loop_of[v], rim.nearest_loop(position_of(control.positions, v))}];
   std::map<uint32_t, std::pair<uint32_t, uint32_t>> winner;  // control loop -> (votes, rim loop)
   for (const auto& [key, count] : votes) {
     const auto [it, added] = winner.insert({key.first, {count, key.second}});
@@ -84,7 +81,7 @@ RimAnchors rim_anchors(const SurfaceRim& rim, const LoopMesh& control, const Loo
   for (uint32_t v = 0; v < n; ++v) {
     if (loop_of[v] == kNoVertex) continue;
     a.loop[v] = winner[loop_of[v]].second;
-    a.anchor[v] = rim.nearest_on_loop(a.loop[v], position(control.positions, v));
+    a.anchor[v] = rim.nearest_on_loop(a.loop[v], position_of(control.positions, v));
   }
   for (uint32_t v = 0; v < n; ++v) {
     if (loop_of[v] == kNoVertex) continue;

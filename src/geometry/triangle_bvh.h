@@ -32,6 +32,10 @@ inline Vec3d cross(const Vec3d& u, const Vec3d& v) {
   return {u.y * v.z - u.z * v.y, u.z * v.x - u.x * v.z, u.x * v.y - u.y * v.x};
 }
 inline double component(const Vec3d& v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
+// Vertex v of a flat array of positions, three per vertex (LoopMesh::positions).
+inline Vec3d position_of(const std::vector<double>& positions, uint32_t v) {
+  return {positions[3 * size_t(v)], positions[3 * size_t(v) + 1], positions[3 * size_t(v) + 2]};
+}
 
 struct Triangle3d {
   Vec3d a, b, c;
