@@ -47,7 +47,7 @@ check compare-missing 3 "$qmc" compare "$work/torus.obj" "$work/nope.obj"
 check info 0 "$qmc" info "$work/torus.qmc"
 contains info-chunks "$work/out" "CONN"
 contains info-method "$work/out" "polygon coder (spec 5.4)"
-contains info-predicted "$work/out" "predicted (spec 14, method 3: graded start), uniform grid"
+contains info-predicted "$work/out" "predicted (spec 14, method 5: geometry order, quads' twist: graded start), uniform grid"
 check info-json 0 "$qmc" info --json "$work/torus.qmc"
 contains info-json-valid "$work/out" '"connectivity":"polygon"'
 # Spec 14.1's grids as a user states them.
@@ -61,13 +61,20 @@ check encode-per-axis-deltas 0 "$qmc" encode "$work/torus.obj" "$work/deltas.qmc
 contains encode-per-axis-deltas-reported "$work/out" "deltas (spec 6), per-axis grid"
 check info-deltas 0 "$qmc" info "$work/deltas.qmc"
 contains info-deltas-method "$work/out" "deltas (spec 6), 12 bits/axis"
-# --format 1.N: files older decoders read (spec 11: 1.7 with the label order instead of POSN method 4, 1.6
-# with method 1 for 3, 1.5 also without polygon coding 7, 1.4 also without predicted positions).
-"$meshgen" torus 40 30 "$work/torus1200.obj" >/dev/null  # 1,200 vertices: method 4 whatever its size (14.5)
-check format-1.8 0 "$qmc" encode "$work/torus1200.obj" "$work/f18.qmc" --quiet
+# --format 1.N: files older decoders read (spec 11: 1.8 with POSN method 4 instead of 5, 1.7 with the
+# label order instead of method 4, 1.6 with method 1 for 3, 1.5 also without polygon coding 7, 1.4 also
+# without predicted positions).
+"$meshgen" torus 40 30 "$work/torus1200.obj" >/dev/null  # 1,200 vertices of quads: method 4 or 5, never 1 (14.5)
+check format-1.9 0 "$qmc" encode "$work/torus1200.obj" "$work/f19.qmc" --quiet
+check format-1.9-info 0 "$qmc" info "$work/f19.qmc"
+contains format-1.9-written "$work/out" "format 1.9"
+contains format-1.9-method-5 "$work/out" "predicted (spec 14, method 5: geometry order, quads' twist)"
+check format-1.8 0 "$qmc" encode "$work/torus1200.obj" "$work/f18.qmc" --format 1.8 --quiet
 check format-1.8-info 0 "$qmc" info "$work/f18.qmc"
 contains format-1.8-written "$work/out" "format 1.8"
 contains format-1.8-method-4 "$work/out" "predicted (spec 14, method 4: geometry order)"
+if [ "$(stat -c %s "$work/f19.qmc")" -lt "$(stat -c %s "$work/f18.qmc")" ]; then passed=$((passed + 1)); else
+  failed=$((failed + 1)); echo "FAIL format-1.9-smaller: method 5's file is not smaller than method 4's"; fi
 check format-1.7 0 "$qmc" encode "$work/torus1200.obj" "$work/f17.qmc" --format 1.7 --quiet
 check format-1.7-info 0 "$qmc" info "$work/f17.qmc"
 contains format-1.7-label-order "$work/out" "predicted (spec 14, method 1)"

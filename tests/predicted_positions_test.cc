@@ -3,6 +3,7 @@
 // users can state, and round trips through encode and decode.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -262,17 +263,20 @@ TEST(PredictedPositions, RoundTripsGeneratedMeshes) {
       options.position_bits = bits;
       options.position_method = PositionMethod::kPredicted;
       // Method 3 (1.7) under 1,000 vertices (14.5), or method 1 (1.5, 1.6 with coding 7); with the
-      // geometry order (at 4 and 20 bits) method 4 (1.8), under 1,000 vertices only when smaller.
+      // geometry order (at 4 and 20 bits) method 4 (1.8) or, on a mesh with quads, 5 (1.9) where
+      // smaller, under 1,000 vertices only when smaller than method 1 or 3.
       options.graded_class_start = bits != 12;
       options.geometry_order = bits != 12;
       EncodeStats stats;
       const DecodedFile file = decode_all(encode_with(meshes[i], options, &stats));
       const bool small = meshes[i].vertex_count() < 1000;
       const int label_method = options.graded_class_start && small ? 3 : 1;
+      const bool quads = std::count(meshes[i].face_sizes.begin(), meshes[i].face_sizes.end(), 4u) > 0;
+      const int method = stats.positions.method;
       if (options.geometry_order && !small)
-        EXPECT_EQ(stats.positions.method, 4);
+        EXPECT_TRUE(method == 4 || (quads && method == 5)) << method;
       else if (options.geometry_order)
-        EXPECT_TRUE(stats.positions.method == 4 || stats.positions.method == label_method) << stats.positions.method;
+        EXPECT_TRUE(method == 4 || (quads && method == 5) || method == label_method) << method;
       else
         EXPECT_EQ(stats.positions.method, label_method);
       EXPECT_EQ(file.quantization.method, stats.positions.method);
@@ -281,7 +285,8 @@ TEST(PredictedPositions, RoundTripsGeneratedMeshes) {
       uint32_t counted = 0;
       for (uint32_t n : stats.positions.vertices_by_kind) counted += n;
       EXPECT_EQ(counted, file.mesh.vertex_count()) << "mesh " << i;
-      EXPECT_EQ(file.version_minor, stats.positions.method == 4   ? 8
+      EXPECT_EQ(file.version_minor, stats.positions.method == 5   ? 9
+                                    : stats.positions.method == 4 ? 8
                                     : stats.positions.method == 3 ? 7
                                     : stats.polygon.coding == kPolygonContextCoded ? 6
                                                                                    : 5);
@@ -475,6 +480,95 @@ TEST(GeometryOrder, MethodFourCarriesMethodOnesIntegers) {
   // Nearly every vertex of a closed mesh has two candidates or more in the geometry order.
   const uint32_t several = stats.positions.vertices_by_kind[int(PredictionKind::kSeveral)];
   EXPECT_GT(several, sphere.vertex_count() * 9 / 10);
+}
+
+// Spec 14.7's example: two quads on z = x y. Method 4's candidate for
+// vertex 5 is one short in z; the twist of face 0 across the edge (3, 1)
+// makes it exact.
+TEST(QuadTwist, SpecExample) {
+  const Mesh two = faces({4, 4}, {0, 1, 3, 2, 1, 4, 5, 3});
+  const std::vector<uint32_t> q = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 1, 2, 0, 0, 2, 1, 2};
+  VertexCorners corners;
+  corners.build(6, two.face_sizes, two.corners);
+  const std::vector<uint32_t> order = geometry_order(6, two.face_sizes, two.corners);
+  ASSERT_EQ(order, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5}));
+  const std::vector<uint32_t> activity(6, 0);
+  VertexPrediction four, five;
+  predict_vertex_in_order(corners, order.data(), order.data(), 5, q.data(), activity.data(), kTop, &four);
+  predict_vertex_in_order(corners, order.data(), order.data(), 5, q.data(), activity.data(), kTop, &five, nullptr,
+                          true);
+  ASSERT_EQ(four.candidates, 1);
+  ASSERT_EQ(five.candidates, 1);
+  EXPECT_EQ(four.candidate[0][2], 1 * kOne);
+  for (int a = 0; a < 3; ++a) EXPECT_EQ(five.candidate[0][a], kOne * q[15 + a]) << "axis " << a;
+  EXPECT_EQ(five.scale, four.scale);  // the difference vector is p1 - p2 either way
+}
+
+// 14.7: on a regular grid of quads, the runs' candidates (weight 2; the
+// strips' have weight 1) of a quadratic function, its mixed term included,
+// are exact wherever a twist is found; method 4's parallelogram misses the
+// mixed term every time.
+TEST(QuadTwist, QuadraticGridIsExact) {
+  constexpr uint32_t n = 12;
+  Mesh grid;
+  std::vector<uint32_t> q;
+  for (uint32_t j = 0; j < n; ++j)
+    for (uint32_t i = 0; i < n; ++i) q.insert(q.end(), {5 * i + 3 * i * i, 7 * j + j * j, 100 + 2 * i * j});
+  for (uint32_t j = 0; j + 1 < n; ++j)
+    for (uint32_t i = 0; i + 1 < n; ++i) {
+      grid.face_sizes.push_back(4);
+      grid.corners.insert(grid.corners.end(), {j * n + i, j * n + i + 1, (j + 1) * n + i + 1, (j + 1) * n + i});
+    }
+  VertexCorners corners;
+  corners.build(n * n, grid.face_sizes, grid.corners);
+  const std::vector<uint32_t> order = geometry_order(n * n, grid.face_sizes, grid.corners);
+  std::vector<uint32_t> rank(n * n);
+  for (uint32_t i = 0; i < n * n; ++i) rank[order[i]] = i;
+  const std::vector<uint32_t> activity(n * n, 0);
+  const uint32_t top[3] = {1000, 1000, 1000};
+  int runs = 0, exact_four = 0, exact_five = 0;
+  for (uint32_t i = 0; i < n * n; ++i) {
+    VertexPrediction four, five;
+    predict_vertex_in_order(corners, order.data(), rank.data(), i, q.data(), activity.data(), top, &four);
+    predict_vertex_in_order(corners, order.data(), rank.data(), i, q.data(), activity.data(), top, &five, nullptr,
+                            true);
+    ASSERT_EQ(four.candidates, five.candidates);
+    const uint32_t v = order[i];
+    const auto exact = [&](const VertexPrediction& p, int k) {
+      return p.candidate[k][0] == kOne * q[3 * v] && p.candidate[k][1] == kOne * q[3 * v + 1] &&
+             p.candidate[k][2] == kOne * q[3 * v + 2];
+    };
+    for (int k = 0; k < four.candidates; ++k) {
+      if (four.weight[k] != 2) continue;
+      ++runs;
+      exact_four += exact(four, k);
+      exact_five += exact(five, k);
+    }
+  }
+  EXPECT_EQ(runs, int((n - 1) * (n - 1)));  // one quad closes on each vertex off row 0 and column 0
+  EXPECT_EQ(exact_four, 0);
+  EXPECT_GT(exact_five, runs * 9 / 10);
+}
+
+// 14.5, 14.7: the encoder writes method 5 (format 1.9) on a smooth quad
+// mesh, with the integers method 4 carries; without quad_twist, method 4.
+TEST(QuadTwist, EncoderWritesMethodFiveWhereItIsSmaller) {
+  const Mesh sphere = tools::make_refined_sphere(3);  // quads, 3,842 vertices
+  EncodeOptions options;
+  const std::vector<uint8_t> five_bytes = encode_with(sphere, options);
+  const DecodedFile five = decode_all(five_bytes);
+  EXPECT_EQ(five.quantization.method, 5);
+  EXPECT_EQ(five.version_minor, 9);
+  options.quad_twist = false;
+  const std::vector<uint8_t> four_bytes = encode_with(sphere, options);
+  const DecodedFile four = decode_all(four_bytes);
+  EXPECT_EQ(four.quantization.method, 4);
+  EXPECT_EQ(four.version_minor, 8);
+  EXPECT_EQ(five.quantized, four.quantized);
+  EXPECT_LT(five_bytes.size(), four_bytes.size());
+  // A mesh of triangles has no quad to twist: method 4, format 1.8.
+  const DecodedFile triangles = decode_all(encode_with(tools::triangulated(sphere), EncodeOptions{}));
+  EXPECT_EQ(triangles.quantization.method, 4);
 }
 
 }  // namespace

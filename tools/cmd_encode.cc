@@ -94,11 +94,13 @@ const char kHelp[] =
     "  --gim-store-blank   also code the samples of blank pixels (smooth planes\n"
     "                      for image tools, at some cost in bytes)\n"
     "  --format 1.N        write nothing that decoders older than 1.N cannot read:\n"
-    "                      1.7 writes predicted positions in the label order\n"
+    "                      1.8 predicts quads without their neighbours' twist\n"
+    "                      (POSN method 4, not 5), 1.7 writes predicted\n"
+    "                      positions in the label order\n"
     "                      (method 1 or 3, not 4) and attribute values with\n"
     "                      coding 0 (not 4), 1.6 as method 1 only, 1.5\n"
     "                      also leaves out polygon coding 7, 1.4 also predicted\n"
-    "                      positions (deltas on the per-axis grid); default 1.8\n"
+    "                      positions (deltas on the per-axis grid); default 1.9\n"
     "  --uv-bits N         texture coordinates (spec 15) on a grid of 2^N - 1 steps\n"
     "                      over their range (default 12: 1/4 texel of a 1024\n"
     "                      texture)\n"
@@ -121,8 +123,9 @@ const char kHelp[] =
 // The newest format minor version this encoder writes, and the oldest that
 // --format accepts: 1.4 decoders read method-0 positions, 1.5 decoders
 // predicted positions (method 1) and LEVL code 2 but not polygon coding 7,
-// 1.6 decoders that but not POSN method 3, 1.7 decoders not method 4 (spec 11).
-constexpr int kNewestMinor = 8, kOldestTargetMinor = 4;
+// 1.6 decoders that but not POSN method 3, 1.7 decoders not method 4, 1.8
+// decoders not method 5 (spec 11).
+constexpr int kNewestMinor = 9, kOldestTargetMinor = 4;
 
 struct EncodeArgs {
   std::string input, output;
@@ -234,6 +237,8 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
 // error naming the option that needs a newer version.
 int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   EncodeOptions& o = args->options;
+  if (args->newest_minor >= 9) return -1;
+  o.quad_twist = false;  // POSN method 5 (14.7) came with 1.9
   if (args->newest_minor >= 8) return -1;
   o.geometry_order = false;
   o.attribute_geometry_order = false;  // aTTR coding 4 (15.9) came with 1.8
@@ -303,7 +308,7 @@ int parse(int argc, char** argv, EncodeArgs* args) {
     if (name == "--format") {
       if (value.size() != 3 || value.compare(0, 2, "1.") != 0 || value[2] < '0' + kOldestTargetMinor ||
           value[2] > '0' + kNewestMinor)
-        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7 or 1.8, got '" + value + "'");
+        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8 or 1.9, got '" + value + "'");
       args->newest_minor = value[2] - '0';
       continue;
     }
@@ -429,7 +434,9 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
   const PositionStats& ps = stats.positions;
   std::printf("positions   %s, %s grid, step %.6g%s; bound %.6g, max error %.6g (%.3g of largest bbox side), "
               "rms %.6g\n",
-              ps.method == 4   ? (ps.graded_start ? "predicted (spec 14, method 4: geometry order, graded start)"
+              ps.method == 5   ? (ps.graded_start ? "predicted (spec 14, method 5: geometry order, quads' twist, graded start)"
+                                                : "predicted (spec 14, method 5: geometry order, quads' twist)")
+              : ps.method == 4 ? (ps.graded_start ? "predicted (spec 14, method 4: geometry order, graded start)"
                                                 : "predicted (spec 14, method 4: geometry order)")
               : ps.method == 3 ? "predicted (spec 14, method 3: graded start)"
               : ps.method == 1 ? "predicted (spec 14, method 1)"
@@ -581,7 +588,7 @@ int refuse_dropping(const EncodeArgs& args, const std::vector<std::string>& note
   }
   if (ignored.empty()) return -1;
   if (!args.drop_unsupported) {
-    std::fprintf(stderr, "qmc encode: %s holds what format 1.8 cannot carry yet:\n", args.input.c_str());
+    std::fprintf(stderr, "qmc encode: %s holds what format 1.9 cannot carry yet:\n", args.input.c_str());
     for (const std::string& what : ignored) std::fprintf(stderr, "  %s\n", what.c_str());
     std::fprintf(stderr, "qmc encode: pass --drop-unsupported to encode the mesh without it\n");
     return kExitError;

@@ -34,6 +34,7 @@
 #include "chunk_list.h"
 #include "mesh_generators.h"
 #include "quad_disk_generator.h"
+#include "random_polygon_mesh.h"
 #include "decoder/connectivity_decoder.h"
 #include "decoder/position_decoder.h"
 #include "decoder/spirale_reversi_decoder.h"
@@ -55,6 +56,7 @@ qmc::EncodeOptions format_1_6_options() {
   qmc::EncodeOptions options;
   options.graded_class_start = false;
   options.geometry_order = false;
+  options.quad_twist = false;
   options.attribute_geometry_order = false;
   options.attribute_graded_start = false;
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
@@ -2552,6 +2554,7 @@ std::vector<uint8_t> encode_posn_as_written(const Mesh& mesh, int method, int bi
   options.position_method = qmc::PositionMethod::kPredicted;
   options.candidate_choice = qmc::CandidateChoice::kFewestBits;
   options.geometry_order = method == 4;
+  options.quad_twist = false;  // method 5 (14.7) came after these vectors
   options.attribute_geometry_order = false;  // aTTR codings 4, 5 and 6 came after these vectors
   options.attribute_graded_start = false;
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
@@ -2606,30 +2609,36 @@ void write_posn3_vectors(VectorWriter* w) {
   w->invalid("invalid_posn3_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
 }
 
+// The faces of a file's CONN and the integers of its POSN (any method).
+void decode_grid(const Chunks& c, Mesh* faces, qmc::QuantizedPositions* grid) {
+  const Chunk& conn = c[find_chunk(c, qmc::kChunkConnectivity)];
+  const Chunk& posn = c[find_chunk(c, qmc::kChunkPositions)];
+  uint32_t vertex_count = 0;
+  qmc::ConnectivityMethod method;
+  qmc::QuantizationInfo info;
+  std::vector<float> positions;
+  if (!qmc::decode_connectivity(conn.payload.data(), conn.payload.size(), &vertex_count, &method, faces).ok() ||
+      !qmc::decode_positions(posn.payload.data(), posn.payload.size(), *faces, vertex_count, &info, &grid->q,
+                             &positions)
+           .ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: a file to rewrite does not decode\n");
+    std::exit(3);
+  }
+  grid->min = info.min;
+  grid->step = info.step;
+  grid->top = info.top;
+}
+
 // A progressive file whose base POSN (method 1 on 6.1's grid) is written
 // again as method 4 (14.6, start 0): the same integers, so the levels do
 // not change; QHDR says 1.8.
 std::vector<uint8_t> with_method_4_base(const std::vector<uint8_t>& file) {
   Chunks c = split_chunks(file);
-  const Chunk& conn = c[find_chunk(c, qmc::kChunkConnectivity)];
-  Chunk& posn = c[find_chunk(c, qmc::kChunkPositions)];
   Mesh faces;
-  uint32_t vertex_count = 0;
-  qmc::ConnectivityMethod method;
-  qmc::QuantizationInfo info;
   qmc::QuantizedPositions grid;
-  std::vector<float> positions;
-  if (!qmc::decode_connectivity(conn.payload.data(), conn.payload.size(), &vertex_count, &method, &faces).ok() ||
-      !qmc::decode_positions(posn.payload.data(), posn.payload.size(), faces, vertex_count, &info, &grid.q, &positions)
-           .ok()) {
-    std::fprintf(stderr, "qmc-make-vectors: the progressive base does not decode\n");
-    std::exit(3);
-  }
-  grid.min = info.min;
-  grid.step = info.step;
-  grid.top = info.top;
-  posn.payload = qmc::encode_predicted_positions(grid, faces, nullptr, qmc::CandidateChoice::kFewestBits,
-                                                 qmc::ClassStart::kFlat, qmc::PredictionOrder::kGeometry);
+  decode_grid(c, &faces, &grid);
+  c[find_chunk(c, qmc::kChunkPositions)].payload = qmc::encode_predicted_positions(
+      grid, faces, nullptr, qmc::CandidateChoice::kFewestBits, qmc::ClassStart::kFlat, qmc::PredictionOrder::kGeometry);
   c[find_chunk(c, qmc::kChunkHeader)].payload = {1, 8};
   return join_chunks(c);
 }
@@ -2712,6 +2721,199 @@ void write_posn4_vectors(VectorWriter* w) {
   w->invalid("invalid_posn4_stream_too_short",
              large_posn({large_posn.payload().begin(), large_posn.payload().begin() + large_stream}),
              ErrorCode::kLimitExceeded);
+}
+
+// The file's POSN written again as method 5 (14.7) with the start its
+// vertex count gives (14.5): the same integers, so the mesh does not
+// change; QHDR says 1.9. For meshes where method 4 would be the smaller.
+std::vector<uint8_t> rewritten_as_method_5(const std::vector<uint8_t>& file) {
+  Chunks c = split_chunks(file);
+  Mesh faces;
+  qmc::QuantizedPositions grid;
+  decode_grid(c, &faces, &grid);
+  const qmc::ClassStart start =
+      grid.q.size() / 3 < qmc::kGradedStartBelow ? qmc::ClassStart::kGraded : qmc::ClassStart::kFlat;
+  c[find_chunk(c, qmc::kChunkPositions)].payload = qmc::encode_predicted_positions(
+      grid, faces, nullptr, qmc::CandidateChoice::kFewestBits, start, qmc::PredictionOrder::kGeometry, true);
+  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, 9};
+  return join_chunks(c);
+}
+
+// Section 14.7 (format 1.9): POSN method 5 as `qmc encode` writes it where
+// it is smaller than method 4; the generator fails if the encoder kept 4.
+std::vector<uint8_t> encode_posn5(const Mesh& mesh, int bits) {
+  qmc::EncodeOptions options;
+  options.position_bits = bits;
+  options.position_method = qmc::PositionMethod::kPredicted;
+  options.candidate_choice = qmc::CandidateChoice::kFewestBits;
+  return encode_posn_method(mesh, options, 5);
+}
+
+// A disk of quads around a pole of `spokes` / 2 quads (more than 14.2's 12
+// scanned corners when spokes > 24), then `rings` rings of `spokes` quads,
+// on z = x y / 2 with a little noise: the twist searches start at the pole.
+Mesh quad_pole_disk(uint32_t spokes, uint32_t rings) {
+  Mesh m;
+  qmc::tools::SplitMix64 random(71);
+  const auto add_vertex = [&](float x, float y) {
+    const float noise = 0.002f * (float(random.next() % 2001) / 1000.f - 1.f);
+    m.positions.insert(m.positions.end(), {x, y, 0.5f * x * y + noise});
+  };
+  add_vertex(0, 0);
+  for (uint32_t r = 1; r <= rings + 1; ++r)
+    for (uint32_t k = 0; k < spokes; ++k)
+      add_vertex(float(r) * std::cos(6.2831853f * float(k) / float(spokes)) / float(rings + 1),
+                 float(r) * std::sin(6.2831853f * float(k) / float(spokes)) / float(rings + 1));
+  const auto ring = [&](uint32_t r, uint32_t k) { return 1 + (r - 1) * spokes + k % spokes; };
+  const auto quad = [&](uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+    m.face_sizes.push_back(4);
+    m.corners.insert(m.corners.end(), {a, b, c, d});
+  };
+  for (uint32_t k = 0; k < spokes; k += 2) quad(0, ring(1, k), ring(1, k + 1), ring(1, k + 2));
+  for (uint32_t r = 1; r <= rings; ++r)
+    for (uint32_t k = 0; k < spokes; ++k) quad(ring(r, k), ring(r + 1, k), ring(r + 1, k + 1), ring(r, k + 1));
+  return m;
+}
+
+// The example of 14.7: two quads on z = x y, labels as given (indexed CONN).
+Mesh twist_example() {
+  Mesh m;
+  m.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 1, 2, 0, 0, 2, 1, 2};
+  m.face_sizes = {4, 4};
+  m.corners = {0, 1, 3, 2, 1, 4, 5, 3};
+  return m;
+}
+
+// 14.7's search on a "book": a quad grid on z = 0.7 x y + 0.2 x^2 whose
+// interior edge (s, p2) also borders `fins` faces of degree `degree`,
+// listed first, so that their corners come first among those of s and p2:
+// they are examined (and count toward 14.2's 8) but are no quads. A seed
+// other than 0 picks the edge and shuffles the grid's faces.
+Mesh twist_book(uint32_t fins, uint32_t degree, uint64_t seed = 0) {
+  constexpr uint32_t nx = 8, ny = 7;
+  Mesh m;
+  for (uint32_t j = 0; j <= ny; ++j)
+    for (uint32_t i = 0; i <= nx; ++i) {
+      const float x = float(i) / nx, y = float(j) / ny;
+      m.positions.insert(m.positions.end(), {x, y, 0.7f * x * y + 0.2f * x * x});
+    }
+  qmc::tools::SplitMix64 random(seed);
+  const uint32_t s = seed ? uint32_t(1 + random.next() % (ny - 1)) * (nx + 1) + uint32_t(1 + random.next() % (nx - 1))
+                          : 3 * (nx + 1) + 4;
+  const uint32_t p2 = seed && random.next() % 2 ? s + nx + 1 : s + 1;
+  for (uint32_t k = 0; k < fins; ++k) {
+    std::vector<uint32_t> fin = k % 2 ? std::vector<uint32_t>{p2, s} : std::vector<uint32_t>{s, p2};
+    for (uint32_t t = 0; t + 2 < degree; ++t) {
+      fin.push_back(m.vertex_count());
+      m.positions.insert(m.positions.end(), {m.positions[3 * s] + 0.01f * float(k), m.positions[3 * s + 1] - 0.01f * float(t),
+                                             m.positions[3 * s + 2] + 0.3f + 0.05f * float(k)});
+    }
+    m.face_sizes.push_back(degree);
+    m.corners.insert(m.corners.end(), fin.begin(), fin.end());
+  }
+  std::vector<uint32_t> cells(nx * ny);
+  for (uint32_t c = 0; c < nx * ny; ++c) cells[c] = c;
+  if (seed)
+    for (uint32_t c = nx * ny - 1; c > 0; --c) std::swap(cells[c], cells[random.next() % (c + 1)]);
+  for (const uint32_t c : cells) {
+    const uint32_t a = c / nx * (nx + 1) + c % nx;
+    m.face_sizes.push_back(4);
+    m.corners.insert(m.corners.end(), {a, a + 1, a + nx + 2, a + nx + 1});
+  }
+  return m;
+}
+
+// The same grid with degenerate quads listed first on interior edges (s, p2):
+// (s, p2, x, p2), where s's other neighbour y is p2, and (s, p2, s, y),
+// where the vertex x opposite s is s; 14.7 asks for no distinct vertices.
+Mesh twist_degenerate_quads() {
+  Mesh m = twist_book(0, 4);
+  Mesh out;
+  out.positions = m.positions;
+  for (uint32_t e = 0; e < 4; ++e) {
+    const uint32_t s = (2 + e) * 9 + 2 + e, p2 = s + 1, extra = out.vertex_count();
+    out.positions.insert(out.positions.end(), {out.positions[3 * s] + 0.05f, out.positions[3 * s + 1] + 0.05f,
+                                               out.positions[3 * s + 2] + 0.2f});
+    out.face_sizes.push_back(4);
+    if (e % 2)
+      out.corners.insert(out.corners.end(), {s, p2, s, extra});
+    else
+      out.corners.insert(out.corners.end(), {s, p2, extra, p2});
+  }
+  out.face_sizes.insert(out.face_sizes.end(), m.face_sizes.begin(), m.face_sizes.end());
+  out.corners.insert(out.corners.end(), m.corners.begin(), m.corners.end());
+  return out;
+}
+
+void write_posn5_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  // What the encoder writes: a smooth quad sphere over 1,000 vertices
+  // (start 0) and under (start 1).
+  const Mesh sphere = qmc::tools::make_refined_sphere(3);
+  w->valid("valid_posn5_refined_sphere", encode_posn5(sphere, 14), &sphere);
+  const Mesh small = qmc::tools::make_refined_sphere(2);
+  w->valid("valid_posn5_graded_start", encode_posn5(small, 12), &small);
+  // A pole of 16 quads: the searches of 14.2 over sorted links.
+  const Mesh pole = quad_pole_disk(32, 6);
+  w->valid("valid_posn5_pole", encode_posn5(pole, 14), &pole);
+  // Rewritten as method 5: triangles, quads and larger faces with holes,
+  // handles and non-manifold edges, where the twist's conditions (a quad
+  // across, its corners decoded, 8 corners examined) fail often.
+  qmc::RandomPolygonMeshOptions mixed_options;
+  mixed_options.seed = 73;
+  mixed_options.genus = 1;
+  mixed_options.holes = 2;
+  mixed_options.min_degree = 3;
+  mixed_options.max_degree = 6;
+  mixed_options.target_faces = 400;
+  mixed_options.non_manifold = true;
+  const Mesh mixed = qmc::make_random_polygon_mesh(mixed_options);
+  qmc::EncodeOptions options;
+  options.position_bits = 12;
+  w->valid("valid_posn5_mixed_polygons", rewritten_as_method_5(encode_with(mixed, options, "mixed polygons")), &mixed);
+  // 14.7's example, its labels kept by indexed connectivity.
+  const Mesh example = twist_example();
+  qmc::EncodeOptions indexed;
+  indexed.position_bits = 4;
+  indexed.connectivity = qmc::ConnectivityChoice::kIndexed;
+  w->valid("valid_posn5_example", rewritten_as_method_5(encode_with(example, indexed, "14.7's example")), &example);
+  // Books of pentagons on one edge, face order kept (the seeds were picked
+  // so that a decoder misreading 14.7 fails): with 3, the first corner
+  // examined is no quad and a later one is (14.7 takes the first corner that
+  // meets every condition); with 7, the own face's corner is the 8th
+  // examined and the quad across would be the 9th; with 8, the bound stops
+  // the search before the quad across.
+  for (const auto& [fins, seed] : {std::pair<uint32_t, uint64_t>{3, 18}, {7, 10}, {8, 18}}) {
+    const Mesh book = twist_book(fins, 5, seed);
+    w->valid("valid_posn5_book_of_" + std::to_string(fins) + "_pentagons",
+             rewritten_as_method_5(encode_with(book, indexed, "a book of pentagons")), &book);
+  }
+  const Mesh degenerate = twist_degenerate_quads();
+  w->valid("valid_posn5_degenerate_quads", rewritten_as_method_5(encode_with(degenerate, indexed, "degenerate quads")),
+           &degenerate);
+  // 15.4: an aTTR's values take no twist, whatever POSN's method.
+  Mesh textured = qmc::tools::make_refined_sphere(2);
+  qmc::tools::add_chart_texcoords(&textured);
+  qmc::EncodeOptions attributes;
+  attributes.position_bits = 12;
+  w->valid("valid_posn5_with_texcoords", encode_posn_method(textured, attributes, 5), &textured);
+
+  // The rules of 14.1 and 14.4 on method 5's path, as for method 4: header
+  // as 14.1, varint V, 0x85, start, grid, origin 12 bytes, step 8, three
+  // tops of 2 bytes at 14 bits, then the stream.
+  const ChunkReplacer with_posn(encode_posn5(sphere, 14), qmc::kChunkPositions);
+  const std::vector<uint8_t> payload = with_posn.payload();
+  std::vector<uint8_t> count;
+  qmc::put_varint(&count, sphere.vertex_count());
+  const size_t start = count.size() + 1, tops = start + 2 + 12 + 8, stream = tops + 6;
+  std::vector<uint8_t> p = payload;
+  p[start] = 2;
+  w->invalid("invalid_posn5_start_2", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn5_truncated_stream", with_posn({payload.begin(), payload.end() - 8}), ErrorCode::kTruncated);
+  p = {payload.begin(), payload.begin() + tops};
+  for (int a = 0; a < 3; ++a) qmc::put_varint(&p, 1);
+  p.insert(p.end(), payload.begin() + stream, payload.end());
+  w->invalid("invalid_posn5_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
 }
 
 // Section 15.9: aTTR coding 4, what `qmc encode` writes when it is the
@@ -3218,6 +3420,7 @@ void write_attribute_mapping3_vectors(VectorWriter* w) {
   qmc::EncodeOptions options;  // what `qmc encode` wrote
   options.attribute_guided = false;  // coding 7 (15.12) came after these vectors
   options.angle_weighted_normals = false;  // and coding 8 (15.13)
+  options.quad_twist = false;              // and POSN method 5 (14.7)
   // Texture coordinates with seams: charts on a torus of triangles, and on one of quads.
   Mesh textured = perturbed(triangulated(make_torus(20, 8)), 81, 0.004f);
   add_chart_texcoords(&textured);
@@ -3310,6 +3513,7 @@ int main(int argc, char** argv) {
   write_attribute_mapping3_vectors(&w);
   write_attribute_coding7_vectors(&w);
   write_attribute_coding8_vectors(&w);
+  write_posn5_vectors(&w);
   w.finish();
   return 0;
 }

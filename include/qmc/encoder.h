@@ -103,6 +103,12 @@ struct EncodeOptions {
   // parallelograms; 4-20 % smaller on the corpus's triangle meshes (16 % on
   // face and beetle). false writes method 1 or 3, which 1.5-1.7 decoders read.
   bool geometry_order = true;
+  // With geometry_order: a quad's prediction also carries the twist of the
+  // quads beside it, POSN method 5 (format 1.9, spec 14.7), written where a
+  // pass of predictions says it beats method 4 (finely meshed quad surfaces:
+  // 3-14 % of their positions on the corpus). false keeps method 4, which
+  // 1.8 decoders read.
+  bool quad_twist = true;
   // Attribute values on a grid may take aTTR coding 4 (spec 15.9, 14.6's
   // order over the attribute mesh) where it is smaller than coding 0: 2-7 %
   // of the corpus's texture coordinates. Decoders of the revisions before

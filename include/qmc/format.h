@@ -17,7 +17,7 @@ inline constexpr uint8_t kSignature[8] = {0x89, 'Q', 'M', 'C', '\r', '\n', 0x1A,
 // method 4 (section 11);
 // a file says the lowest minor version that defines everything it uses.
 inline constexpr uint8_t kFormatMajor = 1;
-inline constexpr uint8_t kFormatMinor = 8;
+inline constexpr uint8_t kFormatMinor = 9;
 
 // Section 3.2: a chunk payload is at most 2^31 - 1 bytes.
 inline constexpr uint32_t kMaxChunkLength = 0x7FFFFFFFu;

@@ -82,15 +82,50 @@ void add_parallelograms(const VertexCorners& m, uint32_t corner, const VertexCor
   });
 }
 
+// 14.7: adds to sum the twist of the edge (s, p2) of v's quad, s - y - p2 + x
+// from the first quad across it whose other corners are decoded, y being s's
+// other neighbour there and x the corner opposite s; false if there is none.
+template <class Order>
+bool add_quad_twist(const VertexCorners& m, uint32_t corner, uint32_t s, uint32_t p2, const Visit<Order>& at,
+                    const uint32_t* q, int64_t sum[3]) {
+  bool found = false;
+  int examined = 0;
+  m.for_each_link(s, p2, false, [&](uint32_t k, uint32_t y) {
+    const uint32_t x = m.along(k, 2);
+    if (m.face(k) != m.face(corner) && m.degree(k) == 4 && at.before(y) && at.before(x)) {
+      for (int a = 0; a < 3; ++a)
+        sum[a] += int64_t(q[3 * size_t(s) + a]) - int64_t(q[3 * size_t(y) + a]) - int64_t(q[3 * size_t(p2) + a]) +
+                  int64_t(q[3 * size_t(x) + a]);
+      found = true;
+      return false;  // one twist per edge
+    }
+    return ++examined < kMaxExamined;
+  });
+  return found;
+}
+
 // 14.3.1, polygon run: the three vertices before v along the face (direction -1)
-// or after it (+1), all decoded: p3 + c_k (p1 - p2).
+// or after it (+1), all decoded: p3 + c_k (p1 - p2); in a quad with
+// twist (method 5, 14.7) plus the mean twist of the quads across (p1, p2)
+// and (p3, p2).
 template <class Order>
 bool add_polygon_run(const VertexCorners& m, uint32_t corner, int direction, const Visit<Order>& at,
-                     const uint32_t* q, VertexPrediction* c) {
+                     const uint32_t* q, bool twist, VertexPrediction* c) {
   const uint32_t p1 = m.along(corner, direction), p2 = m.along(corner, 2 * direction),
                  p3 = m.along(corner, 3 * direction);
   if (!at.before(p1) || !at.before(p2) || !at.before(p3) || c->candidates >= kMaxCandidates) return false;
   add_candidate(c, kWeightPolygon, q, p3, p1, p2, polygon_coefficient(m.degree(corner)));
+  if (!twist || m.degree(corner) != 4) return true;
+  int64_t sum[3] = {0, 0, 0};
+  const int sides =
+      int(add_quad_twist(m, corner, p1, p2, at, q, sum)) + int(add_quad_twist(m, corner, p3, p2, at, q, sum));
+  if (sides == 0) return true;
+  const int k = c->candidates - 1;
+  c->twisted |= 1u << k;
+  for (int a = 0; a < 3; ++a) {
+    c->twist_term[k][a] = kOne / sides * sum[a];
+    c->candidate[k][a] += c->twist_term[k][a];
+  }
   return true;
 }
 
@@ -241,11 +276,12 @@ namespace {
 // the guided candidate alone where the guided rule applies).
 template <class Order>
 void add_corner_candidates(const VertexCorners& m, uint32_t corner, const VertexCorners::Sides& sides,
-                           const Visit<Order>& at, const uint32_t* q, PositionGuide* guide, VertexPrediction* c) {
+                           const Visit<Order>& at, const uint32_t* q, PositionGuide* guide, bool twist,
+                           VertexPrediction* c) {
   if (guide && add_guided(m, corner, sides, at, q, guide, c)) return;
   if (m.degree(corner) == 3) return add_parallelograms(m, corner, sides, at, q, c);
-  bool run = add_polygon_run(m, corner, -1, at, q, c);
-  if (m.degree(corner) > 4) run = add_polygon_run(m, corner, +1, at, q, c) || run;
+  bool run = add_polygon_run(m, corner, -1, at, q, twist, c);
+  if (m.degree(corner) > 4) run = add_polygon_run(m, corner, +1, at, q, false, c) || run;
   if (run) return;
   add_strip(m, corner, -1, at, q, c);
   add_strip(m, corner, +1, at, q, c);
@@ -255,10 +291,11 @@ void add_corner_candidates(const VertexCorners& m, uint32_t corner, const Vertex
 // it, if any (14.3.2's fallback without neighbours).
 template <class Order>
 void predict(const VertexCorners& m, const Visit<Order>& at, const uint32_t* previous, const uint32_t* q,
-             const uint32_t* activity, const uint32_t top[3], PositionGuide* guide, VertexPrediction* out) {
+             const uint32_t* activity, const uint32_t top[3], PositionGuide* guide, bool twist, VertexPrediction* out) {
   const uint32_t v = at.v;
   out->candidates = 0;
   out->scale = 0;
+  out->twisted = 0;
   int64_t neighbour_sum[3] = {0, 0, 0};
   int64_t neighbours = 0;
   uint64_t activity_sum = 0;
@@ -270,7 +307,7 @@ void predict(const VertexCorners& m, const Visit<Order>& at, const uint32_t* pre
       activity_sum += activity[u];
       ++neighbours;
     }
-    add_corner_candidates(m, *corner, *sides, at, q, guide, out);
+    add_corner_candidates(m, *corner, *sides, at, q, guide, twist, out);
   }
   if (out->candidates > 0) out->scale /= uint64_t(out->candidates);
   // 14.3.2: the fallback and the activity of 14.4.
@@ -291,13 +328,14 @@ void predict(const VertexCorners& m, const Visit<Order>& at, const uint32_t* pre
 void predict_vertex(const VertexCorners& m, uint32_t v, const uint32_t* q, const uint32_t* activity,
                     const uint32_t top[3], VertexPrediction* out, PositionGuide* guide) {
   const uint32_t previous = v - 1;
-  predict(m, Visit<LabelOrder>{{}, v, v}, v > 0 ? &previous : nullptr, q, activity, top, guide, out);
+  predict(m, Visit<LabelOrder>{{}, v, v}, v > 0 ? &previous : nullptr, q, activity, top, guide, false, out);
 }
 
 void predict_vertex_in_order(const VertexCorners& m, const uint32_t* order, const uint32_t* rank, uint32_t i,
                              const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
-                             VertexPrediction* out, PositionGuide* guide) {
-  predict(m, Visit<RankOrder>{{rank}, order[i], i}, i > 0 ? &order[i - 1] : nullptr, q, activity, top, guide, out);
+                             VertexPrediction* out, PositionGuide* guide, bool quad_twist) {
+  predict(m, Visit<RankOrder>{{rank}, order[i], i}, i > 0 ? &order[i - 1] : nullptr, q, activity, top, guide,
+          quad_twist, out);
 }
 
 void select_candidates(VertexPrediction* p, unsigned mask, const uint32_t top[3]) {

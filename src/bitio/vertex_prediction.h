@@ -170,6 +170,11 @@ struct VertexPrediction {
   PredictionKind fallback_kind = PredictionKind::kPrevious;
   uint64_t neighbour_activity = 0;  // 14.3.2: the activity A, used by 14.4
   uint64_t scale = 0;  // mean L1 length of the candidates' difference vectors
+  // With 14.7's twist: the candidates that carry one (a bit each) and the
+  // term added to each, so the encoder can weigh method 5 against 4 from
+  // one prediction.
+  unsigned twisted = 0;
+  int64_t twist_term[kMaxCandidates][3];
   // The prediction of the selected subset (select_candidates), clamped to 0..top[a].
   PredictionKind kind = PredictionKind::kPrevious;
   int64_t value[3] = {0, 0, 0};
@@ -197,10 +202,11 @@ void predict_vertex(const VertexCorners& mesh, uint32_t v, const uint32_t* q, co
 // The same in 14.6's geometry order: the vertex order[i] (rank[order[i]] = i),
 // the vertices decoded before it those of rank below i, and order[i - 1]
 // the previous vertex. Gives what predict_vertex gives for vertex i of the
-// faces renamed by rank, without renaming them.
+// faces renamed by rank, without renaming them. With quad_twist, a quad's
+// run carries the twist of its neighbours (POSN method 5, 14.7).
 void predict_vertex_in_order(const VertexCorners& mesh, const uint32_t* order, const uint32_t* rank, uint32_t i,
                              const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
-                             VertexPrediction* out, PositionGuide* guide = nullptr);
+                             VertexPrediction* out, PositionGuide* guide = nullptr, bool quad_twist = false);
 
 // 14.3.3: the prediction from the candidates whose bit is set in mask (the
 // weighted mean), or the fallback if none is.

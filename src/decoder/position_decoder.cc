@@ -24,6 +24,7 @@ Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadCh
 // Section 14.1: the byte after vertex_count selects the method.
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (14.1)
 constexpr uint8_t kGeometryOrderSelector = 0x84;                         // method 4 (14.1, 14.6)
+constexpr uint8_t kQuadTwistSelector = 0x85;                             // method 5 (14.1, 14.7)
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
   for (int a = 0; a < 3; ++a)
@@ -73,12 +74,14 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
   if (count != vertex_count)
     return bad_payload("vertex_count " + std::to_string(count) + " differs from CONN's " +
                        std::to_string(vertex_count));
-  if (selector == kPredictedSelector || selector == kGradedSelector || selector == kGeometryOrderSelector) {
+  if (selector == kPredictedSelector || selector == kGradedSelector || selector == kGeometryOrderSelector ||
+      selector == kQuadTwistSelector) {
     info->method = selector - 0x80;
     info->graded_start = selector == kGradedSelector;
-    if (selector == kGeometryOrderSelector) {
+    if (selector >= kGeometryOrderSelector) {
       uint8_t start = 0;
-      if (!in->get_u8(&start)) return bad_payload("method 4's start byte missing (section 14.1)");
+      if (!in->get_u8(&start))
+        return bad_payload("method " + std::to_string(info->method) + "'s start byte missing (section 14.1)");
       if (start > 1) return bad_payload("start " + std::to_string(start) + " is neither 0 nor 1 (section 14.1)");
       info->graded_start = start == 1;
     }
@@ -86,7 +89,7 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
   }
   if (selector >= 0x80)
     return Status(ErrorCode::kUnsupportedFeature, "POSN: method " + std::to_string(selector - 0x80) +
-                                                      " is not defined (section 14.1 knows 0, 1, 3 and 4)");
+                                                      " is not defined (section 14.1 knows 0, 1, 3, 4 and 5)");
   if (selector < 1 || selector > 30) return bad_payload("quantization bits " + std::to_string(selector) + " outside 1..30");
   info->method = 0;
   info->bits = selector;
@@ -165,7 +168,7 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
 // Messages name the i-th vertex visited.
 Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& faces, uint32_t count,
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
-                             ClassStart start, PredictionOrder order, const PositionGuide* guide) {
+                             ClassStart start, PredictionOrder order, const PositionGuide* guide, bool quad_twist) {
   if (!range_stream_justifies(count, size))  // section 14.1, before anything is reserved
     return Status(ErrorCode::kLimitExceeded, names.chunk + ": " + std::to_string(count) + " " + names.items +
                                                  " for " + std::to_string(size) +
@@ -175,6 +178,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   corners.build(count, faces.face_sizes, faces.corners);
   PredictionVisit visit(corners, order);
   visit.guide_by(guide);
+  if (quad_twist) visit.twist_quads();
   std::vector<uint32_t> activity(count);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start));
   RangeDecoder rc(stream, size);
@@ -210,9 +214,9 @@ Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, 
   if (info->method >= 1) {
     const PredictedGridNames names{"POSN", "vertex", "vertices", "axis"};
     const ClassStart start = info->graded_start ? ClassStart::kGraded : ClassStart::kFlat;
-    const PredictionOrder order = info->method == 4 ? PredictionOrder::kGeometry : PredictionOrder::kLabels;
+    const PredictionOrder order = info->method >= 4 ? PredictionOrder::kGeometry : PredictionOrder::kLabels;
     if (Status s = decode_predicted_grid(in.cursor(), in.remaining(), faces, vertex_count, info->top.data(), names,
-                                         quantized, start, order);
+                                         quantized, start, order, nullptr, info->method == 5);
         !s.ok())
       return s;
   } else {

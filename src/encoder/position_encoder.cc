@@ -22,6 +22,7 @@ namespace {
 
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (section 14.1)
 constexpr uint8_t kGeometryOrderSelector = 0x84;                         // method 4 (14.1, 14.6)
+constexpr uint8_t kQuadTwistSelector = 0x85;                             // method 5 (14.1, 14.7)
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
 
 void bounding_box(const std::vector<float>& positions, QuantizedPositions* out) {
@@ -262,17 +263,11 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
   return best;
 }
 
-}  // namespace
-
-// 14.2 - 14.4 in label order or 14.6's geometry order.
-std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const uint32_t top[3], const Mesh& faces,
-                                           PositionStats* stats, CandidateChoice choice, ClassStart start,
-                                           PredictionOrder order, const PositionGuide* guide) {
+// 14.2 - 14.4 over a visit built for q's vertices (its order, guide and
+// twist set).
+std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t top[3], const PredictionVisit& visit,
+                                  PositionStats* stats, CandidateChoice choice, ClassStart start) {
   const uint32_t n = uint32_t(q.size() / 3);
-  VertexCorners corners;
-  corners.build(n, faces.face_sizes, faces.corners);
-  PredictionVisit visit(corners, order);
-  visit.guide_by(guide);
   std::vector<uint32_t> activity(n);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start));
   MeteredRangeEncoder rc;
@@ -298,14 +293,16 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
   return rc.rc.finish();
 }
 
-std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
-                                                PositionStats* stats, CandidateChoice choice, ClassStart start,
-                                                PredictionOrder order) {
+// 14.1: the payload of a predicted POSN, its header and the stream; empty
+// when the vertices cost too little for 14.1's bound.
+std::vector<uint8_t> predicted_payload(const QuantizedPositions& positions, ClassStart start, PredictionOrder order,
+                                       bool quad_twist, const std::vector<uint8_t>& stream) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
+  if (!range_stream_justifies(n, stream.size())) return {};
   std::vector<uint8_t> payload;
   put_varint(&payload, n);
   if (order == PredictionOrder::kGeometry) {
-    put_u8(&payload, kGeometryOrderSelector);
+    put_u8(&payload, quad_twist ? kQuadTwistSelector : kGeometryOrderSelector);
     put_u8(&payload, start == ClassStart::kGraded ? 1 : 0);
   } else {
     put_u8(&payload, start == ClassStart::kGraded ? kGradedSelector : kPredictedSelector);
@@ -315,22 +312,95 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
   for (int a = 0; a < 3; ++a) put_f32le(&payload, positions.min[a]);
   for (int a = 0; a < (one_step ? 1 : 3); ++a) put_f64le(&payload, positions.step[a]);
   for (int a = 0; a < 3; ++a) put_varint(&payload, positions.top[a]);
-  const std::vector<uint8_t> stream =
-      encode_predicted_grid(positions.q, positions.top.data(), faces, stats, choice, start, order);
-  if (!range_stream_justifies(n, stream.size())) return {};
   payload.insert(payload.end(), stream.begin(), stream.end());
   return payload;
 }
 
-// The predicted payload of `order`, and under kGradedStartBelow vertices
-// (where coding twice costs little) the smaller of it and the label order's:
-// method 4's gain is then a few bytes either way (fish_control_mesh at 14
-// bits: 516 against 514).
+}  // namespace
+
+// 14.2 - 14.4 in label order or 14.6's geometry order.
+std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const uint32_t top[3], const Mesh& faces,
+                                           PositionStats* stats, CandidateChoice choice, ClassStart start,
+                                           PredictionOrder order, const PositionGuide* guide, bool quad_twist) {
+  VertexCorners corners;
+  corners.build(uint32_t(q.size() / 3), faces.face_sizes, faces.corners);
+  PredictionVisit visit(corners, order);
+  visit.guide_by(guide);
+  visit.twist_quads(quad_twist);
+  return encode_visit(q, top, visit, stats, choice, start);
+}
+
+std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
+                                                PositionStats* stats, CandidateChoice choice, ClassStart start,
+                                                PredictionOrder order, bool quad_twist) {
+  return predicted_payload(positions, start, order, quad_twist,
+                           encode_predicted_grid(positions.q, positions.top.data(), faces, stats, choice, start,
+                                                 order, nullptr, quad_twist));
+}
+
+namespace {
+
+// Whether some face is a quad, which POSN method 5's twist (14.7) needs.
+bool has_quads(const Mesh& faces) {
+  return std::find(faces.face_sizes.begin(), faces.face_sizes.end(), 4u) != faces.face_sizes.end();
+}
+
+// Whether 14.7's twist brings the predictions nearer to the vertices, told
+// without coding them: per vertex the mean of all its candidates with the
+// twist and without, summed over the axes as log2(1 + |residual|), a
+// stand-in for bits. A prediction pass costs a fraction of coding one.
+// `visit` is in the geometry order; it is left with the twist on.
+bool twist_pays(const QuantizedPositions& positions, PredictionVisit* visit) {
+  const uint32_t n = uint32_t(positions.q.size() / 3);
+  visit->twist_quads();
+  const std::vector<uint32_t> activity(n, 0);  // contexts only: no candidate depends on it
+  const uint32_t* top = positions.top.data();
+  const auto cost = [&](VertexPrediction* p, const uint32_t* q) {
+    select_candidates(p, (1u << p->candidates) - 1, top);
+    double bits = 0;
+    for (int a = 0; a < 3; ++a) bits += std::log2(1.0 + std::fabs(double(int64_t(q[a]) - p->value[a])));
+    return bits;
+  };
+  double plain_cost = 0, twist_cost = 0;
+  VertexPrediction twist;
+  for (uint32_t i = 0; i < n; ++i) {
+    visit->predict(i, positions.q.data(), activity.data(), top, &twist);
+    if (twist.twisted == 0) continue;  // the same prediction either way
+    VertexPrediction plain = twist;
+    for (int k = 0; k < plain.candidates; ++k)
+      if (plain.twisted >> k & 1)
+        for (int a = 0; a < 3; ++a) plain.candidate[k][a] -= plain.twist_term[k][a];
+    const uint32_t* q = &positions.q[3 * size_t(visit->item(i))];
+    twist_cost += cost(&twist, q);
+    plain_cost += cost(&plain, q);
+  }
+  return twist_cost < plain_cost;
+}
+
+}  // namespace
+
+// The predicted payload of `order` (with 14.7's twist where twist_pays:
+// method 5), and under kGradedStartBelow vertices (where coding twice costs
+// little) the smaller of it and the label order's: method 4's gain is then a
+// few bytes either way (fish_control_mesh at 14 bits: 516 against 514).
 std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions, const Mesh& faces,
                                              CandidateChoice choice, ClassStart start, PredictionOrder order,
-                                             PositionStats* stats) {
+                                             bool quad_twist, PositionStats* stats) {
   const PositionStats before = *stats;  // the coder adds its counts to stats
-  std::vector<uint8_t> best = encode_predicted_positions(positions, faces, stats, choice, start, order);
+  bool twisted = false;
+  std::vector<uint8_t> best;
+  if (order == PredictionOrder::kGeometry && quad_twist && has_quads(faces)) {
+    // One visit for the choice and the coding: the corners and 14.6's order built once.
+    VertexCorners corners;
+    corners.build(uint32_t(positions.q.size() / 3), faces.face_sizes, faces.corners);
+    PredictionVisit visit(corners, order);
+    twisted = twist_pays(positions, &visit);
+    visit.twist_quads(twisted);
+    best = predicted_payload(positions, start, order, twisted,
+                             encode_visit(positions.q, positions.top.data(), visit, stats, choice, start));
+  } else {
+    best = encode_predicted_positions(positions, faces, stats, choice, start, order);
+  }
   if (order == PredictionOrder::kGeometry && positions.q.size() / 3 < kGradedStartBelow) {
     PositionStats label_stats = before;
     std::vector<uint8_t> labels = encode_predicted_positions(positions, faces, &label_stats, choice, start);
@@ -338,16 +408,17 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
       best = std::move(labels);
       *stats = label_stats;
       order = PredictionOrder::kLabels;
+      twisted = false;
     }
   }
-  stats->method = order == PredictionOrder::kGeometry ? 4 : start == ClassStart::kGraded ? 3 : 1;
+  stats->method = twisted ? 5 : order == PredictionOrder::kGeometry ? 4 : start == ClassStart::kGraded ? 3 : 1;
   stats->graded_start = start == ClassStart::kGraded;
   return best;
 }
 
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces, PositionMethod method,
                                       CandidateChoice choice, ClassStart start, PredictionOrder order,
-                                      PositionStats* stats) {
+                                      bool quad_twist, PositionStats* stats) {
   *stats = PositionStats{};
   stats->step = positions.step;
   stats->top = positions.top;
@@ -358,7 +429,7 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const
   if (method == PositionMethod::kDeltas) return deltas;
   if (positions.q.size() / 3 >= kGradedStartBelow) start = ClassStart::kFlat;
   PositionStats predicted_stats = *stats;
-  std::vector<uint8_t> predicted = encode_predicted_choice(positions, faces, choice, start, order, &predicted_stats);
+  std::vector<uint8_t> predicted = encode_predicted_choice(positions, faces, choice, start, order, quad_twist, &predicted_stats);
   if (predicted.empty()) {
     // Only vertices that all coincide cost so little (section 14.1); on
     // one point method 0's per-axis grid gives the same positions.

@@ -52,7 +52,7 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
                                            PositionStats* stats, CandidateChoice choice,
                                            ClassStart start = ClassStart::kFlat,
                                            PredictionOrder order = PredictionOrder::kLabels,
-                                           const PositionGuide* guide = nullptr);
+                                           const PositionGuide* guide = nullptr, bool quad_twist = false);
 
 // Method 1, or 3 with the graded start (section 14), or 4 in the geometry
 // order, over the file's faces; stats may be null. Empty when the vertices
@@ -61,7 +61,8 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
                                                 PositionStats* stats,
                                                 CandidateChoice choice = CandidateChoice::kFewestBits,
                                                 ClassStart start = ClassStart::kFlat,
-                                                PredictionOrder order = PredictionOrder::kLabels);
+                                                PredictionOrder order = PredictionOrder::kLabels,
+                                                bool quad_twist = false);
 
 // 14.4.1's start when the options ask for POSN method 3.
 inline ClassStart class_start(const EncodeOptions& options) {
@@ -74,11 +75,11 @@ inline PredictionOrder prediction_order(const EncodeOptions& options) {
 }
 
 // The POSN payload the options ask for: predicted positions (method 4 in
-// the geometry order, else 3 with `start` graded under 1,000 vertices, or
-// 1), method 0, or the smaller of the two when both can carry the grid.
-// Fills stats.
+// the geometry order, or 5 where quad_twist allows it and it is smaller,
+// else 3 with `start` graded under 1,000 vertices, or 1), method 0, or the
+// smaller of the two when both can carry the grid. Fills stats.
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces,
                                       PositionMethod method, CandidateChoice choice, ClassStart start,
-                                      PredictionOrder order, PositionStats* stats);
+                                      PredictionOrder order, bool quad_twist, PositionStats* stats);
 
 }  // namespace qmc
