@@ -2629,18 +2629,30 @@ void decode_grid(const Chunks& c, Mesh* faces, qmc::QuantizedPositions* grid) {
   grid->top = info.top;
 }
 
-// A progressive file whose base POSN (method 1 on 6.1's grid) is written
-// again as method 4 (14.6, start 0): the same integers, so the levels do
-// not change; QHDR says 1.8.
-std::vector<uint8_t> with_method_4_base(const std::vector<uint8_t>& file) {
+// The file's POSN written again in the geometry order (14.6), as method 5
+// with quad_twist (14.7), else method 4, with start 0, or with the start its
+// vertex count gives (14.5) when start_by_count: the same integers, so the
+// mesh (and a progressive file's levels) do not change; QHDR says `minor`.
+std::vector<uint8_t> with_posn_rewritten(const std::vector<uint8_t>& file, bool start_by_count, bool quad_twist,
+                                         uint8_t minor) {
   Chunks c = split_chunks(file);
   Mesh faces;
   qmc::QuantizedPositions grid;
   decode_grid(c, &faces, &grid);
-  c[find_chunk(c, qmc::kChunkPositions)].payload = qmc::encode_predicted_positions(
-      grid, faces, nullptr, qmc::CandidateChoice::kFewestBits, qmc::ClassStart::kFlat, qmc::PredictionOrder::kGeometry);
-  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, 8};
+  const qmc::ClassStart start = start_by_count && grid.q.size() / 3 < qmc::kGradedStartBelow
+                                    ? qmc::ClassStart::kGraded
+                                    : qmc::ClassStart::kFlat;
+  c[find_chunk(c, qmc::kChunkPositions)].payload =
+      qmc::encode_predicted_positions(grid, faces, nullptr, qmc::CandidateChoice::kFewestBits, start,
+                                      qmc::PredictionOrder::kGeometry, quad_twist);
+  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, minor};
   return join_chunks(c);
+}
+
+// A progressive file whose base POSN (method 1 on 6.1's grid) is written
+// again as method 4 (start 0); QHDR says 1.8.
+std::vector<uint8_t> with_method_4_base(const std::vector<uint8_t>& file) {
+  return with_posn_rewritten(file, false, false, 8);
 }
 
 // Section 14.6 (format 1.8): POSN method 4, the decisions of method 1 or 3
@@ -2724,19 +2736,10 @@ void write_posn4_vectors(VectorWriter* w) {
 }
 
 // The file's POSN written again as method 5 (14.7) with the start its
-// vertex count gives (14.5): the same integers, so the mesh does not
-// change; QHDR says 1.9. For meshes where method 4 would be the smaller.
+// vertex count gives (14.5); QHDR says 1.9. For meshes where method 4 would
+// be the smaller.
 std::vector<uint8_t> rewritten_as_method_5(const std::vector<uint8_t>& file) {
-  Chunks c = split_chunks(file);
-  Mesh faces;
-  qmc::QuantizedPositions grid;
-  decode_grid(c, &faces, &grid);
-  const qmc::ClassStart start =
-      grid.q.size() / 3 < qmc::kGradedStartBelow ? qmc::ClassStart::kGraded : qmc::ClassStart::kFlat;
-  c[find_chunk(c, qmc::kChunkPositions)].payload = qmc::encode_predicted_positions(
-      grid, faces, nullptr, qmc::CandidateChoice::kFewestBits, start, qmc::PredictionOrder::kGeometry, true);
-  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, 9};
-  return join_chunks(c);
+  return with_posn_rewritten(file, true, true, 9);
 }
 
 // Section 14.7 (format 1.9): POSN method 5 as `qmc encode` writes it where

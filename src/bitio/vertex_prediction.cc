@@ -57,15 +57,16 @@ struct Visit {
   bool before(uint32_t u) const { return order.key(u) < key; }
 };
 
-// 14.2's bounded search: calls rule(k) for each corner k examined for w
-// next to u (in triangles or in larger faces) that is not in `corner`'s face.
-template <class Rule>
-void search_across(const VertexCorners& m, uint32_t u, uint32_t w, bool triangles, uint32_t corner,
-                   const VertexPrediction* c, Rule rule) {
+// 14.2's bounded search: calls examine(k, other) for each corner k of u
+// examined for w next to it (in triangles or in larger faces) that is not in
+// `corner`'s face, other being u's other neighbour at k, until examine
+// returns false or kMaxExamined corners (those in `corner`'s face too) are
+// examined.
+template <class Examine>
+void search_across(const VertexCorners& m, uint32_t u, uint32_t w, bool triangles, uint32_t corner, Examine examine) {
   int examined = 0;
   m.for_each_link(u, w, triangles, [&](uint32_t k, uint32_t other) {
-    if (c->candidates >= kMaxCandidates) return false;
-    if (m.face(k) != m.face(corner)) rule(other);
+    if (m.face(k) != m.face(corner) && !examine(k, other)) return false;
     return ++examined < kMaxExamined;
   });
 }
@@ -77,8 +78,9 @@ void add_parallelograms(const VertexCorners& m, uint32_t corner, const VertexCor
                         const Visit<Order>& at, const uint32_t* q, VertexPrediction* c) {
   const uint32_t a = sides.next, b = sides.previous;
   if (!at.before(a) || !at.before(b) || a == b) return;
-  search_across(m, a, b, true, corner, c, [&](uint32_t o) {
+  search_across(m, a, b, true, corner, [&](uint32_t, uint32_t o) {
     if (at.before(o) && o != a && o != b) add_candidate(c, kWeightParallelogram, q, a, b, o, kOne);
+    return c->candidates < kMaxCandidates;
   });
 }
 
@@ -89,17 +91,14 @@ template <class Order>
 bool add_quad_twist(const VertexCorners& m, uint32_t corner, uint32_t s, uint32_t p2, const Visit<Order>& at,
                     const uint32_t* q, int64_t sum[3]) {
   bool found = false;
-  int examined = 0;
-  m.for_each_link(s, p2, false, [&](uint32_t k, uint32_t y) {
+  search_across(m, s, p2, false, corner, [&](uint32_t k, uint32_t y) {
     const uint32_t x = m.along(k, 2);
-    if (m.face(k) != m.face(corner) && m.degree(k) == 4 && at.before(y) && at.before(x)) {
-      for (int a = 0; a < 3; ++a)
-        sum[a] += int64_t(q[3 * size_t(s) + a]) - int64_t(q[3 * size_t(y) + a]) - int64_t(q[3 * size_t(p2) + a]) +
-                  int64_t(q[3 * size_t(x) + a]);
-      found = true;
-      return false;  // one twist per edge
-    }
-    return ++examined < kMaxExamined;
+    if (m.degree(k) != 4 || !at.before(y) || !at.before(x)) return true;
+    for (int a = 0; a < 3; ++a)
+      sum[a] += int64_t(q[3 * size_t(s) + a]) - int64_t(q[3 * size_t(y) + a]) - int64_t(q[3 * size_t(p2) + a]) +
+                int64_t(q[3 * size_t(x) + a]);
+    found = true;
+    return false;  // one twist per edge
   });
   return found;
 }
@@ -136,8 +135,9 @@ void add_strip(const VertexCorners& m, uint32_t corner, int direction, const Vis
                VertexPrediction* c) {
   const uint32_t p1 = m.along(corner, direction), p2 = m.along(corner, 2 * direction);
   if (!at.before(p1) || !at.before(p2) || p1 == p2) return;
-  search_across(m, p1, p2, false, corner, c, [&](uint32_t y) {
+  search_across(m, p1, p2, false, corner, [&](uint32_t, uint32_t y) {
     if (at.before(y) && y != p1 && y != p2) add_candidate(c, kWeightStrip, q, p1, p1, y, kOne);
+    return c->candidates < kMaxCandidates;
   });
 }
 
@@ -147,7 +147,7 @@ void add_strip(const VertexCorners& m, uint32_t corner, int direction, const Vis
 // a larger face, along(corner, +2).
 template <class Order>
 int guided_side(const VertexCorners& m, uint32_t corner, uint32_t a, uint32_t b, const int64_t d[2],
-                const Visit<Order>& at, const uint32_t* q, const VertexPrediction* c) {
+                const Visit<Order>& at, const uint32_t* q) {
   const auto side_of = [&](uint32_t o) {
     if (!at.before(o) || o == a || o == b) return 0;
     const int64_t w = d[0] * (int64_t(q[3 * size_t(o) + 1]) - int64_t(q[3 * size_t(a) + 1])) -
@@ -156,8 +156,9 @@ int guided_side(const VertexCorners& m, uint32_t corner, uint32_t a, uint32_t b,
   };
   if (m.degree(corner) > 3) return side_of(m.along(corner, 2));
   int side = 0;
-  search_across(m, a, b, true, corner, c, [&](uint32_t o) {
-    if (side == 0) side = side_of(o);
+  search_across(m, a, b, true, corner, [&](uint32_t, uint32_t o) {
+    side = side_of(o);
+    return side == 0;  // the first o that gives a side
   });
   return side;
 }
@@ -188,7 +189,7 @@ bool add_guided(const VertexCorners& m, uint32_t corner, const VertexCorners::Si
   const int64_t x = integer_sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
   const int64_t d[2] = {int64_t(q[3 * size_t(b)]) - int64_t(q[3 * size_t(a)]),
                         int64_t(q[3 * size_t(b) + 1]) - int64_t(q[3 * size_t(a) + 1])};
-  const int side = guided_side(m, corner, a, b, d, at, q, c);
+  const int side = guided_side(m, corner, a, b, d, at, q);
   if (side != 0) guide->orientation = side;
   const int64_t sigma = guide->orientation;
   const int64_t n[2] = {ef * d[0] - sigma * x * d[1], ef * d[1] + sigma * x * d[0]};

@@ -178,7 +178,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   corners.build(count, faces.face_sizes, faces.corners);
   PredictionVisit visit(corners, order);
   visit.guide_by(guide);
-  if (quad_twist) visit.twist_quads();
+  visit.twist_quads(quad_twist);
   std::vector<uint32_t> activity(count);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start));
   RangeDecoder rc(stream, size);

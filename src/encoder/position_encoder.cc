@@ -387,31 +387,29 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
                                              CandidateChoice choice, ClassStart start, PredictionOrder order,
                                              bool quad_twist, PositionStats* stats) {
   const PositionStats before = *stats;  // the coder adds its counts to stats
-  bool twisted = false;
-  std::vector<uint8_t> best;
-  if (order == PredictionOrder::kGeometry && quad_twist && has_quads(faces)) {
-    // One visit for the choice and the coding: the corners and 14.6's order built once.
-    VertexCorners corners;
-    corners.build(uint32_t(positions.q.size() / 3), faces.face_sizes, faces.corners);
-    PredictionVisit visit(corners, order);
-    twisted = twist_pays(positions, &visit);
-    visit.twist_quads(twisted);
-    best = predicted_payload(positions, start, order, twisted,
-                             encode_visit(positions.q, positions.top.data(), visit, stats, choice, start));
-  } else {
-    best = encode_predicted_positions(positions, faces, stats, choice, start, order);
-  }
+  // The corners, and 14.6's order, built once for every payload tried.
+  VertexCorners corners;
+  corners.build(uint32_t(positions.q.size() / 3), faces.face_sizes, faces.corners);
+  PredictionVisit visit(corners, order);
+  const bool twisted = order == PredictionOrder::kGeometry && quad_twist && has_quads(faces) &&
+                       twist_pays(positions, &visit);
+  visit.twist_quads(twisted);
+  std::vector<uint8_t> best = predicted_payload(
+      positions, start, order, twisted, encode_visit(positions.q, positions.top.data(), visit, stats, choice, start));
+  int method = twisted ? 5 : order == PredictionOrder::kGeometry ? 4 : start == ClassStart::kGraded ? 3 : 1;
   if (order == PredictionOrder::kGeometry && positions.q.size() / 3 < kGradedStartBelow) {
     PositionStats label_stats = before;
-    std::vector<uint8_t> labels = encode_predicted_positions(positions, faces, &label_stats, choice, start);
+    const PredictionVisit labels_visit(corners, PredictionOrder::kLabels);
+    std::vector<uint8_t> labels =
+        predicted_payload(positions, start, PredictionOrder::kLabels, false,
+                          encode_visit(positions.q, positions.top.data(), labels_visit, &label_stats, choice, start));
     if (!labels.empty() && labels.size() <= best.size()) {
       best = std::move(labels);
       *stats = label_stats;
-      order = PredictionOrder::kLabels;
-      twisted = false;
+      method = start == ClassStart::kGraded ? 3 : 1;
     }
   }
-  stats->method = twisted ? 5 : order == PredictionOrder::kGeometry ? 4 : start == ClassStart::kGraded ? 3 : 1;
+  stats->method = method;
   stats->graded_start = start == ClassStart::kGraded;
   return best;
 }
