@@ -58,9 +58,12 @@ TEST(PredictedPositions, SpecWorkedExample) {
   EXPECT_EQ(p.candidate[0][1], 20 * kOne);
   EXPECT_EQ(p.candidate[0][2], 5 * kOne);
   EXPECT_EQ(p.scale, 10u);
-  EXPECT_EQ(p.fallback[0], 18);  // (20 + 15) / 2 rounded half up
-  EXPECT_EQ(p.fallback[1], 15);
-  EXPECT_EQ(p.fallback[2], 5);
+  VertexPrediction none = p;  // no candidate selected: 14.3.2's fallback, the neighbours' mean
+  select_candidates(&none, 0, kTop);
+  EXPECT_EQ(none.kind, PredictionKind::kNeighbours);
+  EXPECT_EQ(none.value[0], 18);  // (20 + 15) / 2 rounded half up
+  EXPECT_EQ(none.value[1], 15);
+  EXPECT_EQ(none.value[2], 5);
   EXPECT_EQ(p.neighbour_activity, 4u);
   select_candidates(&p, 1, kTop);
   EXPECT_EQ(p.kind, PredictionKind::kSingle);
@@ -188,7 +191,9 @@ TEST(PredictedPositions, TrianglesOnlyMeshPredictsAsTheGeneralTablesDo) {
         EXPECT_EQ(a.weight[c], b.weight[c]);
         for (int axis = 0; axis < 3; ++axis) EXPECT_EQ(a.candidate[c][axis], b.candidate[c][axis]);
       }
-      for (int axis = 0; axis < 3; ++axis) EXPECT_EQ(a.fallback[axis], b.fallback[axis]);
+      select_candidates(&a, 0, kTop);  // the fallbacks
+      select_candidates(&b, 0, kTop);
+      for (int axis = 0; axis < 3; ++axis) EXPECT_EQ(a.value[axis], b.value[axis]);
       EXPECT_EQ(a.neighbour_activity, b.neighbour_activity);
       EXPECT_EQ(a.scale, b.scale);
     }

@@ -55,14 +55,10 @@ inline int position_bucket(uint64_t t0, const uint32_t* magnitude, int axis) {
   if (axis > 0) {
     uint64_t own = 0;
     for (int b = 0; b < axis; ++b) own += magnitude[b];
-    t = (t + 3 * own / uint64_t(axis)) / 2;
+    // 3 own / axis, axis being 1 or 2: no division by a variable, which costs tens of cycles.
+    t = (t + (axis == 1 ? 3 * own : 3 * own / 2)) / 2;
   }
-  int len = 0;
-  while (t != 0 && len < kPositionBuckets - 1) {
-    ++len;
-    t >>= 1;
-  }
-  return len;
+  return t == 0 ? 0 : std::min(bit_length64(t), kPositionBuckets - 1);
 }
 
 // 14.4: which of the vertex's count candidates its prediction uses. With

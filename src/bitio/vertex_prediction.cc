@@ -5,7 +5,7 @@
 
 #include <algorithm>
 
-#include "bitio/exact_arith.h"  // floor_div, integer_sqrt, shift_into_15_bits
+#include "bitio/exact_arith.h"  // floor_div, floor_shift, integer_sqrt, shift_into_15_bits
 
 namespace qmc {
 namespace {
@@ -311,13 +311,12 @@ void predict(const VertexCorners& m, const Visit<Order>& at, const uint32_t* pre
     add_corner_candidates(m, *corner, *sides, at, q, guide, twist, out);
   }
   if (out->candidates > 0) out->scale /= uint64_t(out->candidates);
-  // 14.3.2: the fallback and the activity of 14.4.
+  // 14.3.2: what the fallback is made of, and the activity of 14.4.
   for (int a = 0; a < 3; ++a) {
-    int64_t p = previous ? int64_t(q[3 * size_t(*previous) + a]) : int64_t(top[a] >> 1);
-    if (neighbours > 0) p = floor_div(2 * neighbour_sum[a] + neighbours, 2 * neighbours);
-    out->fallback[a] = std::clamp<int64_t>(p, 0, top[a]);
+    out->neighbour_sum[a] = neighbour_sum[a];
+    out->previous[a] = previous ? int64_t(q[3 * size_t(*previous) + a]) : int64_t(top[a] >> 1);
   }
-  out->fallback_kind = neighbours > 0 ? PredictionKind::kNeighbours : PredictionKind::kPrevious;
+  out->neighbours = neighbours;
   if (neighbours > 0)
     out->neighbour_activity = activity_sum / uint64_t(neighbours);
   else
@@ -339,6 +338,28 @@ void predict_vertex_in_order(const VertexCorners& m, const uint32_t* order, cons
           quad_twist, out);
 }
 
+namespace {
+
+// floor(n / w) for a total weight w of 14.3.3 (1 .. 8: at most four
+// candidates of weight 1 or 2), each case a division by a constant, which
+// the compiler turns into a multiplication: a 64-bit division takes tens of
+// cycles, and the encoder selects up to 15 subsets a vertex (14.5).
+int64_t floor_div_by_weight(int64_t n, int64_t w) {
+  switch (w) {
+    case 1: return n;
+    case 2: return floor_shift(n, 1);
+    case 3: return floor_div(n, 3);
+    case 4: return floor_shift(n, 2);
+    case 5: return floor_div(n, 5);
+    case 6: return floor_div(n, 6);
+    case 7: return floor_div(n, 7);
+    case 8: return floor_shift(n, 3);
+    default: return floor_div(n, w);
+  }
+}
+
+}  // namespace
+
 void select_candidates(VertexPrediction* p, unsigned mask, const uint32_t top[3]) {
   int64_t sum[3] = {0, 0, 0}, weight = 0;
   int used = 0;
@@ -348,13 +369,17 @@ void select_candidates(VertexPrediction* p, unsigned mask, const uint32_t top[3]
     weight += p->weight[i];
     ++used;
   }
-  if (used == 0) {
-    for (int a = 0; a < 3; ++a) p->value[a] = p->fallback[a];
-    p->kind = p->fallback_kind;
+  if (used == 0) {  // 14.3.2's fallback
+    const int64_t n = p->neighbours;
+    for (int a = 0; a < 3; ++a)
+      p->value[a] = std::clamp<int64_t>(n > 0 ? floor_div(2 * p->neighbour_sum[a] + n, 2 * n) : p->previous[a], 0, top[a]);
+    p->kind = n > 0 ? PredictionKind::kNeighbours : PredictionKind::kPrevious;
     return;
   }
+  // 14.3.3's floor((2 S + W 2^16) / (2 W 2^16)), as floor(floor(x / 2^17) / W).
   for (int a = 0; a < 3; ++a)
-    p->value[a] = std::clamp<int64_t>(floor_div(2 * sum[a] + weight * kOne, 2 * weight * kOne), 0, top[a]);
+    p->value[a] =
+        std::clamp<int64_t>(floor_div_by_weight(floor_shift(2 * sum[a] + weight * kOne, 17), weight), 0, top[a]);
   p->kind = used > 1 ? PredictionKind::kSeveral : PredictionKind::kSingle;
 }
 

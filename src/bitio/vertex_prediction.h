@@ -165,9 +165,13 @@ struct VertexPrediction {
   int candidates = 0;
   int64_t candidate[kMaxCandidates][3];
   int64_t weight[kMaxCandidates];
-  // Without candidates: the mean of the decoded neighbours, else the previous vertex.
-  int64_t fallback[3];
-  PredictionKind fallback_kind = PredictionKind::kPrevious;
+  // Without candidates (14.3.2): the mean of the decoded neighbours, else
+  // the previous vertex (or the grid's centre). select_candidates works it
+  // out from these only when no candidate is selected: its divisions would
+  // cost every vertex tens of cycles for the few that use it.
+  int64_t neighbour_sum[3];
+  int64_t neighbours = 0;
+  int64_t previous[3];
   uint64_t neighbour_activity = 0;  // 14.3.2: the activity A, used by 14.4
   uint64_t scale = 0;  // mean L1 length of the candidates' difference vectors
   // With 14.7's twist: the candidates that carry one (a bit each) and the

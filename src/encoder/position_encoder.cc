@@ -224,6 +224,11 @@ class MeteredRangeEncoder {
 // residuals cheapest under the current probabilities, or the prediction
 // nearest to the vertex (L1); ties go to the lower mask. Leaves *p
 // selected with that mask (select_candidates).
+//
+// The mask of all candidates, the one most often cheapest, is costed first
+// and the others after it in ascending order: a mask stops being costed once
+// it cannot win (costs only add up), and a good first bound stops most of
+// them after an axis or two. The choice is the same as in ascending order.
 unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidualModel* model, CandidateChoice choice,
                          VertexPrediction* p) {
   if (p->candidates < 2) {
@@ -231,27 +236,29 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
     select_candidates(p, only, top);
     return only;
   }
-  unsigned best = 1;
+  const unsigned all = (1u << p->candidates) - 1;
+  unsigned best = all;
   double best_cost = INFINITY;
   int64_t best_value[3] = {0, 0, 0};
   PredictionKind best_kind = PredictionKind::kPrevious;
   const bool fewest_bits = choice == CandidateChoice::kFewestBits;
-  for (unsigned mask = 1; mask < (1u << p->candidates); ++mask) {
+  for (unsigned k = 0; k <= all - 1; ++k) {
+    const unsigned mask = k == 0 ? all : k;
+    // Against a higher mask (only `all` is costed before a lower one) a tie wins.
+    const auto wins = [&](double cost) { return cost < best_cost || (cost == best_cost && mask < best); };
     select_candidates(p, mask, top);
     CostMeter meter;
     double distance = 0;
     const auto cost = [&] { return fewest_bits ? meter.bits : distance; };
     if (fewest_bits) code_candidate_mask(&meter, model, p->candidates, mask);
     uint32_t magnitude[3] = {0, 0, 0};
-    // Costs only add up: a mask whose first axes already cost best_cost
-    // cannot win, so its last axes are not costed.
-    for (int a = 0; a < 3 && cost() < best_cost; ++a) {
+    for (int a = 0; a < 3 && wins(cost()); ++a) {
       const int64_t r = int64_t(q[a]) - p->value[a];
       magnitude[a] = uint32_t(r < 0 ? -r : r);
       distance += magnitude[a];
       if (fewest_bits) code_position_residual(&meter, model, *p, magnitude, a, SignedResidual{magnitude[a], r < 0});
     }
-    if (cost() < best_cost) {
+    if (wins(cost())) {
       best_cost = cost();
       best = mask;
       std::copy(p->value, p->value + 3, best_value);
