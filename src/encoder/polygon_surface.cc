@@ -100,10 +100,12 @@ void split_fans(PolygonSurfaceModel* s) {
 // The face of `degree` corners `cycle[0 .. degree - 1]`.
 uint32_t add_face(PolygonSurfaceModel* s, const uint32_t* cycle, uint32_t degree, uint32_t source) {
   const uint32_t f = s->face_count();
+  const uint32_t begin = uint32_t(s->corners.size());
   for (uint32_t i = 0; i < degree; ++i) {
     s->corners.push_back(cycle[i]);
     s->twin.push_back(kNone);
     s->face_of.push_back(f);
+    s->next_edge.push_back(i + 1 < degree ? begin + i + 1 : begin);
   }
   s->face_begin.push_back(uint32_t(s->corners.size()));
   s->source.push_back(source);
@@ -384,6 +386,7 @@ std::string build_polygon_surface(const Mesh& mesh, PolygonSurfaceModel* s) {
   s->corners.reserve(mesh.corners.size());
   s->twin.reserve(mesh.corners.size());
   s->face_of.reserve(mesh.corners.size());
+  s->next_edge.reserve(mesh.corners.size());
   s->face_begin.reserve(mesh.face_count() + 1);
   s->source.reserve(mesh.face_count());
   for (uint32_t f = 0, begin = 0; f < mesh.face_count(); begin += mesh.face_sizes[f], ++f) {
