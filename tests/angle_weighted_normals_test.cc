@@ -31,9 +31,9 @@ TEST(AngleWeightedNormals, AngleOfTheSpec) {
 }
 
 // 15.13's steps written as the spec words them (doubling one step at a time,
-// floor division by 2^i, a branch per step): the decoder's integer_angles,
-// which shifts once, shifts arithmetically and turns without branches, four
-// corners at a time, gives the same angles.
+// floor division by 2^i, a branch per step, 64-bit integers): the decoder's
+// integer_angles, which shifts once, shifts arithmetically and turns without
+// branches in 32 bits, any number of corners at a time, gives the same angles.
 int64_t angle_as_the_spec_words_it(int64_t x, int64_t y) {
   int64_t z = 0;
   if (x < 0) {
@@ -60,17 +60,24 @@ int64_t angle_as_the_spec_words_it(int64_t x, int64_t y) {
 
 TEST(AngleWeightedNormals, FastAnglesAreTheSpecsSteps) {
   tools::SplitMix64 random(15);
-  int64_t x[4], y[4], angle[4];
+  int64_t x[5], y[5], angle[5];
   for (int round = 0; round < 100000; ++round) {
-    for (int j = 0; j < 4; ++j) {
-      // Dot products and cross-product lengths of 15-bit vectors: below 2^30.
-      const int bits = int(random.next() % 31);
+    const int count = 1 + round % 5;
+    for (int j = 0; j < count; ++j) {
+      // Dot products and cross-product lengths of 15-bit vectors: x^2 + y^2 <= (3 2^28)^2.
+      const int bits = int(random.next() % 30);
       const int64_t range = (int64_t(1) << bits) + 1;
       x[j] = int64_t(random.next() % uint64_t(2 * range)) - range;
       y[j] = 1 + int64_t(random.next() % uint64_t(range));
     }
-    integer_angles(4, x, y, angle);
-    for (int j = 0; j < 4; ++j) ASSERT_EQ(angle[j], angle_as_the_spec_words_it(x[j], y[j])) << x[j] << ", " << y[j];
+    integer_angles(count, x, y, angle);
+    for (int j = 0; j < count; ++j) ASSERT_EQ(angle[j], angle_as_the_spec_words_it(x[j], y[j])) << x[j] << ", " << y[j];
+  }
+  // The longest vectors 15.13 makes, 3 2^28, all the way round: the 32-bit steps do not overflow.
+  for (int degrees = 1; degrees < 180; ++degrees) {
+    const double radians = degrees * M_PI / 180, longest = 3.0 * double(int64_t(1) << 28);
+    const int64_t lx = std::llround(longest * std::cos(radians)), ly = std::llround(longest * std::sin(radians));
+    EXPECT_EQ(integer_angle(lx, ly), angle_as_the_spec_words_it(lx, ly)) << degrees << " degrees";
   }
   for (int64_t v : {int64_t(-1), int64_t(-2), int64_t(-3), -(int64_t(1) << 40), (int64_t(1) << 40) + 3})
     for (int s = 0; s < 45; ++s) EXPECT_EQ(floor_shift(v, s), int64_t(std::floor(double(v) / std::ldexp(1.0, s))));

@@ -99,33 +99,42 @@ inline constexpr int64_t kCordicAngle[16] = {16384, 9672, 5110, 2594, 1302, 652,
 // 15.13: the angle atan2(y, x) of a vector with y > 0, in units of pi / 2^16
 // (0 .. 2^16), by 16 steps of CORDIC in integers; of `count` <= 16 vectors
 // at once (x[j], y[j] -> angle[j]), whose independent steps the processor
-// can overlap.
+// can overlap. The vectors are dot products and cross-product lengths of
+// two vectors of 15-bit components, x^2 + y^2 <= (3 2^28)^2 (15.13), so
+// the steps, which grow a vector by at most 1.65 and their floors by less
+// than 40, keep every x and y below 2^31 in magnitude: they run in 32 bits,
+// four vectors at a time, which a compiler turns in one 128-bit register.
 inline void integer_angles(int count, const int64_t* x_in, const int64_t* y_in, int64_t* angle) {
-  int64_t x[kOctahedralCorners], y[kOctahedralCorners];
+  static_assert((int32_t(-5) >> 1) == -3, "needs an arithmetic right shift");
+  int32_t x[kOctahedralCorners], y[kOctahedralCorners], z[kOctahedralCorners];
   for (int j = 0; j < count; ++j) {
-    x[j] = x_in[j];
-    y[j] = y_in[j];
-    angle[j] = 0;
-    if (x[j] < 0) {  // turn by -pi/2: (x, y) -> (y, -x), both then >= 0
-      x[j] = y_in[j];
-      y[j] = -x_in[j];
-      angle[j] = int64_t(1) << 15;
+    int64_t xj = x_in[j], yj = y_in[j];
+    z[j] = 0;
+    if (xj < 0) {  // turn by -pi/2: (x, y) -> (y, -x), both then >= 0
+      xj = y_in[j];
+      yj = -x_in[j];
+      z[j] = int32_t(1) << 15;
     }
     // Doubled until the larger reaches 2^24: by 25 - bitlen at once.
-    const int doublings = std::max(0, 25 - bit_length64(uint64_t(std::max(x[j], y[j]))));
-    x[j] *= int64_t(1) << doublings;
-    y[j] *= int64_t(1) << doublings;
+    const int doublings = std::max(0, 25 - bit_length64(uint64_t(std::max(xj, yj))));
+    x[j] = int32_t(xj * (int64_t(1) << doublings));
+    y[j] = int32_t(yj * (int64_t(1) << doublings));
   }
-  for (int i = 0; i < 16; ++i)
-    for (int j = 0; j < count; ++j) {
-      // Turn towards y = 0: add (dx, -dy, angle) for y > 0, subtract them
-      // otherwise; (v ^ flip) - flip is v, or -v when flip is all ones.
-      const int64_t dx = floor_shift(y[j], i), dy = floor_shift(x[j], i);
-      const int64_t flip = -int64_t(y[j] <= 0);
-      x[j] += (dx ^ flip) - flip;
-      y[j] -= (dy ^ flip) - flip;
-      angle[j] += (kCordicAngle[i] ^ flip) - flip;
-    }
+  // Groups of four, the last one filled with idle vectors (1, 1).
+  const int padded = (count + 3) / 4 * 4;
+  for (int j = count; j < padded; ++j) x[j] = y[j] = 1, z[j] = 0;
+  for (int group = 0; group < padded; group += 4)
+    for (int i = 0; i < 16; ++i)
+      for (int j = group; j < group + 4; ++j) {
+        // Turn towards y = 0: add (dx, -dy, angle) for y > 0, subtract them
+        // otherwise; (v ^ flip) - flip is v, or -v when flip is all ones.
+        const int32_t dx = y[j] >> i, dy = x[j] >> i;  // floor(y / 2^i), floor(x / 2^i)
+        const int32_t flip = -int32_t(y[j] <= 0);
+        x[j] += (dx ^ flip) - flip;
+        y[j] -= (dy ^ flip) - flip;
+        z[j] += (int32_t(kCordicAngle[i]) ^ flip) - flip;
+      }
+  for (int j = 0; j < count; ++j) angle[j] = z[j];
 }
 
 // The same of one vector.
