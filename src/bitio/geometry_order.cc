@@ -7,13 +7,17 @@ namespace qmc {
 namespace {
 
 // The index of the lowest set bit of a non-zero word (C++17 has no
-// countr_zero): de Bruijn multiplication, exact on every compiler.
+// countr_zero): the compiler's builtin, else de Bruijn multiplication.
 int lowest_bit(uint64_t word) {
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctzll(word);
+#else
   static constexpr int kIndex[64] = {0,  1,  2,  53, 3,  7,  54, 27, 4,  38, 41, 8,  34, 55, 48, 28,
                                      62, 5,  39, 46, 44, 42, 22, 9,  24, 35, 59, 56, 49, 18, 29, 11,
                                      63, 52, 6,  26, 37, 40, 33, 47, 61, 45, 43, 21, 23, 58, 17, 10,
                                      51, 25, 36, 32, 60, 20, 57, 16, 50, 31, 19, 15, 30, 14, 13, 12};
   return kIndex[((word & (~word + 1)) * 0x022FDD63CC95386Dull) >> 58];
+#endif
 }
 
 // A set of labels below a bound that gives its smallest member at once: a
