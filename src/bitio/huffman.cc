@@ -29,21 +29,28 @@ std::vector<uint8_t> huffman_code_lengths(const std::vector<uint64_t>& frequenci
   // Ties broken by symbol so every platform builds the same code.
   std::stable_sort(used.begin(), used.end(),
                    [&](uint32_t a, uint32_t b) { return frequencies[a] < frequencies[b]; });
+  // Each level adds fewer packages than the 2n - 1 items a list holds: the
+  // tables are sized once (the encoder builds codes for many small streams).
+  const size_t n = used.size();
   std::vector<Node> nodes;
-  std::vector<uint32_t> leaves;
+  nodes.reserve(n + size_t(max_length) * n);
+  std::vector<uint32_t> leaves, list, packages, merged;
+  leaves.reserve(n);
+  list.reserve(2 * n);
+  packages.reserve(n);
+  merged.reserve(2 * n);
   for (uint32_t s : used) {
     leaves.push_back(uint32_t(nodes.size()));
     nodes.push_back({frequencies[s], int32_t(s), 0, 0});
   }
-  std::vector<uint32_t> list = leaves;
+  list = leaves;
   for (int level = 1; level < max_length; ++level) {
-    std::vector<uint32_t> packages;
+    packages.clear();
     for (size_t j = 0; j + 1 < list.size(); j += 2) {
       packages.push_back(uint32_t(nodes.size()));
       nodes.push_back({nodes[list[j]].weight + nodes[list[j + 1]].weight, -1, list[j], list[j + 1]});
     }
-    std::vector<uint32_t> merged;
-    merged.reserve(leaves.size() + packages.size());
+    merged.clear();
     size_t a = 0, b = 0;
     while (a < leaves.size() || b < packages.size()) {
       const bool take_leaf = b == packages.size() ||
