@@ -61,9 +61,22 @@ check encode-per-axis-deltas 0 "$qmc" encode "$work/torus.obj" "$work/deltas.qmc
 contains encode-per-axis-deltas-reported "$work/out" "deltas (spec 6), per-axis grid"
 check info-deltas 0 "$qmc" info "$work/deltas.qmc"
 contains info-deltas-method "$work/out" "deltas (spec 6), 12 bits/axis"
-# --format 1.N: files older decoders read (spec 11: 1.8 with POSN method 4 instead of 5, 1.7 with the
-# label order instead of method 4, 1.6 with method 1 for 3, 1.5 also without polygon coding 7, 1.4 also
-# without predicted positions).
+# --format 1.N: files older decoders read (spec 11: 1.9 with POSN method 4 instead of 6, 1.8 with
+# method 4 instead of 5, 1.7 with the label order instead of method 4, 1.6 with method 1 for 3, 1.5 also
+# without polygon coding 7, 1.4 also without predicted positions).
+"$meshgen" terraces 100 4 "$work/terraces.obj" >/dev/null  # 10,201 vertices: method 6 (14.5, 14.8)
+check format-1.10 0 "$qmc" encode "$work/terraces.obj" "$work/f110.qmc" -q 16 --quiet
+check format-1.10-info 0 "$qmc" info "$work/f110.qmc"
+contains format-1.10-written "$work/out" "format 1.10"
+contains format-1.10-method-6 "$work/out" "predicted (spec 14, method 6: geometry order, candidate contexts)"
+check format-1.10-asked 0 "$qmc" encode "$work/terraces.obj" "$work/f110b.qmc" -q 16 --quiet --format 1.10
+check format-1.9-terraces 0 "$qmc" encode "$work/terraces.obj" "$work/f19t.qmc" -q 16 --quiet --format 1.9
+check format-1.9-terraces-info 0 "$qmc" info "$work/f19t.qmc"
+contains format-1.9-terraces-method-4 "$work/out" "predicted (spec 14, method 4: geometry order)"
+if [ "$(stat -c %s "$work/f110.qmc")" -lt "$(stat -c %s "$work/f19t.qmc")" ]; then passed=$((passed + 1)); else
+  failed=$((failed + 1)); echo "FAIL format-1.10-smaller: method 6's file is not smaller than method 4's"; fi
+check format-1.11-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f111.qmc" --format 1.11
+check format-1.010-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f111.qmc" --format 1.010
 "$meshgen" torus 40 30 "$work/torus1200.obj" >/dev/null  # 1,200 vertices of quads: method 4 or 5, never 1 (14.5)
 check format-1.9 0 "$qmc" encode "$work/torus1200.obj" "$work/f19.qmc" --quiet
 check format-1.9-info 0 "$qmc" info "$work/f19.qmc"

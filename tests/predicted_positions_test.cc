@@ -11,6 +11,7 @@
 #include "bitio/position_coding.h"
 #include "bitio/range_coder.h"
 #include "bitio/vertex_prediction.h"
+#include "decoder/position_decoder.h"
 #include "encoder/position_encoder.h"
 #include "geometry_order_rule.h"
 #include "mesh_generators.h"
@@ -233,7 +234,7 @@ TEST(PredictedPositions, GradedClassStartFollowsTheBucket) {
       for (int j = 0; j < kPositionMaxClass; ++j) EXPECT_EQ(flat.cls[g][b][j], 1024);
   }
   EXPECT_EQ(graded.sign[0], 1024);
-  EXPECT_EQ(graded.use[0][0], 1024);
+  EXPECT_EQ(graded.use[0][0][0], 1024);
 }
 
 std::vector<uint8_t> encode_with(const Mesh& mesh, const EncodeOptions& options, EncodeStats* stats = nullptr) {
@@ -269,7 +270,8 @@ TEST(PredictedPositions, RoundTripsGeneratedMeshes) {
       options.position_method = PositionMethod::kPredicted;
       // Method 3 (1.7) under 1,000 vertices (14.5), or method 1 (1.5, 1.6 with coding 7); with the
       // geometry order (at 4 and 20 bits) method 4 (1.8) or, on a mesh with quads, 5 (1.9) where
-      // smaller, under 1,000 vertices only when smaller than method 1 or 3.
+      // smaller, either as 6 or 7 (1.10) where 14.8's contexts make it smaller, under 1,000 vertices
+      // only when smaller than method 1 or 3.
       options.graded_class_start = bits != 12;
       options.geometry_order = bits != 12;
       EncodeStats stats;
@@ -277,11 +279,11 @@ TEST(PredictedPositions, RoundTripsGeneratedMeshes) {
       const bool small = meshes[i].vertex_count() < 1000;
       const int label_method = options.graded_class_start && small ? 3 : 1;
       const bool quads = std::count(meshes[i].face_sizes.begin(), meshes[i].face_sizes.end(), 4u) > 0;
-      const int method = stats.positions.method;
+      const int method = stats.positions.method, geometry_method = method >= 6 ? method - 2 : method;
       if (options.geometry_order && !small)
-        EXPECT_TRUE(method == 4 || (quads && method == 5)) << method;
+        EXPECT_TRUE(geometry_method == 4 || (quads && geometry_method == 5)) << method;
       else if (options.geometry_order)
-        EXPECT_TRUE(method == 4 || (quads && method == 5) || method == label_method) << method;
+        EXPECT_TRUE(geometry_method == 4 || (quads && geometry_method == 5) || method == label_method) << method;
       else
         EXPECT_EQ(stats.positions.method, label_method);
       EXPECT_EQ(file.quantization.method, stats.positions.method);
@@ -290,7 +292,8 @@ TEST(PredictedPositions, RoundTripsGeneratedMeshes) {
       uint32_t counted = 0;
       for (uint32_t n : stats.positions.vertices_by_kind) counted += n;
       EXPECT_EQ(counted, file.mesh.vertex_count()) << "mesh " << i;
-      EXPECT_EQ(file.version_minor, stats.positions.method == 5   ? 9
+      EXPECT_EQ(file.version_minor, stats.positions.method >= 6   ? 10
+                                    : stats.positions.method == 5 ? 9
                                     : stats.positions.method == 4 ? 8
                                     : stats.positions.method == 3 ? 7
                                     : stats.polygon.coding == kPolygonContextCoded ? 6
@@ -553,6 +556,90 @@ TEST(QuadTwist, QuadraticGridIsExact) {
   EXPECT_EQ(runs, int((n - 1) * (n - 1)));  // one quad closes on each vertex off row 0 and column 0
   EXPECT_EQ(exact_four, 0);
   EXPECT_GT(exact_five, runs * 9 / 10);
+}
+
+// 14.8's example: two candidates 226,608 units of 2^-16 apart (3 grid
+// steps) take context 2; equal ones 0; 1,024 steps apart or more 11; and
+// every decision takes context 0 in the methods without 14.8.
+TEST(MaskContexts, SpecExample) {
+  const uint32_t top[3] = {4095, 4095, 4095};
+  const PositionResidualModel with(top, ClassStart::kFlat, true), without(top);
+  VertexPrediction p;
+  p.candidates = 2;
+  const int64_t c0[3] = {25 * kOne, 20 * kOne, 5 * kOne}, c1[3] = {24 * kOne, 22 * kOne + 30000, 5 * kOne};
+  std::copy(c0, c0 + 3, p.candidate[0]);
+  std::copy(c1, c1 + 3, p.candidate[1]);
+  EXPECT_EQ(mask_context(with, p), 2);
+  EXPECT_EQ(mask_context(without, p), 0);
+  std::copy(c0, c0 + 3, p.candidate[1]);
+  EXPECT_EQ(mask_context(with, p), 0);
+  p.candidate[1][0] += 65535;  // less than a grid step apart
+  EXPECT_EQ(mask_context(with, p), 0);
+  p.candidate[1][0] += 1;  // one step: bitlen(1) = 1
+  EXPECT_EQ(mask_context(with, p), 1);
+  p.candidate[1][2] += 1022 * kOne;  // 1,023 steps
+  EXPECT_EQ(mask_context(with, p), 10);
+  p.candidate[1][2] += kOne;
+  EXPECT_EQ(mask_context(with, p), 11);
+  p.candidate[1][2] = int64_t(1) << 48;  // the largest distances stay at 11
+  EXPECT_EQ(mask_context(with, p), 11);
+  // The largest pair counts: a third candidate 5 steps from the first.
+  p.candidates = 3;
+  std::copy(c0, c0 + 3, p.candidate[1]);
+  std::copy(c0, c0 + 3, p.candidate[2]);
+  p.candidate[2][1] -= 5 * kOne;
+  EXPECT_EQ(mask_context(with, p), 3);
+}
+
+// 14.5, 14.8: from 10,000 vertices the encoder writes method 6 (format
+// 1.10) with the integers method 4 carries; on terraces, where a
+// parallelogram across a cliff is far off and the others agree, in fewer
+// bytes. Without mask_contexts, method 4; under 10,000 vertices too.
+TEST(MaskContexts, EncoderWritesMethodSixWhereItIsSmaller) {
+  const Mesh terraces = tools::make_terraces(100, 4, 9);
+  EncodeOptions options;
+  options.position_bits = 16;
+  const std::vector<uint8_t> six_bytes = encode_with(terraces, options);
+  const DecodedFile six = decode_all(six_bytes);
+  EXPECT_EQ(six.quantization.method, 6);
+  EXPECT_EQ(six.version_minor, 10);
+  options.mask_contexts = false;
+  const std::vector<uint8_t> four_bytes = encode_with(terraces, options);
+  const DecodedFile four = decode_all(four_bytes);
+  EXPECT_EQ(four.quantization.method, 4);
+  EXPECT_EQ(six.quantized, four.quantized);
+  EXPECT_LT(six_bytes.size(), four_bytes.size());
+  options.mask_contexts = true;
+  EXPECT_EQ(decode_all(encode_with(tools::make_terraces(98, 4, 9), options)).quantization.method, 4);  // 9,801
+}
+
+// Methods 6 and 7 written for any mesh (14.8 forced, as the vectors are)
+// decode to the integers methods 4 and 5 carry.
+TEST(MaskContexts, RoundTripsGeneratedMeshes) {
+  std::vector<Mesh> meshes = {tools::make_refined_sphere(2), tools::triangulated(tools::make_torus(20, 9)),
+                              tools::make_terraces(12, 3, 2)};
+  for (uint64_t seed = 1; seed <= 12; ++seed) {
+    tools::RandomSoupOptions o;
+    o.vertices = 40 + uint32_t(seed * 9);
+    o.faces = 30 + uint32_t(seed * 7);
+    meshes.push_back(tools::make_random_soup(seed, o));
+  }
+  for (const Mesh& mesh : meshes)
+    for (bool twist : {false, true}) {
+      const QuantizedPositions grid = quantize_positions(mesh.positions, 12);
+      const std::vector<uint8_t> payload =
+          encode_predicted_positions(grid, mesh, nullptr, CandidateChoice::kFewestBits, ClassStart::kFlat,
+                                     PredictionOrder::kGeometry, twist, /*mask_contexts=*/true);
+      ASSERT_FALSE(payload.empty());
+      QuantizationInfo info;
+      std::vector<uint32_t> q;
+      std::vector<float> positions;
+      ASSERT_TRUE(decode_positions(payload.data(), payload.size(), mesh, uint32_t(mesh.vertex_count()), &info, &q,
+                                   &positions)
+                      .ok());
+      EXPECT_EQ(info.method, twist ? 7 : 6);
+      EXPECT_EQ(q, grid.q);
+    }
 }
 
 // 14.5, 14.7: the encoder writes method 5 (format 1.9) on a smooth quad

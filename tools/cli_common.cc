@@ -159,6 +159,16 @@ double max_quantization_step(const QuantizationInfo& q) {
   return std::max({q.step[0], q.step[1], q.step[2]});
 }
 
+const char* position_method_traits(int method) {
+  switch (method) {
+    case 4: return ": geometry order";
+    case 5: return ": geometry order, quads' twist";
+    case 6: return ": geometry order, candidate contexts";
+    case 7: return ": geometry order, quads' twist, candidate contexts";
+    default: return "";
+  }
+}
+
 std::string human_bytes(uint64_t bytes) {
   char buf[64];
   if (bytes < 10 * 1024)

@@ -80,6 +80,10 @@ int drop_each_named(const char* command, const std::vector<std::string>& names, 
 // Largest per-axis quantization step of a decoded file (section 6.4).
 double max_quantization_step(const QuantizationInfo& q);
 
+// What a predicted POSN method (section 14.1) adds to method 1: "" for 1
+// and 3, else ": geometry order" and its additions (14.7, 14.8).
+const char* position_method_traits(int method);
+
 std::string human_bytes(uint64_t bytes);
 
 // `s` as the inside of a JSON string literal.

@@ -94,13 +94,15 @@ const char kHelp[] =
     "  --gim-store-blank   also code the samples of blank pixels (smooth planes\n"
     "                      for image tools, at some cost in bytes)\n"
     "  --format 1.N        write nothing that decoders older than 1.N cannot read:\n"
-    "                      1.8 predicts quads without their neighbours' twist\n"
+    "                      1.9 selects candidates without 14.8's contexts\n"
+    "                      (POSN methods 4 and 5, not 6 and 7), 1.8 predicts\n"
+    "                      quads without their neighbours' twist\n"
     "                      (POSN method 4, not 5), 1.7 writes predicted\n"
     "                      positions in the label order\n"
     "                      (method 1 or 3, not 4) and attribute values with\n"
     "                      coding 0 (not 4), 1.6 as method 1 only, 1.5\n"
     "                      also leaves out polygon coding 7, 1.4 also predicted\n"
-    "                      positions (deltas on the per-axis grid); default 1.9\n"
+    "                      positions (deltas on the per-axis grid); default 1.10\n"
     "  --uv-bits N         texture coordinates (spec 15) on a grid of 2^N - 1 steps\n"
     "                      over their range (default 12: 1/4 texel of a 1024\n"
     "                      texture)\n"
@@ -124,8 +126,8 @@ const char kHelp[] =
 // --format accepts: 1.4 decoders read method-0 positions, 1.5 decoders
 // predicted positions (method 1) and LEVL code 2 but not polygon coding 7,
 // 1.6 decoders that but not POSN method 3, 1.7 decoders not method 4, 1.8
-// decoders not method 5 (spec 11).
-constexpr int kNewestMinor = 9, kOldestTargetMinor = 4;
+// decoders not method 5, 1.9 decoders not methods 6 and 7 (spec 11).
+constexpr int kNewestMinor = 10, kOldestTargetMinor = 4;
 
 struct EncodeArgs {
   std::string input, output;
@@ -237,6 +239,8 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
 // error naming the option that needs a newer version.
 int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   EncodeOptions& o = args->options;
+  if (args->newest_minor >= 10) return -1;
+  o.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came with 1.10
   if (args->newest_minor >= 9) return -1;
   o.quad_twist = false;  // POSN method 5 (14.7) came with 1.9
   if (args->newest_minor >= 8) return -1;
@@ -306,10 +310,11 @@ int parse(int argc, char** argv, EncodeArgs* args) {
     if (name == "--gim" || name == "--sampling" || name == "--roi") continue;  // parse_gim
     if (name == "--grid" || name == "--step" || name == "--max-error" || name == "--positions") continue;
     if (name == "--format") {
-      if (value.size() != 3 || value.compare(0, 2, "1.") != 0 || value[2] < '0' + kOldestTargetMinor ||
-          value[2] > '0' + kNewestMinor)
-        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8 or 1.9, got '" + value + "'");
-      args->newest_minor = value[2] - '0';
+      long minor = 0;
+      if (value.compare(0, 2, "1.") != 0 || !parse_int(value.substr(2), kOldestTargetMinor, kNewestMinor, &minor) ||
+          value.substr(2) != std::to_string(minor))
+        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8, 1.9 or 1.10, got '" + value + "'");
+      args->newest_minor = int(minor);
       continue;
     }
     if (name == "--levels") {
@@ -432,15 +437,13 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
               8.0 * double(stats.total_bytes) / v, double(input_bytes) / double(stats.total_bytes));
   const double side = check.max_bbox_side > 0 ? check.max_bbox_side : 1.0;
   const PositionStats& ps = stats.positions;
+  const std::string positions_method =
+      ps.method == 0 ? "deltas (spec 6)"
+                     : "predicted (spec 14, method " + std::to_string(ps.method) + position_method_traits(ps.method) +
+                           (ps.graded_start ? (ps.method >= 4 ? ", graded start" : ": graded start") : "") + ")";
   std::printf("positions   %s, %s grid, step %.6g%s; bound %.6g, max error %.6g (%.3g of largest bbox side), "
               "rms %.6g\n",
-              ps.method == 5   ? (ps.graded_start ? "predicted (spec 14, method 5: geometry order, quads' twist, graded start)"
-                                                : "predicted (spec 14, method 5: geometry order, quads' twist)")
-              : ps.method == 4 ? (ps.graded_start ? "predicted (spec 14, method 4: geometry order, graded start)"
-                                                : "predicted (spec 14, method 4: geometry order)")
-              : ps.method == 3 ? "predicted (spec 14, method 3: graded start)"
-              : ps.method == 1 ? "predicted (spec 14, method 1)"
-                               : "deltas (spec 6)",
+              positions_method.c_str(),
               ps.step[0] == ps.step[1] && ps.step[1] == ps.step[2] ? "uniform" : "per-axis", ps.step[0],
               ps.step[0] == ps.step[1] && ps.step[1] == ps.step[2] ? "" : " (x)", ps.error_bound, check.max_error,
               check.max_error / side, check.rms_error);

@@ -54,6 +54,7 @@ namespace {
 // came later); they stay so.
 qmc::EncodeOptions format_1_6_options() {
   qmc::EncodeOptions options;
+  options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.graded_class_start = false;
   options.geometry_order = false;
   options.quad_twist = false;
@@ -2549,6 +2550,7 @@ void write_attribute_review_vectors(VectorWriter* w) {
 std::vector<uint8_t> encode_posn_as_written(const Mesh& mesh, int method, int bits,
                                             qmc::PositionGrid grid = qmc::PositionGrid::kUniform) {
   qmc::EncodeOptions options;
+  options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.position_bits = bits;
   options.position_grid = grid;
   options.position_method = qmc::PositionMethod::kPredicted;
@@ -2633,8 +2635,9 @@ void decode_grid(const Chunks& c, Mesh* faces, qmc::QuantizedPositions* grid) {
 // with quad_twist (14.7), else method 4, with start 0, or with the start its
 // vertex count gives (14.5) when start_by_count: the same integers, so the
 // mesh (and a progressive file's levels) do not change; QHDR says `minor`.
+// With mask_contexts, methods 6 and 7 (14.8) instead of 4 and 5.
 std::vector<uint8_t> with_posn_rewritten(const std::vector<uint8_t>& file, bool start_by_count, bool quad_twist,
-                                         uint8_t minor) {
+                                         uint8_t minor, bool mask_contexts = false) {
   Chunks c = split_chunks(file);
   Mesh faces;
   qmc::QuantizedPositions grid;
@@ -2644,7 +2647,7 @@ std::vector<uint8_t> with_posn_rewritten(const std::vector<uint8_t>& file, bool 
                                     : qmc::ClassStart::kFlat;
   c[find_chunk(c, qmc::kChunkPositions)].payload =
       qmc::encode_predicted_positions(grid, faces, nullptr, qmc::CandidateChoice::kFewestBits, start,
-                                      qmc::PredictionOrder::kGeometry, quad_twist);
+                                      qmc::PredictionOrder::kGeometry, quad_twist, mask_contexts);
   c[find_chunk(c, qmc::kChunkHeader)].payload = {1, minor};
   return join_chunks(c);
 }
@@ -2693,6 +2696,7 @@ void write_posn4_vectors(VectorWriter* w) {
   // 4.5: oRDR restores the input's order of a method-4 file.
   const Mesh scrambled = qmc::tools::make_scrambled(sphere, 67);
   qmc::EncodeOptions keep;
+  keep.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   keep.keep_order = true;
   w->valid("valid_ordr_posn4_scrambled", encode_with(scrambled, keep, "scrambled method-4 sphere"), &scrambled);
   // 12.2: a progressive file's base mesh in method 4.
@@ -2746,6 +2750,7 @@ std::vector<uint8_t> rewritten_as_method_5(const std::vector<uint8_t>& file) {
 // it is smaller than method 4; the generator fails if the encoder kept 4.
 std::vector<uint8_t> encode_posn5(const Mesh& mesh, int bits) {
   qmc::EncodeOptions options;
+  options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.position_bits = bits;
   options.position_method = qmc::PositionMethod::kPredicted;
   options.candidate_choice = qmc::CandidateChoice::kFewestBits;
@@ -2848,6 +2853,20 @@ Mesh twist_degenerate_quads() {
   return out;
 }
 
+// About 400 faces of 3 to 6 corners with a handle, two holes and
+// non-manifold edges (the posn5 and posn6 vectors).
+Mesh mixed_polygons(uint64_t seed) {
+  qmc::RandomPolygonMeshOptions options;
+  options.seed = seed;
+  options.genus = 1;
+  options.holes = 2;
+  options.min_degree = 3;
+  options.max_degree = 6;
+  options.target_faces = 400;
+  options.non_manifold = true;
+  return qmc::make_random_polygon_mesh(options);
+}
+
 void write_posn5_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   // What the encoder writes: a smooth quad sphere over 1,000 vertices
@@ -2862,21 +2881,15 @@ void write_posn5_vectors(VectorWriter* w) {
   // Rewritten as method 5: triangles, quads and larger faces with holes,
   // handles and non-manifold edges, where the twist's conditions (a quad
   // across, its corners decoded, 8 corners examined) fail often.
-  qmc::RandomPolygonMeshOptions mixed_options;
-  mixed_options.seed = 73;
-  mixed_options.genus = 1;
-  mixed_options.holes = 2;
-  mixed_options.min_degree = 3;
-  mixed_options.max_degree = 6;
-  mixed_options.target_faces = 400;
-  mixed_options.non_manifold = true;
-  const Mesh mixed = qmc::make_random_polygon_mesh(mixed_options);
+  const Mesh mixed = mixed_polygons(73);
   qmc::EncodeOptions options;
+  options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.position_bits = 12;
   w->valid("valid_posn5_mixed_polygons", rewritten_as_method_5(encode_with(mixed, options, "mixed polygons")), &mixed);
   // 14.7's example, its labels kept by indexed connectivity.
   const Mesh example = twist_example();
   qmc::EncodeOptions indexed;
+  indexed.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   indexed.position_bits = 4;
   indexed.connectivity = qmc::ConnectivityChoice::kIndexed;
   w->valid("valid_posn5_example", rewritten_as_method_5(encode_with(example, indexed, "14.7's example")), &example);
@@ -2898,6 +2911,7 @@ void write_posn5_vectors(VectorWriter* w) {
   Mesh textured = qmc::tools::make_refined_sphere(2);
   qmc::tools::add_chart_texcoords(&textured);
   qmc::EncodeOptions attributes;
+  attributes.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   attributes.position_bits = 12;
   w->valid("valid_posn5_with_texcoords", encode_posn_method(textured, attributes, 5), &textured);
 
@@ -2919,10 +2933,118 @@ void write_posn5_vectors(VectorWriter* w) {
   w->invalid("invalid_posn5_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
 }
 
+// The file's POSN written again as method 6 (14.8), or 7 with quad_twist,
+// with the start its vertex count gives (14.5); QHDR says 1.10.
+std::vector<uint8_t> rewritten_with_mask_contexts(const std::vector<uint8_t>& file, bool quad_twist) {
+  return with_posn_rewritten(file, true, quad_twist, 10, true);
+}
+
+// A torus of triangles whose vertices are pushed off the surface by up to
+// `amount` of its size: the parallelograms of a vertex disagree by anything
+// from nothing to thousands of grid steps at 16 bits, every context of 14.8.
+Mesh rough_torus(float amount) {
+  Mesh m = perturbed(qmc::tools::triangulated(qmc::tools::make_torus(40, 16)), 85, amount);
+  // A few vertices far off: the largest distances, s = 11.
+  for (size_t v = 0; v < m.vertex_count(); v += 97) m.positions[3 * v + 2] += 0.3f;
+  return m;
+}
+
+// Terraces of 9 x 9 vertices and a book of `fins` triangles on one edge of
+// them (a, b), the fins first in face order: a tip decoded late meets up to
+// 7 parallelograms across (a, b) in the earlier fins, of which 14.3.1 keeps
+// the first 4. Those lie near the grid and the later ones far off it, so
+// 14.8's D over the 4 kept is much smaller than over all of them.
+Mesh terraces_with_book(uint32_t fins) {
+  Mesh m = qmc::tools::make_terraces(8, 3, 1);
+  const uint32_t a = 4 * 9 + 4, b = a + 1;  // an interior edge of the grid
+  static constexpr float kHeights[8] = {0.002f, -0.003f, 0.004f, -0.001f, 0.9f, -1.1f, 1.4f, -0.7f};
+  Mesh book;
+  book.positions = m.positions;
+  for (uint32_t k = 0; k < fins; ++k) {
+    const uint32_t tip = uint32_t(book.vertex_count());
+    book.positions.insert(book.positions.end(), {0.5f * (m.positions[3 * a] + m.positions[3 * b]),
+                                                 m.positions[3 * a + 1] + 0.02f * float(k % 3),
+                                                 0.25f * kHeights[k % 8]});
+    book.face_sizes.push_back(3);
+    book.corners.insert(book.corners.end(), {a, b, tip});
+  }
+  book.face_sizes.insert(book.face_sizes.end(), m.face_sizes.begin(), m.face_sizes.end());
+  book.corners.insert(book.corners.end(), m.corners.begin(), m.corners.end());
+  return book;
+}
+
+void write_posn6_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  options.position_bits = 16;
+  // What the encoder writes where the contexts pay: terraces, where the
+  // parallelograms across a cliff are far off and the others agree.
+  const Mesh terraces = qmc::tools::make_terraces(100, 4, 9);
+  w->valid("valid_posn6_terraces", encode_posn_method(terraces, options, 6), &terraces);
+  // Rewritten as method 6: a rough torus at 16 bits, every context.
+  const Mesh rough = rough_torus(0.02f);
+  w->valid("valid_posn6_rough_torus", rewritten_with_mask_contexts(encode_with(rough, options, "rough torus"), false),
+           &rough);
+  // Rewritten as method 6: a smooth sphere of triangles over 1,000 vertices
+  // (start 0) and under (start 1).
+  const Mesh sphere = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(3)), 86, 0.002f);
+  options.position_bits = 14;
+  w->valid("valid_posn6_refined_sphere", rewritten_with_mask_contexts(encode_with(sphere, options, "sphere"), false),
+           &sphere);
+  const Mesh small = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(2)), 87, 0.004f);
+  options.position_bits = 12;
+  w->valid("valid_posn6_graded_start", rewritten_with_mask_contexts(encode_with(small, options, "small sphere"), false),
+           &small);
+  // Rewritten as method 7: 14.7's twist in the candidates that 14.8 compares,
+  // on quads around a pole, and on triangles, quads and larger faces with
+  // holes, handles and non-manifold edges.
+  const Mesh pole = quad_pole_disk(32, 6);
+  options.position_bits = 14;
+  w->valid("valid_posn7_pole", rewritten_with_mask_contexts(encode_with(pole, options, "pole"), true), &pole);
+  const Mesh mixed = mixed_polygons(88);
+  options.position_bits = 12;
+  w->valid("valid_posn7_mixed_polygons", rewritten_with_mask_contexts(encode_with(mixed, options, "mixed"), true),
+           &mixed);
+  // 14.8's D over the 4 candidates 14.3.1 keeps, not over all it meets:
+  // a book of 8 triangles on one edge, faces kept as they are.
+  const Mesh book = terraces_with_book(8);
+  qmc::EncodeOptions indexed = options;
+  indexed.connectivity = qmc::ConnectivityChoice::kIndexed;
+  w->valid("valid_posn6_book_of_8", rewritten_with_mask_contexts(encode_with(book, indexed, "book"), false), &book);
+  // 15.4: an aTTR's values take s = 0, whatever POSN's method.
+  Mesh textured = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(2)), 89, 0.004f);
+  qmc::tools::add_chart_texcoords(&textured);
+  w->valid("valid_posn6_with_texcoords",
+           rewritten_with_mask_contexts(encode_with(textured, options, "texcoords"), false), &textured);
+
+  // The rules of 14.1 and 14.4 on method 6's path, as for methods 4 and 5:
+  // header as 14.1, varint V, 0x86, start, grid, origin 12 bytes, step 8,
+  // three tops as varints, then the stream.
+  options.position_bits = 16;
+  const ChunkReplacer with_posn(encode_posn_method(terraces, options, 6), qmc::kChunkPositions);
+  const std::vector<uint8_t> payload = with_posn.payload();
+  std::vector<uint8_t> count;
+  qmc::put_varint(&count, terraces.vertex_count());
+  const size_t start = count.size() + 1, tops = start + 2 + 12 + 8;
+  size_t stream = tops;
+  for (int a = 0; a < 3; ++a)
+    while (payload[stream++] & 0x80) {
+    }
+  std::vector<uint8_t> p = payload;
+  p[start] = 2;
+  w->invalid("invalid_posn6_start_2", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn6_truncated_stream", with_posn({payload.begin(), payload.end() - 8}), ErrorCode::kTruncated);
+  p = {payload.begin(), payload.begin() + tops};
+  for (int a = 0; a < 3; ++a) qmc::put_varint(&p, 1);
+  p.insert(p.end(), payload.begin() + stream, payload.end());
+  w->invalid("invalid_posn6_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
+}
+
 // Section 15.9: aTTR coding 4, what `qmc encode` writes when it is the
 // smaller; the generator fails if the encoder kept coding 0 instead.
 std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, const char* what) {
   qmc::EncodeOptions options;
+  options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.geometry_order = posn_geometry_order;
   options.attribute_graded_start = false;  // codings 5 and 6 came after these vectors
   options.attribute_predicted_mapping = false;  // and mapping 3 (15.11)
@@ -3018,6 +3140,7 @@ void write_attribute_coding56_vectors(VectorWriter* w) {
   Mesh textured = perturbed(qmc::tools::triangulated(qmc::tools::make_torus(20, 8)), 75, 0.004f);
   qmc::tools::add_chart_texcoords(&textured);
   qmc::EncodeOptions options;
+  options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
   options.attribute_guided = false;             // and coding 7 (15.12)
   options.angle_weighted_normals = false;       // and coding 8 (15.13)
@@ -3241,6 +3364,7 @@ void write_attribute_coding7_vectors(VectorWriter* w) {
   // Texture coordinates with a seam on 12 x 12 irregular quads split in triangles, each option.
   const Mesh textured = jittered_textured_grid(12, 12, 91, true);
   qmc::EncodeOptions options;  // what `qmc encode` writes
+  options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   const std::vector<uint8_t> both = encode_coding7(textured, options, 1, "coding 7 texcoords");
   w->valid("valid_attr_coding7_texcoords", both, &textured);
   qmc::EncodeOptions labels = options;
@@ -3334,7 +3458,8 @@ void add_angle_weighted_normals(Mesh* mesh, bool crease) {
 void write_attribute_coding8_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   using namespace qmc::tools;
-  const qmc::EncodeOptions options;  // what `qmc encode` writes
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   // A bumpy grid of irregular triangles, and of quads, and the triangles with a crease.
   Mesh triangles = jittered_textured_grid(12, 12, 99, true);
   triangles.attributes.clear();
@@ -3421,6 +3546,7 @@ void write_attribute_mapping3_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   using namespace qmc::tools;
   qmc::EncodeOptions options;  // what `qmc encode` wrote
+  options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.attribute_guided = false;  // coding 7 (15.12) came after these vectors
   options.angle_weighted_normals = false;  // and coding 8 (15.13)
   options.quad_twist = false;              // and POSN method 5 (14.7)
@@ -3517,6 +3643,7 @@ int main(int argc, char** argv) {
   write_attribute_coding7_vectors(&w);
   write_attribute_coding8_vectors(&w);
   write_posn5_vectors(&w);
+  write_posn6_vectors(&w);
   w.finish();
   return 0;
 }

@@ -19,6 +19,7 @@ const char kUsage[] =
     "  polygon N | book N | star N   one N-gon; N triangles on one edge; N triangles on one vertex\n"
     "  deltoidal                the 60-quad sphere (deltoidal hexecontahedron)\n"
     "  sphere-series LEVELS     it after LEVELS Catmull-Clark steps, on the unit sphere (0..10)\n"
+    "  terraces N STEPS         an N x N grid of triangles in STEPS flat rings with cliffs between\n"
     "  catmull-clark IN         IN (a mesh file) after one Catmull-Clark step\n";
 
 int param(int argc, char** argv, int i) {
@@ -71,6 +72,7 @@ int main(int argc, char** argv) {
   else if (kind == "soup") mesh = make_random_soup(uint64_t(param(argc, argv, 2)), RandomSoupOptions{});
   else if (kind == "deltoidal") mesh = make_deltoidal_hexecontahedron();
   else if (kind == "sphere-series") mesh = make_refined_sphere(levels_param(argc, argv, 2));
+  else if (kind == "terraces") mesh = make_terraces(uint32_t(param(argc, argv, 2)), uint32_t(param(argc, argv, 3)), 9);
   else if (kind == "catmull-clark") {
     if (argc != 4) {
       std::fputs(kUsage, stderr);

@@ -10,7 +10,7 @@
 namespace {
 
 const char kUsage[] =
-    "qmc - mesh compression codec (format version 1.9, spec/qmc-format.md)\n"
+    "qmc - mesh compression codec (format version 1.10, spec/qmc-format.md)\n"
     "\n"
     "usage: qmc COMMAND [ARGS]\n"
     "\n"

@@ -109,6 +109,12 @@ struct EncodeOptions {
   // 3-14 % of their positions on the corpus). false keeps method 4, which
   // 1.8 decoders read.
   bool quad_twist = true;
+  // With geometry_order: the decisions that select a vertex's candidates
+  // take a context from how far apart the candidates are, POSN methods 6
+  // and 7 (format 1.10, spec 14.8), written for meshes of 10,000 vertices
+  // or more (spec 14.5: face.obj's positions 6.4 % smaller at 12 bits,
+  // beetle's 4.8 %). false keeps methods 4 and 5, which 1.9 decoders read.
+  bool mask_contexts = true;
   // Attribute values on a grid may take aTTR coding 4 (spec 15.9, 14.6's
   // order over the attribute mesh) where it is smaller than coding 0: 2-7 %
   // of the corpus's texture coordinates. Decoders of the revisions before

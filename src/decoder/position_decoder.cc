@@ -25,6 +25,7 @@ Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadCh
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (14.1)
 constexpr uint8_t kGeometryOrderSelector = 0x84;                         // method 4 (14.1, 14.6)
 constexpr uint8_t kQuadTwistSelector = 0x85;                             // method 5 (14.1, 14.7)
+constexpr uint8_t kMaskContextSelectors[2] = {0x86, 0x87};               // methods 6 and 7 (14.1, 14.8)
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
   for (int a = 0; a < 3; ++a)
@@ -75,7 +76,7 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
     return bad_payload("vertex_count " + std::to_string(count) + " differs from CONN's " +
                        std::to_string(vertex_count));
   if (selector == kPredictedSelector || selector == kGradedSelector || selector == kGeometryOrderSelector ||
-      selector == kQuadTwistSelector) {
+      selector == kQuadTwistSelector || selector == kMaskContextSelectors[0] || selector == kMaskContextSelectors[1]) {
     info->method = selector - 0x80;
     info->graded_start = selector == kGradedSelector;
     if (selector >= kGeometryOrderSelector) {
@@ -89,7 +90,7 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
   }
   if (selector >= 0x80)
     return Status(ErrorCode::kUnsupportedFeature, "POSN: method " + std::to_string(selector - 0x80) +
-                                                      " is not defined (section 14.1 knows 0, 1, 3, 4 and 5)");
+                                                      " is not defined (section 14.1 knows 0, 1, 3, 4, 5, 6 and 7)");
   if (selector < 1 || selector > 30) return bad_payload("quantization bits " + std::to_string(selector) + " outside 1..30");
   info->method = 0;
   info->bits = selector;
@@ -142,7 +143,7 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
     return Status(ErrorCode::kTruncated, names.chunk + ": the range-coded stream ends inside " + names.item + " " +
                                              std::to_string(v) + " (section 14.4)");
   };
-  select_candidates(p, code_candidate_mask(rc, model, p->candidates, 0), top);
+  select_candidates(p, code_candidate_mask(rc, model, p->candidates, 0, mask_context(*model, *p)), top);
   if (rc->overrun()) return truncated();
   uint32_t magnitude[3] = {0, 0, 0};
   for (int a = 0; a < 3; ++a) {
@@ -168,7 +169,8 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
 // Messages name the i-th vertex visited.
 Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& faces, uint32_t count,
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
-                             ClassStart start, PredictionOrder order, const PositionGuide* guide, bool quad_twist) {
+                             ClassStart start, PredictionOrder order, const PositionGuide* guide, bool quad_twist,
+                             bool mask_contexts) {
   if (!range_stream_justifies(count, size))  // section 14.1, before anything is reserved
     return Status(ErrorCode::kLimitExceeded, names.chunk + ": " + std::to_string(count) + " " + names.items +
                                                  " for " + std::to_string(size) +
@@ -180,7 +182,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   visit.guide_by(guide);
   visit.twist_quads(quad_twist);
   std::vector<uint32_t> activity(count);
-  std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start));
+  std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start, mask_contexts));
   RangeDecoder rc(stream, size);
   if (rc.bad_start())
     return Status(ErrorCode::kBadChunkPayload,
@@ -216,7 +218,8 @@ Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, 
     const ClassStart start = info->graded_start ? ClassStart::kGraded : ClassStart::kFlat;
     const PredictionOrder order = info->method >= 4 ? PredictionOrder::kGeometry : PredictionOrder::kLabels;
     if (Status s = decode_predicted_grid(in.cursor(), in.remaining(), faces, vertex_count, info->top.data(), names,
-                                         quantized, start, order, nullptr, info->method == 5);
+                                         quantized, start, order, nullptr, info->method == 5 || info->method == 7,
+                                         info->method >= 6);
         !s.ok())
       return s;
   } else {

@@ -23,6 +23,7 @@ namespace {
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (section 14.1)
 constexpr uint8_t kGeometryOrderSelector = 0x84;                         // method 4 (14.1, 14.6)
 constexpr uint8_t kQuadTwistSelector = 0x85;                             // method 5 (14.1, 14.7)
+constexpr uint8_t kMaskContextSelectors[2] = {0x86, 0x87};               // methods 6 and 7 (14.1, 14.8)
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
 
 void bounding_box(const std::vector<float>& positions, QuantizedPositions* out) {
@@ -230,7 +231,7 @@ class MeteredRangeEncoder {
 // it cannot win (costs only add up), and a good first bound stops most of
 // them after an axis or two. The choice is the same as in ascending order.
 unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidualModel* model, CandidateChoice choice,
-                         VertexPrediction* p) {
+                         int context, VertexPrediction* p) {
   if (p->candidates < 2) {
     const unsigned only = p->candidates == 1 ? 1u : 0u;
     select_candidates(p, only, top);
@@ -250,7 +251,7 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
     CostMeter meter;
     double distance = 0;
     const auto cost = [&] { return fewest_bits ? meter.bits : distance; };
-    if (fewest_bits) code_candidate_mask(&meter, model, p->candidates, mask);
+    if (fewest_bits) code_candidate_mask(&meter, model, p->candidates, mask, context);
     uint32_t magnitude[3] = {0, 0, 0};
     for (int a = 0; a < 3 && wins(cost()); ++a) {
       const int64_t r = int64_t(q[a]) - p->value[a];
@@ -271,12 +272,13 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
 }
 
 // 14.2 - 14.4 over a visit built for q's vertices (its order, guide and
-// twist set).
+// twist set), with 14.8's mask contexts or not.
 std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t top[3], const PredictionVisit& visit,
-                                  PositionStats* stats, CandidateChoice choice, ClassStart start) {
+                                  PositionStats* stats, CandidateChoice choice, ClassStart start,
+                                  bool mask_contexts = false) {
   const uint32_t n = uint32_t(q.size() / 3);
   std::vector<uint32_t> activity(n);
-  std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start));
+  std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start, mask_contexts));
   MeteredRangeEncoder rc;
   PositionStats local;
   PositionStats& st = stats ? *stats : local;
@@ -285,8 +287,9 @@ std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t
     const size_t v = visit.item(i);
     visit.predict(i, q.data(), activity.data(), top, &p);
     const double before = rc.meter.bits;
-    const unsigned mask = best_candidates(&q[3 * v], top, &model[0], choice, &p);
-    code_candidate_mask(&rc, &model[0], p.candidates, mask);
+    const int context = mask_context(model[0], p);
+    const unsigned mask = best_candidates(&q[3 * v], top, &model[0], choice, context, &p);
+    code_candidate_mask(&rc, &model[0], p.candidates, mask, context);
     uint32_t magnitude[3] = {0, 0, 0};
     for (int a = 0; a < 3; ++a) {
       const int64_t r = int64_t(q[3 * v + a]) - p.value[a];
@@ -303,13 +306,16 @@ std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t
 // 14.1: the payload of a predicted POSN, its header and the stream; empty
 // when the vertices cost too little for 14.1's bound.
 std::vector<uint8_t> predicted_payload(const QuantizedPositions& positions, ClassStart start, PredictionOrder order,
-                                       bool quad_twist, const std::vector<uint8_t>& stream) {
+                                       bool quad_twist, bool mask_contexts, const std::vector<uint8_t>& stream) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
   if (!range_stream_justifies(n, stream.size())) return {};
   std::vector<uint8_t> payload;
   put_varint(&payload, n);
   if (order == PredictionOrder::kGeometry) {
-    put_u8(&payload, quad_twist ? kQuadTwistSelector : kGeometryOrderSelector);
+    if (mask_contexts)
+      put_u8(&payload, kMaskContextSelectors[quad_twist ? 1 : 0]);
+    else
+      put_u8(&payload, quad_twist ? kQuadTwistSelector : kGeometryOrderSelector);
     put_u8(&payload, start == ClassStart::kGraded ? 1 : 0);
   } else {
     put_u8(&payload, start == ClassStart::kGraded ? kGradedSelector : kPredictedSelector);
@@ -328,21 +334,23 @@ std::vector<uint8_t> predicted_payload(const QuantizedPositions& positions, Clas
 // 14.2 - 14.4 in label order or 14.6's geometry order.
 std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const uint32_t top[3], const Mesh& faces,
                                            PositionStats* stats, CandidateChoice choice, ClassStart start,
-                                           PredictionOrder order, const PositionGuide* guide, bool quad_twist) {
+                                           PredictionOrder order, const PositionGuide* guide, bool quad_twist,
+                                           bool mask_contexts) {
   VertexCorners corners;
   corners.build(uint32_t(q.size() / 3), faces.face_sizes, faces.corners);
   PredictionVisit visit(corners, order);
   visit.guide_by(guide);
   visit.twist_quads(quad_twist);
-  return encode_visit(q, top, visit, stats, choice, start);
+  return encode_visit(q, top, visit, stats, choice, start, mask_contexts);
 }
 
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
                                                 PositionStats* stats, CandidateChoice choice, ClassStart start,
-                                                PredictionOrder order, bool quad_twist) {
-  return predicted_payload(positions, start, order, quad_twist,
+                                                PredictionOrder order, bool quad_twist, bool mask_contexts) {
+  mask_contexts = mask_contexts && order == PredictionOrder::kGeometry;
+  return predicted_payload(positions, start, order, quad_twist, mask_contexts,
                            encode_predicted_grid(positions.q, positions.top.data(), faces, stats, choice, start,
-                                                 order, nullptr, quad_twist));
+                                                 order, nullptr, quad_twist, mask_contexts));
 }
 
 namespace {
@@ -387,12 +395,14 @@ bool twist_pays(const QuantizedPositions& positions, PredictionVisit* visit) {
 }  // namespace
 
 // The predicted payload of `order` (with 14.7's twist where twist_pays:
-// method 5), and under kGradedStartBelow vertices (where coding twice costs
-// little) the smaller of it and the label order's: method 4's gain is then a
-// few bytes either way (fish_control_mesh at 14 bits: 516 against 514).
+// method 5), with 14.8's mask contexts (methods 6 and 7) where mask_contexts
+// allows it and the mesh has kMaskContextsFrom vertices or more; and under
+// kGradedStartBelow vertices (where coding twice
+// costs little) the smaller of it and the label order's: method 4's gain is
+// then a few bytes either way (fish_control_mesh at 14 bits: 516 against 514).
 std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions, const Mesh& faces,
                                              CandidateChoice choice, ClassStart start, PredictionOrder order,
-                                             bool quad_twist, PositionStats* stats) {
+                                             bool quad_twist, bool mask_contexts, PositionStats* stats) {
   const PositionStats before = *stats;  // the coder adds its counts to stats
   // The corners, and 14.6's order, built once for every payload tried.
   VertexCorners corners;
@@ -401,15 +411,20 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   const bool twisted = order == PredictionOrder::kGeometry && quad_twist && has_quads(faces) &&
                        twist_pays(positions, &visit);
   visit.twist_quads(twisted);
-  std::vector<uint8_t> best = predicted_payload(
-      positions, start, order, twisted, encode_visit(positions.q, positions.top.data(), visit, stats, choice, start));
+  const uint32_t* top = positions.top.data();
+  const bool contexts =
+      mask_contexts && order == PredictionOrder::kGeometry && positions.q.size() / 3 >= kMaskContextsFrom;
+  std::vector<uint8_t> best =
+      predicted_payload(positions, start, order, twisted, contexts,
+                        encode_visit(positions.q, top, visit, stats, choice, start, contexts));
   int method = twisted ? 5 : order == PredictionOrder::kGeometry ? 4 : start == ClassStart::kGraded ? 3 : 1;
+  if (contexts) method += 2;
   if (order == PredictionOrder::kGeometry && positions.q.size() / 3 < kGradedStartBelow) {
     PositionStats label_stats = before;
     const PredictionVisit labels_visit(corners, PredictionOrder::kLabels);
     std::vector<uint8_t> labels =
-        predicted_payload(positions, start, PredictionOrder::kLabels, false,
-                          encode_visit(positions.q, positions.top.data(), labels_visit, &label_stats, choice, start));
+        predicted_payload(positions, start, PredictionOrder::kLabels, false, false,
+                          encode_visit(positions.q, top, labels_visit, &label_stats, choice, start));
     if (!labels.empty() && labels.size() <= best.size()) {
       best = std::move(labels);
       *stats = label_stats;
@@ -423,7 +438,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
 
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces, PositionMethod method,
                                       CandidateChoice choice, ClassStart start, PredictionOrder order,
-                                      bool quad_twist, PositionStats* stats) {
+                                      bool quad_twist, bool mask_contexts, PositionStats* stats) {
   *stats = PositionStats{};
   stats->step = positions.step;
   stats->top = positions.top;
@@ -434,7 +449,8 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const
   if (method == PositionMethod::kDeltas) return deltas;
   if (positions.q.size() / 3 >= kGradedStartBelow) start = ClassStart::kFlat;
   PositionStats predicted_stats = *stats;
-  std::vector<uint8_t> predicted = encode_predicted_choice(positions, faces, choice, start, order, quad_twist, &predicted_stats);
+  std::vector<uint8_t> predicted =
+      encode_predicted_choice(positions, faces, choice, start, order, quad_twist, mask_contexts, &predicted_stats);
   if (predicted.empty()) {
     // Only vertices that all coincide cost so little (section 14.1); on
     // one point method 0's per-axis grid gives the same positions.

@@ -44,6 +44,15 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions);
 // 12 bits: 6.5 % more), so method 1 stays.
 inline constexpr size_t kGradedStartBelow = 1000;
 
+// 14.5: from this many vertices the encoder writes 14.8's contexts (POSN
+// methods 6 and 7). On the corpus's 7 meshes of that size, at 12, 14 and 16
+// bits, POSN is smaller with them in 19 of 21 cases (face.obj by 2.8-6.4 %,
+// beetle by 2.2-4.8 %) and larger in 2 (camelhead by 0.11 % and 0.02 %);
+// on its meshes of 1,000-5,000 vertices larger in 17 of 24 (up to 1.3 %:
+// 12 sets of probabilities learn too slowly there). A rule, not a second
+// pass: the encode costs nothing more.
+inline constexpr size_t kMaskContextsFrom = 10000;
+
 // Sections 14.2 - 14.4 over any faces whose corners are below q.size() / 3:
 // the range-coded stream of POSN method 1, 3 or 4 (in 14.6's order) or of
 // an aTTR's values (15.4, 15.9, 15.10, 15.12 with a guide). The caller
@@ -52,17 +61,19 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
                                            PositionStats* stats, CandidateChoice choice,
                                            ClassStart start = ClassStart::kFlat,
                                            PredictionOrder order = PredictionOrder::kLabels,
-                                           const PositionGuide* guide = nullptr, bool quad_twist = false);
+                                           const PositionGuide* guide = nullptr, bool quad_twist = false,
+                                           bool mask_contexts = false);
 
 // Method 1, or 3 with the graded start (section 14), or 4 in the geometry
-// order, over the file's faces; stats may be null. Empty when the vertices
-// cost too little for 14.1's bound (all on one point).
+// order (5 with quad_twist, 6 or 7 with mask_contexts too), over the file's
+// faces; stats may be null. Empty when the vertices cost too little for
+// 14.1's bound (all on one point).
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
                                                 PositionStats* stats,
                                                 CandidateChoice choice = CandidateChoice::kFewestBits,
                                                 ClassStart start = ClassStart::kFlat,
                                                 PredictionOrder order = PredictionOrder::kLabels,
-                                                bool quad_twist = false);
+                                                bool quad_twist = false, bool mask_contexts = false);
 
 // 14.4.1's start when the options ask for POSN method 3.
 inline ClassStart class_start(const EncodeOptions& options) {
@@ -76,10 +87,12 @@ inline PredictionOrder prediction_order(const EncodeOptions& options) {
 
 // The POSN payload the options ask for: predicted positions (method 4 in
 // the geometry order, or 5 where quad_twist allows it and it is smaller,
-// else 3 with `start` graded under 1,000 vertices, or 1), method 0, or the
+// either as 6 or 7 where mask_contexts allows it and that is smaller, else
+// 3 with `start` graded under 1,000 vertices, or 1), method 0, or the
 // smaller of the two when both can carry the grid. Fills stats.
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces,
                                       PositionMethod method, CandidateChoice choice, ClassStart start,
-                                      PredictionOrder order, bool quad_twist, PositionStats* stats);
+                                      PredictionOrder order, bool quad_twist, bool mask_contexts,
+                                      PositionStats* stats);
 
 }  // namespace qmc

@@ -311,6 +311,31 @@ Mesh make_torus(int major, int minor, float R, float r) {
   return mesh;
 }
 
+Mesh make_terraces(uint32_t n, uint32_t steps, uint64_t seed) {
+  n = std::max<uint32_t>(n, 1);
+  steps = std::max<uint32_t>(steps, 1);
+  Mesh mesh;
+  for (uint32_t j = 0; j <= n; ++j)
+    for (uint32_t i = 0; i <= n; ++i) {
+      const int64_t di = 2 * int64_t{i} - n, dj = 2 * int64_t{j} - n;
+      const int64_t level = (di * di + dj * dj) * steps / (2 * int64_t{n} * n);
+      add_vertex(&mesh, float(i) / float(n), float(j) / float(n), float(level) / float(4 * steps));
+    }
+  SplitMix64 random(seed);
+  for (uint32_t j = 0; j < n; ++j)
+    for (uint32_t i = 0; i < n; ++i) {
+      const uint32_t a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      if (random.next() % 2) {
+        add_face(&mesh, {a, b, d});
+        add_face(&mesh, {a, d, c});
+      } else {
+        add_face(&mesh, {a, b, c});
+        add_face(&mesh, {b, d, c});
+      }
+    }
+  return mesh;
+}
+
 Mesh make_grid(int nx, int ny) {
   const uint32_t cols = static_cast<uint32_t>(std::max(nx, 1));
   const uint32_t rows = static_cast<uint32_t>(std::max(ny, 1));

@@ -42,6 +42,13 @@ qmc::Mesh make_torus(int major, int minor, float R = 1.f, float r = 0.35f);
 // bump, faces counter-clockwise seen from +z. Sizes below 1 are treated as 1.
 qmc::Mesh make_grid(int nx, int ny);
 
+// Circular terraces: an n x n grid over [0,1]^2 (n >= 1) of triangles, each
+// cell split along a diagonal the seed picks, at height level / (4 steps)
+// with level = floor(steps r^2 / (2 n^2)), r^2 = (2i - n)^2 + (2j - n)^2:
+// flat rings with a cliff between two. Integer arithmetic and exact
+// divisions only, so every platform builds the same mesh.
+qmc::Mesh make_terraces(uint32_t n, uint32_t steps, uint64_t seed);
+
 // Deltoidal hexecontahedron with its vertices on the unit sphere: the thesis's
 // "60-quad sphere". 62 vertices -- the 12 icosahedron vertices (valence 5),
 // then the 20 icosahedron face centres (the dodecahedron's vertices, valence
