@@ -2853,6 +2853,33 @@ Mesh twist_degenerate_quads() {
   return out;
 }
 
+// The rules of 14.1 and 14.4 on the path of a method with the start byte
+// (4 - 7), on `file` (its POSN one of them, a single-step grid): start 2,
+// the stream cut short, and tops of 1, which no residual fits. The payload
+// is varint V, selector, start, grid, origin 12 bytes, step 8, three tops
+// as varints, then the stream.
+void write_geometry_order_rejections(VectorWriter* w, const std::string& prefix, const std::vector<uint8_t>& file,
+                                     size_t vertex_count) {
+  using qmc::ErrorCode;
+  const ChunkReplacer with_posn(file, qmc::kChunkPositions);
+  const std::vector<uint8_t> payload = with_posn.payload();
+  std::vector<uint8_t> count;
+  qmc::put_varint(&count, vertex_count);
+  const size_t start = count.size() + 1, tops = start + 2 + 12 + 8;
+  qmc::ByteReader after_tops(payload.data() + tops, payload.size() - tops);
+  for (uint64_t top = 0, a = 0; a < 3; ++a) after_tops.get_varint(&top);
+  const size_t stream = size_t(after_tops.cursor() - payload.data());
+  std::vector<uint8_t> p = payload;
+  p[start] = 2;
+  w->invalid("invalid_" + prefix + "_start_2", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_" + prefix + "_truncated_stream", with_posn({payload.begin(), payload.end() - 8}),
+             ErrorCode::kTruncated);
+  p = {payload.begin(), payload.begin() + tops};
+  for (int a = 0; a < 3; ++a) qmc::put_varint(&p, 1);
+  p.insert(p.end(), payload.begin() + stream, payload.end());
+  w->invalid("invalid_" + prefix + "_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
+}
+
 // About 400 faces of 3 to 6 corners with a handle, two holes and
 // non-manifold edges (the posn5 and posn6 vectors).
 Mesh mixed_polygons(uint64_t seed) {
@@ -2915,22 +2942,8 @@ void write_posn5_vectors(VectorWriter* w) {
   attributes.position_bits = 12;
   w->valid("valid_posn5_with_texcoords", encode_posn_method(textured, attributes, 5), &textured);
 
-  // The rules of 14.1 and 14.4 on method 5's path, as for method 4: header
-  // as 14.1, varint V, 0x85, start, grid, origin 12 bytes, step 8, three
-  // tops of 2 bytes at 14 bits, then the stream.
-  const ChunkReplacer with_posn(encode_posn5(sphere, 14), qmc::kChunkPositions);
-  const std::vector<uint8_t> payload = with_posn.payload();
-  std::vector<uint8_t> count;
-  qmc::put_varint(&count, sphere.vertex_count());
-  const size_t start = count.size() + 1, tops = start + 2 + 12 + 8, stream = tops + 6;
-  std::vector<uint8_t> p = payload;
-  p[start] = 2;
-  w->invalid("invalid_posn5_start_2", with_posn(p), ErrorCode::kBadChunkPayload);
-  w->invalid("invalid_posn5_truncated_stream", with_posn({payload.begin(), payload.end() - 8}), ErrorCode::kTruncated);
-  p = {payload.begin(), payload.begin() + tops};
-  for (int a = 0; a < 3; ++a) qmc::put_varint(&p, 1);
-  p.insert(p.end(), payload.begin() + stream, payload.end());
-  w->invalid("invalid_posn5_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
+  // The rules of 14.1 and 14.4 on method 5's path, as for method 4.
+  write_geometry_order_rejections(w, "posn5", encode_posn5(sphere, 14), sphere.vertex_count());
 }
 
 // The file's POSN written again as method 6 (14.8), or 7 with quad_twist,
@@ -3017,27 +3030,9 @@ void write_posn6_vectors(VectorWriter* w) {
   w->valid("valid_posn6_with_texcoords",
            rewritten_with_mask_contexts(encode_with(textured, options, "texcoords"), false), &textured);
 
-  // The rules of 14.1 and 14.4 on method 6's path, as for methods 4 and 5:
-  // header as 14.1, varint V, 0x86, start, grid, origin 12 bytes, step 8,
-  // three tops as varints, then the stream.
+  // The rules of 14.1 and 14.4 on method 6's path, as for methods 4 and 5.
   options.position_bits = 16;
-  const ChunkReplacer with_posn(encode_posn_method(terraces, options, 6), qmc::kChunkPositions);
-  const std::vector<uint8_t> payload = with_posn.payload();
-  std::vector<uint8_t> count;
-  qmc::put_varint(&count, terraces.vertex_count());
-  const size_t start = count.size() + 1, tops = start + 2 + 12 + 8;
-  size_t stream = tops;
-  for (int a = 0; a < 3; ++a)
-    while (payload[stream++] & 0x80) {
-    }
-  std::vector<uint8_t> p = payload;
-  p[start] = 2;
-  w->invalid("invalid_posn6_start_2", with_posn(p), ErrorCode::kBadChunkPayload);
-  w->invalid("invalid_posn6_truncated_stream", with_posn({payload.begin(), payload.end() - 8}), ErrorCode::kTruncated);
-  p = {payload.begin(), payload.begin() + tops};
-  for (int a = 0; a < 3; ++a) qmc::put_varint(&p, 1);
-  p.insert(p.end(), payload.begin() + stream, payload.end());
-  w->invalid("invalid_posn6_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
+  write_geometry_order_rejections(w, "posn6", encode_posn_method(terraces, options, 6), terraces.vertex_count());
 }
 
 // Section 15.9: aTTR coding 4, what `qmc encode` writes when it is the

@@ -23,9 +23,8 @@ Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadCh
 
 // Section 14.1: the byte after vertex_count selects the method.
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (14.1)
-constexpr uint8_t kGeometryOrderSelector = 0x84;                         // method 4 (14.1, 14.6)
-constexpr uint8_t kQuadTwistSelector = 0x85;                             // method 5 (14.1, 14.7)
-constexpr uint8_t kMaskContextSelectors[2] = {0x86, 0x87};               // methods 6 and 7 (14.1, 14.8)
+// Methods 4 - 7 (14.1, 14.6 - 14.8), 0x84 .. 0x87, all with the start byte.
+constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x87;
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
   for (int a = 0; a < 3; ++a)
@@ -75,11 +74,11 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
   if (count != vertex_count)
     return bad_payload("vertex_count " + std::to_string(count) + " differs from CONN's " +
                        std::to_string(vertex_count));
-  if (selector == kPredictedSelector || selector == kGradedSelector || selector == kGeometryOrderSelector ||
-      selector == kQuadTwistSelector || selector == kMaskContextSelectors[0] || selector == kMaskContextSelectors[1]) {
+  const bool geometry_order = selector >= kFirstGeometryOrderSelector && selector <= kLastGeometryOrderSelector;
+  if (selector == kPredictedSelector || selector == kGradedSelector || geometry_order) {
     info->method = selector - 0x80;
     info->graded_start = selector == kGradedSelector;
-    if (selector >= kGeometryOrderSelector) {
+    if (geometry_order) {
       uint8_t start = 0;
       if (!in->get_u8(&start))
         return bad_payload("method " + std::to_string(info->method) + "'s start byte missing (section 14.1)");
@@ -89,8 +88,9 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
     return read_grid(in, info);
   }
   if (selector >= 0x80)
-    return Status(ErrorCode::kUnsupportedFeature, "POSN: method " + std::to_string(selector - 0x80) +
-                                                      " is not defined (section 14.1 knows 0, 1, 3, 4, 5, 6 and 7)");
+    return Status(ErrorCode::kUnsupportedFeature,
+                  "POSN: method " + std::to_string(selector - 0x80) +
+                      " is not defined (section 14.1 knows 0, 1, 3, 4, 5, 6 and 7)");
   if (selector < 1 || selector > 30) return bad_payload("quantization bits " + std::to_string(selector) + " outside 1..30");
   info->method = 0;
   info->bits = selector;

@@ -243,7 +243,7 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
   int64_t best_value[3] = {0, 0, 0};
   PredictionKind best_kind = PredictionKind::kPrevious;
   const bool fewest_bits = choice == CandidateChoice::kFewestBits;
-  for (unsigned k = 0; k <= all - 1; ++k) {
+  for (unsigned k = 0; k < all; ++k) {
     const unsigned mask = k == 0 ? all : k;
     // Against a higher mask (only `all` is costed before a lower one) a tie wins.
     const auto wins = [&](double cost) { return cost < best_cost || (cost == best_cost && mask < best); };
@@ -397,9 +397,9 @@ bool twist_pays(const QuantizedPositions& positions, PredictionVisit* visit) {
 // The predicted payload of `order` (with 14.7's twist where twist_pays:
 // method 5), with 14.8's mask contexts (methods 6 and 7) where mask_contexts
 // allows it and the mesh has kMaskContextsFrom vertices or more; and under
-// kGradedStartBelow vertices (where coding twice
-// costs little) the smaller of it and the label order's: method 4's gain is
-// then a few bytes either way (fish_control_mesh at 14 bits: 516 against 514).
+// kGradedStartBelow vertices (where coding twice costs little) the smaller
+// of it and the label order's: method 4's gain is then a few bytes either
+// way (fish_control_mesh at 14 bits: 516 against 514).
 std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions, const Mesh& faces,
                                              CandidateChoice choice, ClassStart start, PredictionOrder order,
                                              bool quad_twist, bool mask_contexts, PositionStats* stats) {
