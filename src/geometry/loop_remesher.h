@@ -47,6 +47,8 @@ struct RemeshStats {
   uint32_t line_hits = 0;    // vertices moved along their limit normal
   uint32_t fallbacks = 0;    // vertices moved to the closest point instead
   double max_move = 0;       // largest distance a vertex of the subdivided mesh moved
+  // The same for the levels 1..K-1 moved onto the surface (K >= 3, remesh()).
+  uint32_t intermediate_line_hits = 0, intermediate_fallbacks = 0;
   // Per inverse step j = K..1 (index K - j): Gauss-Seidel sweeps and the final
   // largest residual, relative to the size of the right-hand side.
   std::vector<int> inverse_iterations;
@@ -62,7 +64,12 @@ struct RemeshStats {
 // system for control[j]'s vertex points; control[0] is the base mesh.
 //
 // Each vertex of the subdivided mesh moves onto_surface along its limit
-// normal, within kNormalReach of the bounding-box diagonal.
+// normal, within kNormalReach of the bounding-box diagonal. With K >= 3 so
+// does each vertex of every level 1..K-1 before that level is subdivided
+// again, so that the normals of the next level start near the surface (as
+// normal meshes are built level by level: Guskov, Vidimce, Sweldens and
+// Schroeder, "Normal Meshes", SIGGRAPH 2000); the inverse steps then
+// overwrite control[0..K-1] as above.
 //
 // `bvh` is the original's triangles (loop_mesh_triangles(original)).
 // Errors: adjusted_base that build_loop_edges rejects (its error), levels
