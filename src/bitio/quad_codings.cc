@@ -82,6 +82,31 @@ const FixedLookup& lookup_of(QuadCoding coding, QuadClass context) {
   return tables[int(coding) - 1][int(context)];
 }
 
+// The code words of a fixed table by (type, next class), so that a stream
+// is written and measured without reading the table's strings per quad.
+struct FixedWords {
+  QuadCodeWord word[kQuadTypeCount + 1][2];
+};
+
+FixedWords build_words(QuadCoding coding) {
+  FixedWords words;
+  for (QuadClass context : {QuadClass::kA, QuadClass::kB}) {
+    const RowSpan span = rows_of(coding, context);
+    for (size_t r = 0; r < span.count; ++r) {
+      QuadCodeWord& w = words.word[span.rows[r].type][span.rows[r].next];
+      for (const char* c = span.rows[r].code; *c; ++c) w.bits = uint8_t((w.bits << 1) | (*c == '1'));
+      w.length = uint8_t(std::char_traits<char>::length(span.rows[r].code));
+    }
+  }
+  return words;
+}
+
+const FixedWords& words_of(QuadCoding coding) {
+  static const FixedWords tables[3] = {build_words(QuadCoding::kCodingI), build_words(QuadCoding::kCodingII),
+                                       build_words(QuadCoding::kCodingIII)};
+  return tables[int(coding) - 1];
+}
+
 QuadClass next_class(const std::vector<uint8_t>& types, size_t i) {
   // The last quad announces class B (spec 5.3.2): every type has such a code word.
   return i + 1 < types.size() ? quad_class(types[i + 1]) : QuadClass::kB;
@@ -120,15 +145,8 @@ const char* quad_coding_name(QuadCoding coding) {
 }
 
 QuadCodeWord fixed_code_word(QuadCoding coding, int type, QuadClass next) {
-  const RowSpan span = rows_of(coding, quad_class(type));
-  for (size_t r = 0; r < span.count; ++r) {
-    if (span.rows[r].type != type || span.rows[r].next != uint8_t(next)) continue;
-    QuadCodeWord w;
-    for (const char* c = span.rows[r].code; *c; ++c) w.bits = uint8_t((w.bits << 1) | (*c == '1'));
-    w.length = uint8_t(std::char_traits<char>::length(span.rows[r].code));
-    return w;
-  }
-  return {};
+  if (!is_fixed(coding) || type < 1 || type > kQuadTypeCount) return {};
+  return words_of(coding).word[type][int(next)];
 }
 
 int read_fixed_code_word(QuadCoding coding, QuadClass current, BitReader* reader, QuadClass* next) {
@@ -183,19 +201,31 @@ void write_quad_stream(QuadCoding coding, const std::vector<uint8_t>& types, Bit
     if (coding == QuadCoding::kHuffman) {
       huffman[int(quad_class(types[i]))].write(writer, quad_pair_symbol(types[i], next));
     } else {
-      const QuadCodeWord w = fixed_code_word(coding, types[i], next);
+      const QuadCodeWord w = words_of(coding).word[types[i]][int(next)];
       writer->write_bits(w.bits, w.length);
     }
   }
 }
 
 int64_t quad_stream_bits(QuadCoding coding, const std::vector<uint8_t>& types) {
-  if (is_fixed(coding))
-    for (size_t i = 0; i < types.size(); ++i)
-      if (fixed_code_word(coding, types[i], next_class(types, i)).length == 0) return -1;
-  BitWriter writer;
-  write_quad_stream(coding, types, &writer);
-  return int64_t(writer.bit_count());
+  if (!is_fixed(coding)) {
+    BitWriter writer;
+    write_quad_stream(coding, types, &writer);
+    return int64_t(writer.bit_count());
+  }
+  // What write_quad_stream writes: the first quad's class, then a code word
+  // per quad, counted by (type, next class).
+  uint64_t count[kQuadTypeCount + 1][2] = {};
+  for (size_t i = 0; i < types.size(); ++i) ++count[types[i]][int(next_class(types, i))];
+  int64_t bits = 1;
+  for (int type = 1; type <= kQuadTypeCount; ++type)
+    for (int next = 0; next < 2; ++next) {
+      if (count[type][next] == 0) continue;
+      const uint8_t length = words_of(coding).word[type][next].length;
+      if (length == 0) return -1;
+      bits += int64_t(count[type][next]) * length;
+    }
+  return bits;
 }
 
 Status read_quad_stream(QuadCoding coding, uint32_t count, BitReader* reader, std::vector<uint8_t>* types) {

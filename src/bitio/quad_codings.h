@@ -17,6 +17,7 @@
 namespace qmc {
 
 // Q1..Q13 are 1..13. Class A is Q1-Q5, class B is Q6-Q13 (seed 001 §4.1).
+inline constexpr int kQuadTypeCount = 13;
 enum class QuadClass : uint8_t { kA = 0, kB = 1 };
 inline QuadClass quad_class(int type) { return type <= 5 ? QuadClass::kA : QuadClass::kB; }
 
