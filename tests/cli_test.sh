@@ -156,6 +156,11 @@ contains progressive-triangulated "$work/out" "triangulated 288 polygons"
 contains progressive-levels "$work/out" "edge points"
 contains progressive-level-curve "$work/out" "bytes read  L2 / diag"
 contains progressive-error "$work/out" "PSNR"
+cp "$work/out" "$work/report"  # check writes over out
+check progressive-levels-approach 1 grep -q "no nearer the input" "$work/report"
+# A base too coarse for its levels (11 vertices for 3 levels of this torus) is said, with what helps.
+check progressive-coarse-base 0 "$qmc" encode "$work/torus.obj" "$work/coarse.qmc" --progressive --levels 3
+contains progressive-coarse-base-note "$work/out" "no nearer the input than the level before.*fewer --levels"
 check progressive-info 0 "$qmc" info "$work/prog.qmc"
 contains progressive-info-levels "$work/out" "progressive  2 Loop levels"
 contains progressive-info-format "$work/out" "format 1.6"  # its base mesh: polygon coding 7 (5.4.10), deltas
@@ -286,6 +291,7 @@ check decode-groups-off-refused 3 "$qmc" decode "$work/groups.qmc" "$work/groups
 { echo "v 0 0 0 1 0 0"; echo "v 1 0 0 0 1 0"; echo "v 0 1 0 0 0 1 1"; echo "f 1 2 3"; echo "l 1 2"; } >"$work/colours.obj"
 check encode-colours-refused 3 "$qmc" encode "$work/colours.obj" "$work/colours.qmc"
 contains encode-colours-refused-names-flag "$work/err" "pass --drop-unsupported"
+contains encode-colours-refused-names-format "$work/err" "holds what format 1.10 cannot carry yet"
 contains encode-colours-refused-colours "$work/err" "  ignored per-vertex colours on v lines of 7 numbers: 1"
 contains encode-colours-refused-partial "$work/err" "  ignored per-vertex colours on v lines: only 2 of 3 vertices have one"
 check encode-colours-refused-no-output 0 test ! -e "$work/colours.qmc"

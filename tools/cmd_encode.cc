@@ -503,6 +503,21 @@ Status level_curve(const Mesh& input, const EncodeStats& stats, const DecodedFil
   return Status::Ok();
 }
 
+// Levels no nearer the input than the level before them (spec 12.10: the
+// encoder's levels need not approach it when the base is very coarse): said,
+// with what gives levels that do.
+void print_rising_levels(const LoopEncodeStats& ls, const LevelCurve& curve) {
+  std::string rising;
+  for (size_t j = 1; j < curve.distance.size(); ++j) {
+    const tools::MeshDistance &d = curve.distance[j], &before = curve.distance[j - 1];
+    if (d.relative(d.l2) >= before.relative(before.l2)) rising += (rising.empty() ? "" : ", ") + std::to_string(j);
+  }
+  if (rising.empty()) return;
+  std::printf("note        level(s) %s no nearer the input than the level before (L2 above): a base of %u vertices "
+              "is coarse for %zu levels; fewer --levels, or --target-error E, gives levels that approach it\n",
+              rising.c_str(), ls.levels.empty() ? 0u : ls.levels[0].vertices, ls.levels.size() - 1);
+}
+
 void print_progressive_report(const EncodeArgs& args, const Mesh& input, const EncodeStats& stats,
                               const LevelCurve& curve, const tools::MeshDistance& distance, uint64_t input_bytes) {
   const LoopEncodeStats& ls = stats.loop;
@@ -541,6 +556,7 @@ void print_progressive_report(const EncodeArgs& args, const Mesh& input, const E
               "Hausdorff %.6g (%.3g), PSNR %.2f dB\n",
               distance.a_to_b.area_samples, distance.l2, distance.relative(distance.l2), distance.hausdorff,
               distance.relative(distance.hausdorff), distance.psnr_db);
+  print_rising_levels(ls, curve);
 }
 
 // Lossy modes (sections 12, 13): encode with progress on a terminal, decode
@@ -591,7 +607,8 @@ int refuse_dropping(const EncodeArgs& args, const std::vector<std::string>& note
   }
   if (ignored.empty()) return -1;
   if (!args.drop_unsupported) {
-    std::fprintf(stderr, "qmc encode: %s holds what format 1.9 cannot carry yet:\n", args.input.c_str());
+    std::fprintf(stderr, "qmc encode: %s holds what format 1.%d cannot carry yet:\n", args.input.c_str(),
+                 int(kFormatMinor));
     for (const std::string& what : ignored) std::fprintf(stderr, "  %s\n", what.c_str());
     std::fprintf(stderr, "qmc encode: pass --drop-unsupported to encode the mesh without it\n");
     return kExitError;
