@@ -21,6 +21,7 @@
 #include "decoder/loop_subdivision.h"
 #include "geometry/loop_fitting.h"
 #include "geometry/loop_remesher.h"
+#include "geometry/loop_surface_fit.h"
 #include "geometry/quadric_simplifier.h"
 #include "geometry/surface_rim.h"
 #include "geometry/triangle_bvh.h"
@@ -66,6 +67,18 @@ double diagonal(const LoopMesh& m) {
 // The mesh without the faces around each vertex in `centres`: one hole per
 // centre (whose vertex is then unreferenced), as long as the centres' rings
 // do not touch.
+// `m` after `steps` Loop steps.
+LoopMesh subdivided(LoopMesh m, int steps) {
+  for (int i = 0; i < steps; ++i) {
+    LoopEdges e;
+    EXPECT_TRUE(build_loop_edges(m, &e).ok());
+    LoopMesh fine;
+    loop_subdivide(m, e, &fine);
+    m = std::move(fine);
+  }
+  return m;
+}
+
 LoopMesh with_holes(const LoopMesh& m, const std::vector<uint32_t>& centres) {
   LoopMesh out = m;
   out.triangles.clear();
@@ -566,13 +579,7 @@ TEST(LoopRemesh, LimitPositionsAreWhereSubdivisionConverges) {
   ASSERT_TRUE(build_loop_edges(m, &e).ok());
   std::vector<double> limits;
   loop_limit_positions(m, e, &limits);
-  for (int level = 0; level < 7; ++level) {
-    LoopEdges le;
-    ASSERT_TRUE(build_loop_edges(m, &le).ok());
-    LoopMesh fine;
-    loop_subdivide(m, le, &fine);
-    m = std::move(fine);
-  }
+  m = subdivided(m, 7);
   for (uint32_t v = 0; v < e.valence.size(); ++v) EXPECT_LT(norm(at(m.positions, v) - at(limits, v)), 1e-3) << v;
 }
 
@@ -725,6 +732,61 @@ TEST(LoopRemesh, CorpusPipelineKeepsTopologyAndLandsOnTheSurface) {
     std::printf(")\n");
   }
   if (seen == 0) GTEST_SKIP() << "no corpus triangle mesh found in " << dir;
+}
+
+// ---------------------------------------------------------------- surface fit
+
+// Both directions, as the fit weighs them: the subdivided surface near the
+// input, and the input near the subdivided surface (covered, not only approached).
+double two_sided_rms(const LoopMesh& a, const LoopMesh& b) {
+  const TriangleBvh to_a(loop_mesh_triangles(a)), to_b(loop_mesh_triangles(b));
+  return std::max(rms_distance_over_triangles(a, to_b), rms_distance_over_triangles(b, to_a));
+}
+
+// A torus's base of a dozen vertices, its limit positions on the torus
+// (fit_control_mesh): subdivided, it sags to a thin ring inside the tube;
+// fitted over its subdivision it hugs the tube (loop_surface_fit.h).
+TEST(LoopSurfaceFit, ATorusBaseSubdividesOntoTheTorus) {
+  const LoopMesh torus = loop_mesh_of(tools::triangulated(tools::make_torus(24, 12)));
+  const TriangleBvh bvh(loop_mesh_triangles(torus));
+  LoopMesh base = simplify_and_check(torus, 20, "torus").mesh;
+  ASSERT_TRUE(fit_control_mesh(bvh, nullptr, &base, 10, nullptr).ok());
+  const double before = two_sided_rms(torus, subdivided(base, 2));
+  SurfaceFitStats st;
+  ASSERT_TRUE(fit_subdivided_surface(bvh, torus.positions, 2, 30, &base, &st).ok());
+  const double after = two_sided_rms(torus, subdivided(base, 2));
+  EXPECT_EQ(st.passes, 30);
+  EXPECT_LT(st.final_rms, st.initial_rms);
+  EXPECT_LT(after, before / 4) << before << " -> " << after;
+}
+
+// The boundary is fit_control_mesh's (its limit curve runs along the
+// input's rim): the fit moves interior vertices only.
+TEST(LoopSurfaceFit, BoundaryVerticesStay) {
+  LoopMesh grid = loop_mesh_of(tools::triangulated(tools::make_grid(12, 12)));
+  for (size_t v = 0; v < grid.vertex_count(); ++v) {  // a bump, so that the fit has work
+    const double x = grid.positions[3 * v], y = grid.positions[3 * v + 1];
+    grid.positions[3 * v + 2] = std::exp(-8 * ((x - 0.5) * (x - 0.5) + (y - 0.5) * (y - 0.5)));
+  }
+  const TriangleBvh bvh(loop_mesh_triangles(grid));
+  const LoopMesh base = simplify_and_check(grid, 40, "grid").mesh;
+  LoopMesh fitted = base;
+  ASSERT_TRUE(fit_subdivided_surface(bvh, grid.positions, 2, 10, &fitted).ok());
+  LoopEdges e;
+  ASSERT_TRUE(build_loop_edges(base, &e).ok());
+  size_t boundary = 0, moved = 0;
+  for (uint32_t v = 0; v < base.vertex_count(); ++v) {
+    const bool on_boundary = e.boundary_prev[v] != kNoVertex;
+    const bool same = std::equal(&base.positions[3 * size_t(v)], &base.positions[3 * size_t(v)] + 3,
+                                 &fitted.positions[3 * size_t(v)]);
+    boundary += on_boundary;
+    if (on_boundary) {
+      EXPECT_TRUE(same) << v;
+    }
+    moved += !on_boundary && !same;
+  }
+  EXPECT_GT(boundary, 0u);
+  EXPECT_GT(moved, 0u);
 }
 
 }  // namespace

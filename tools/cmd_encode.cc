@@ -504,8 +504,9 @@ Status level_curve(const Mesh& input, const EncodeStats& stats, const DecodedFil
 }
 
 // Levels no nearer the input than the level before them (spec 12.10: the
-// encoder's levels need not approach it when the base is very coarse): said,
-// with what gives levels that do.
+// encoder's levels need not approach it, e.g. from a very coarse base, or
+// where Loop's boundary rules round a flat grid's corners): said, with what
+// can give levels that do.
 void print_rising_levels(const LoopEncodeStats& ls, const LevelCurve& curve) {
   std::string rising;
   for (size_t j = 1; j < curve.distance.size(); ++j) {
@@ -513,8 +514,8 @@ void print_rising_levels(const LoopEncodeStats& ls, const LevelCurve& curve) {
     if (d.relative(d.l2) >= before.relative(before.l2)) rising += (rising.empty() ? "" : ", ") + std::to_string(j);
   }
   if (rising.empty()) return;
-  std::printf("note        level(s) %s no nearer the input than the level before (L2 above): a base of %u vertices "
-              "is coarse for %zu levels; fewer --levels, or --target-error E, gives levels that approach it\n",
+  std::printf("note        level(s) %s no nearer the input than the level before (L2 above; a base of %u vertices, "
+              "%zu levels); fewer --levels, or --target-error E, can give levels that approach it\n",
               rising.c_str(), ls.levels.empty() ? 0u : ls.levels[0].vertices, ls.levels.size() - 1);
 }
 

@@ -18,6 +18,7 @@
 #include "geometry/loop_fitting.h"
 #include "encoder/loop_level_encoder.h"
 #include "geometry/loop_remesher.h"
+#include "geometry/loop_surface_fit.h"
 #include "encoder/position_encoder.h"
 #include "geometry/quadric_simplifier.h"
 #include "geometry/triangle_bvh.h"
@@ -65,6 +66,45 @@ Status base_in_file_order(const LoopMesh& simplified, const EncodeOptions& optio
   return Status::Ok();
 }
 
+// From kSurfaceFitFrom levels on (a base of under 1/256 of the input's
+// faces), or with a base of under kSurfaceFitBaseVertices vertices, the base
+// is fitted so that its subdivision, not only its vertices' limit positions,
+// lies on the input (loop_surface_fit.h), over kSurfaceFitSubdivisions steps
+// in kSurfaceFitPasses passes, against at most kSurfaceFitPointsPerVertex of
+// the input's vertices per subdivided vertex; the file's base is that mesh,
+// not the inverse-Loop control mesh, which K inverse steps spread far from
+// the input (armadillo at K = 5: 0.9 of the diagonal), and the levels below
+// K aim at the input along their normals (pipeline_targets). Measured, finest
+// L2 / diagonal at K = 4, 5, 6: stanford-bunny 2.0e-3, 1.2e-2, 0.17 -> 1.7e-3,
+// 4.9e-3, 3.4e-2; armadillo 3.7e-3, 4.6e-2, 0.30 -> 2.6e-3, 2.5e-2, 4.7e-2;
+// levels farther from the input than the one before, on the four meshes of
+// docs/results/seed003.md, 19 -> 11; bunny's K = 4 encode 1.9 -> 2.9 s. At
+// K = 3 the fit made bunny's finest level (a base of 567 vertices) 29 % less
+// accurate and a 24 x 12 torus's (11 vertices) 27 times more accurate: the
+// rule is K >= 4 or a base of under 128 vertices.
+constexpr int kSurfaceFitFrom = 4;
+constexpr uint32_t kSurfaceFitBaseVertices = 128;
+constexpr int kSurfaceFitSubdivisions = 2;
+constexpr int kSurfaceFitPasses = 30;
+constexpr size_t kSurfaceFitPointsPerVertex = 4;
+
+// Every k-th vertex of `mesh` that a face uses, k the smallest that leaves at
+// most `most` of them.
+std::vector<double> surface_points(const LoopMesh& mesh, size_t most) {
+  std::vector<uint8_t> used(mesh.vertex_count(), 0);
+  for (uint32_t v : mesh.triangles) used[v] = 1;
+  size_t count = 0;
+  for (uint8_t u : used) count += u;
+  const size_t stride = most == 0 ? 1 : (count + most - 1) / most;
+  std::vector<double> points;
+  size_t seen = 0;
+  for (uint32_t v = 0; v < mesh.vertex_count(); ++v)
+    if (used[v] && seen++ % stride == 0)
+      points.insert(points.end(), mesh.positions.begin() + 3 * std::ptrdiff_t(v),
+                    mesh.positions.begin() + 3 * std::ptrdiff_t(v) + 3);
+  return points;
+}
+
 // Passes of fit_edge_points_in_the_mean at the finest level: the second
 // lowered L2 by 2-5 % on stanford-bunny, armadillo, camelhead and fertility
 // (K = 1, 2; 12 bits), a third by under 1 % (measured with samples per face
@@ -74,25 +114,26 @@ constexpr int kFinestFitPasses = 2;
 // Section 12.10 targets of level j's edge points: the inverse-Loop control
 // mesh below K; at K the input surface along each normal (seed 003's
 // intersection approach), else the remesh position, then moved so that the
-// level fits the input in the mean (loop_fitting.h).
+// level fits the input in the mean (loop_fitting.h). From a base fitted over
+// its subdivision (kSurfaceFitFrom) the levels below K aim at the input along
+// their normals too: the subdivided base runs near the input already, and the
+// inverse-Loop meshes of so many steps spread away from it as the base did.
 void pipeline_targets(const std::vector<LoopMesh>& control, const TriangleBvh& surface, double reach, int levels,
-                      LoopEncodeStats* st, int j, const LoopMesh& fine, const std::vector<double>& normals,
-                      uint32_t coarse_vertices, std::vector<double>* targets) {
+                      bool along_normals_below_k, LoopEncodeStats* st, int j, const LoopMesh& fine,
+                      const std::vector<double>& normals, uint32_t coarse_vertices, std::vector<double>* targets) {
   const size_t edges = normals.size() / 3;
   targets->resize(3 * edges);
   for (size_t e = 0; e < edges; ++e) {
     const size_t v = coarse_vertices + e;
     for (int k = 0; k < 3; ++k) (*targets)[3 * e + k] = control[j].positions[3 * v + k];
-    if (j < levels) continue;
+    if (j < levels && !along_normals_below_k) continue;
     const Vec3d origin{fine.positions[3 * v], fine.positions[3 * v + 1], fine.positions[3 * v + 2]};
     const Vec3d direction{normals[3 * e], normals[3 * e + 1], normals[3 * e + 2]};
     LineHit hit;
-    if (surface.nearest_line_hit(origin, direction, reach, &hit, /*same_facing=*/true)) {
+    const bool crossed = surface.nearest_line_hit(origin, direction, reach, &hit, /*same_facing=*/true);
+    if (crossed)
       (*targets)[3 * e] = hit.point.x, (*targets)[3 * e + 1] = hit.point.y, (*targets)[3 * e + 2] = hit.point.z;
-      ++st->ray_hits;
-    } else {
-      ++st->ray_misses;
-    }
+    if (j == levels) ++(crossed ? st->ray_hits : st->ray_misses);
   }
   if (j < levels) return;
   LoopMesh level = fine;
@@ -110,6 +151,8 @@ struct ProgressiveEncoder::Prepared {
   int levels = 0;
   FileConnectivity conn;
   std::vector<LoopMesh> control;
+  std::vector<double> base_positions;  // of the base the file carries, CONN's order
+  bool surface_fitted = false;
   std::unique_ptr<TriangleBvh> surface;
   EncodeStats stats;  // the base connectivity's and the pipeline's
 };
@@ -150,11 +193,21 @@ Status ProgressiveEncoder::prepare(const Mesh& mesh, const EncodeOptions& option
   FitStats fit_stats;
   const SurfaceRim rim(original);
   if (Status s = fit_control_mesh(*p->surface, &rim, &base, 10, &fit_stats); !s.ok()) return s;
+  const bool fit_surface = p->levels >= kSurfaceFitFrom || base.vertex_count() < kSurfaceFitBaseVertices;
+  p->surface_fitted = fit_surface;
+  if (fit_surface) {
+    const size_t subdivided = size_t(base.vertex_count()) << (2 * kSurfaceFitSubdivisions);
+    const std::vector<double> points = surface_points(original, kSurfaceFitPointsPerVertex * subdivided);
+    if (Status s = fit_subdivided_surface(*p->surface, points, kSurfaceFitSubdivisions, kSurfaceFitPasses, &base);
+        !s.ok())
+      return s;
+  }
   ls.seconds_fit = seconds_since(start);
   report(options, "remesh", 0.5);
   start = Clock::now();
   RemeshStats remesh_stats;
   if (Status s = remesh(original, *p->surface, base, p->levels, &p->control, &remesh_stats); !s.ok()) return s;
+  p->base_positions = fit_surface ? base.positions : p->control[0].positions;
   ls.seconds_remesh = seconds_since(start);
   prepared_ = std::move(p);
   return Status::Ok();
@@ -177,9 +230,10 @@ Status ProgressiveEncoder::code(const EncodeOptions& options, std::vector<uint8_
   const double reach = 0.02 * p.surface->bbox_diagonal();
   const LevelTargets targets = [&](int j, const LoopMesh& fine, const std::vector<double>& normals,
                                    uint32_t coarse_vertices, std::vector<double>* out_targets) {
-    pipeline_targets(p.control, *p.surface, reach, p.levels, &ls, j, fine, normals, coarse_vertices, out_targets);
+    pipeline_targets(p.control, *p.surface, reach, p.levels, p.surface_fitted, &ls, j, fine, normals,
+                     coarse_vertices, out_targets);
   };
-  if (Status s = write_loop_file(p.conn, p.control[0].positions, p.levels, options, targets, out, &st); !s.ok())
+  if (Status s = write_loop_file(p.conn, p.base_positions, p.levels, options, targets, out, &st); !s.ok())
     return s;
   ls.seconds_code = seconds_since(start);
   report(options, "done", 1);
