@@ -251,6 +251,23 @@ DecodedFile decode_all(const std::vector<uint8_t>& bytes) {
   return file;
 }
 
+// A mesh encoded with `options` and with `feature` turned off: the files and
+// what they decode to.
+struct WithAndWithout {
+  std::vector<uint8_t> with_bytes, without_bytes;
+  DecodedFile with, without;
+};
+
+WithAndWithout with_and_without(const Mesh& mesh, EncodeOptions options, bool EncodeOptions::*feature) {
+  WithAndWithout r;
+  r.with_bytes = encode_with(mesh, options);
+  r.with = decode_all(r.with_bytes);
+  options.*feature = false;
+  r.without_bytes = encode_with(mesh, options);
+  r.without = decode_all(r.without_bytes);
+  return r;
+}
+
 // Round trips of generated meshes of every kind the predictor meets.
 TEST(PredictedPositions, RoundTripsGeneratedMeshes) {
   std::vector<Mesh> meshes = {tools::make_quad_sphere(6), tools::make_torus(20, 9), tools::make_prism(9),
@@ -596,20 +613,14 @@ TEST(MaskContexts, SpecExample) {
 // parallelogram across a cliff is far off and the others agree, in fewer
 // bytes. Without mask_contexts, method 4; under 10,000 vertices too.
 TEST(MaskContexts, EncoderWritesMethodSixWhereItIsSmaller) {
-  const Mesh terraces = tools::make_terraces(100, 4, 9);
   EncodeOptions options;
   options.position_bits = 16;
-  const std::vector<uint8_t> six_bytes = encode_with(terraces, options);
-  const DecodedFile six = decode_all(six_bytes);
-  EXPECT_EQ(six.quantization.method, 6);
-  EXPECT_EQ(six.version_minor, 10);
-  options.mask_contexts = false;
-  const std::vector<uint8_t> four_bytes = encode_with(terraces, options);
-  const DecodedFile four = decode_all(four_bytes);
-  EXPECT_EQ(four.quantization.method, 4);
-  EXPECT_EQ(six.quantized, four.quantized);
-  EXPECT_LT(six_bytes.size(), four_bytes.size());
-  options.mask_contexts = true;
+  const WithAndWithout r = with_and_without(tools::make_terraces(100, 4, 9), options, &EncodeOptions::mask_contexts);
+  EXPECT_EQ(r.with.quantization.method, 6);
+  EXPECT_EQ(r.with.version_minor, 10);
+  EXPECT_EQ(r.without.quantization.method, 4);
+  EXPECT_EQ(r.with.quantized, r.without.quantized);
+  EXPECT_LT(r.with_bytes.size(), r.without_bytes.size());
   EXPECT_EQ(decode_all(encode_with(tools::make_terraces(98, 4, 9), options)).quantization.method, 4);  // 9,801
 }
 
@@ -646,18 +657,13 @@ TEST(MaskContexts, RoundTripsGeneratedMeshes) {
 // mesh, with the integers method 4 carries; without quad_twist, method 4.
 TEST(QuadTwist, EncoderWritesMethodFiveWhereItIsSmaller) {
   const Mesh sphere = tools::make_refined_sphere(3);  // quads, 3,842 vertices
-  EncodeOptions options;
-  const std::vector<uint8_t> five_bytes = encode_with(sphere, options);
-  const DecodedFile five = decode_all(five_bytes);
-  EXPECT_EQ(five.quantization.method, 5);
-  EXPECT_EQ(five.version_minor, 9);
-  options.quad_twist = false;
-  const std::vector<uint8_t> four_bytes = encode_with(sphere, options);
-  const DecodedFile four = decode_all(four_bytes);
-  EXPECT_EQ(four.quantization.method, 4);
-  EXPECT_EQ(four.version_minor, 8);
-  EXPECT_EQ(five.quantized, four.quantized);
-  EXPECT_LT(five_bytes.size(), four_bytes.size());
+  const WithAndWithout r = with_and_without(sphere, EncodeOptions{}, &EncodeOptions::quad_twist);
+  EXPECT_EQ(r.with.quantization.method, 5);
+  EXPECT_EQ(r.with.version_minor, 9);
+  EXPECT_EQ(r.without.quantization.method, 4);
+  EXPECT_EQ(r.without.version_minor, 8);
+  EXPECT_EQ(r.with.quantized, r.without.quantized);
+  EXPECT_LT(r.with_bytes.size(), r.without_bytes.size());
   // A mesh of triangles has no quad to twist: method 4, format 1.8.
   const DecodedFile triangles = decode_all(encode_with(tools::triangulated(sphere), EncodeOptions{}));
   EXPECT_EQ(triangles.quantization.method, 4);

@@ -60,15 +60,21 @@ struct FixedLookup {
   Entry entries[1 << kMaxFixedLength];
 };
 
+// A row's code word, read from its string of '0' and '1'.
+QuadCodeWord code_word_of(const TableRow& row) {
+  QuadCodeWord w;
+  for (const char* c = row.code; *c; ++c) w.bits = uint8_t((w.bits << 1) | (*c == '1'));
+  w.length = uint8_t(std::char_traits<char>::length(row.code));
+  return w;
+}
+
 FixedLookup build_lookup(RowSpan span) {
   FixedLookup lookup;
   for (size_t r = 0; r < span.count; ++r) {
-    const std::string code = span.rows[r].code;
-    uint32_t bits = 0;
-    for (char c : code) bits = (bits << 1) | uint32_t(c == '1');
-    const int shift = kMaxFixedLength - int(code.size());
+    const QuadCodeWord w = code_word_of(span.rows[r]);
+    const int shift = kMaxFixedLength - int(w.length);
     for (uint32_t i = 0; i < (1u << shift); ++i)
-      lookup.entries[(bits << shift) | i] = {span.rows[r].type, span.rows[r].next, uint8_t(code.size())};
+      lookup.entries[(uint32_t(w.bits) << shift) | i] = {span.rows[r].type, span.rows[r].next, w.length};
   }
   return lookup;
 }
@@ -92,11 +98,8 @@ FixedWords build_words(QuadCoding coding) {
   FixedWords words;
   for (QuadClass context : {QuadClass::kA, QuadClass::kB}) {
     const RowSpan span = rows_of(coding, context);
-    for (size_t r = 0; r < span.count; ++r) {
-      QuadCodeWord& w = words.word[span.rows[r].type][span.rows[r].next];
-      for (const char* c = span.rows[r].code; *c; ++c) w.bits = uint8_t((w.bits << 1) | (*c == '1'));
-      w.length = uint8_t(std::char_traits<char>::length(span.rows[r].code));
-    }
+    for (size_t r = 0; r < span.count; ++r)
+      words.word[span.rows[r].type][span.rows[r].next] = code_word_of(span.rows[r]);
   }
   return words;
 }

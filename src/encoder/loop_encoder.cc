@@ -193,9 +193,8 @@ Status ProgressiveEncoder::prepare(const Mesh& mesh, const EncodeOptions& option
   FitStats fit_stats;
   const SurfaceRim rim(original);
   if (Status s = fit_control_mesh(*p->surface, &rim, &base, 10, &fit_stats); !s.ok()) return s;
-  const bool fit_surface = p->levels >= kSurfaceFitFrom || base.vertex_count() < kSurfaceFitBaseVertices;
-  p->surface_fitted = fit_surface;
-  if (fit_surface) {
+  p->surface_fitted = p->levels >= kSurfaceFitFrom || base.vertex_count() < kSurfaceFitBaseVertices;
+  if (p->surface_fitted) {
     const size_t subdivided = size_t(base.vertex_count()) << (2 * kSurfaceFitSubdivisions);
     const std::vector<double> points = surface_points(original, kSurfaceFitPointsPerVertex * subdivided);
     if (Status s = fit_subdivided_surface(*p->surface, points, kSurfaceFitSubdivisions, kSurfaceFitPasses, &base);
@@ -207,7 +206,7 @@ Status ProgressiveEncoder::prepare(const Mesh& mesh, const EncodeOptions& option
   start = Clock::now();
   RemeshStats remesh_stats;
   if (Status s = remesh(original, *p->surface, base, p->levels, &p->control, &remesh_stats); !s.ok()) return s;
-  p->base_positions = fit_surface ? base.positions : p->control[0].positions;
+  p->base_positions = p->surface_fitted ? base.positions : p->control[0].positions;
   ls.seconds_remesh = seconds_since(start);
   prepared_ = std::move(p);
   return Status::Ok();

@@ -244,7 +244,7 @@ Status remesh(const LoopMesh& original, const TriangleBvh& bvh, const LoopMesh& 
   c[0].triangles = adjusted_base.triangles;
   std::vector<LoopEdges> edges(size_t(levels) + 1);
   const bool project_intermediate = levels >= kProjectIntermediateFrom;
-  RemeshStats intermediate;
+  RemeshStats intermediate;  // its counts are of no level the stats report
   for (int j = 0; j <= levels; ++j) {
     // Only the base needs the fan check; subdivision keeps it (spec 12.2).
     const Status s = j == 0 ? build_loop_edges(c[j], &edges[j]) : number_loop_edges(c[j], &edges[j]);
@@ -256,8 +256,6 @@ Status remesh(const LoopMesh& original, const TriangleBvh& bvh, const LoopMesh& 
     }
     if (j < levels) loop_subdivide(c[j], edges[j], &c[j + 1]);
   }
-  st.intermediate_line_hits = intermediate.line_hits;
-  st.intermediate_fallbacks = intermediate.fallbacks;
   st.subdivide_seconds = seconds_since(start) - st.displace_seconds;
 
   start = Clock::now();

@@ -47,8 +47,6 @@ struct RemeshStats {
   uint32_t line_hits = 0;    // vertices moved along their limit normal
   uint32_t fallbacks = 0;    // vertices moved to the closest point instead
   double max_move = 0;       // largest distance a vertex of the subdivided mesh moved
-  // The same for the levels 1..K-1 moved onto the surface (K >= 3, remesh()).
-  uint32_t intermediate_line_hits = 0, intermediate_fallbacks = 0;
   // Per inverse step j = K..1 (index K - j): Gauss-Seidel sweeps and the final
   // largest residual, relative to the size of the right-hand side.
   std::vector<int> inverse_iterations;

@@ -141,10 +141,10 @@ double dot_all(const std::vector<double>& x, const std::vector<double>& y) {
 
 Status fit_subdivided_surface(const TriangleBvh& surface, const std::vector<double>& points, int subdivisions,
                               int passes, LoopMesh* control, SurfaceFitStats* stats) {
+  if (subdivisions < 1) return Status(ErrorCode::kInvalidArgument, "the surface fit needs a subdivision step");
   SubdivisionChain chain;
   if (Status s = build_chain(*control, subdivisions, &chain); !s.ok()) return s;
-  LoopEdges base;
-  if (Status s = number_loop_edges(*control, &base); !s.ok()) return s;
+  const LoopEdges& base = chain.edges.front();
   SurfaceFitStats st;
   const size_t levels = chain.edges.size() + 1;
   for (; st.passes < passes; ++st.passes) {

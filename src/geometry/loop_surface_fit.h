@@ -42,7 +42,8 @@ struct SurfaceFitStats {
 // Each pass takes those targets, then one step along the gradient (the
 // residuals carried back through the transposed masks) with the exact line
 // search of the quadratic it gives. `control` must be a mesh
-// number_loop_edges accepts; anything else is returned as its error.
+// number_loop_edges accepts; anything else is returned as its error, as is
+// `subdivisions` below 1 (kInvalidArgument).
 Status fit_subdivided_surface(const TriangleBvh& surface, const std::vector<double>& points, int subdivisions,
                               int passes, LoopMesh* control, SurfaceFitStats* stats = nullptr);
 
