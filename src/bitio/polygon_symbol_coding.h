@@ -74,6 +74,12 @@ struct PolygonSymbolModel {
   CountedProbability other_status, other_gap;
 };
 
+// A model as every payload starts it, copied whole instead of built entry by
+// entry: the encoder starts one for each coding it tries and for its check.
+// Defined out of line, so that the copy is one block copy (a constant the
+// compiler could see would be stored entry by entry again).
+extern const PolygonSymbolModel kFreshPolygonSymbolModel;
+
 inline int symbol_group(int symbol) { return symbol < 13 ? 1 : symbol < 18 ? 0 : 2; }
 
 // Codes the symbol (0 .. 18) of one face; the decoder's `symbol` is ignored

@@ -1,6 +1,8 @@
 // Symbol tables of spec/qmc-format.md 5.4.3.
 #include "bitio/polygon_symbols.h"
 
+#include "bitio/polygon_symbol_coding.h"
+
 namespace qmc {
 namespace {
 
@@ -95,5 +97,7 @@ int face_symbol(const FaceShapes& shapes, size_t f) {
   }
   return -1;  // not a valid shape (gap with free vertices marked as edge)
 }
+
+const PolygonSymbolModel kFreshPolygonSymbolModel{};
 
 }  // namespace qmc

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 
 #include "bitio/exact_arith.h"  // bit_length64
 #include "bitio/residual_code.h"
@@ -44,18 +45,34 @@ struct PositionResidualModel {
   int max_class[3];  // bitlen(top_a): k of 13.5.6 per axis
   bool mask_contexts;  // 14.8: methods 6 and 7
   explicit PositionResidualModel(const uint32_t top[3], ClassStart start = ClassStart::kFlat,
-                                 bool with_mask_contexts = false)
-      : mask_contexts(with_mask_contexts) {
-    for (int a = 0; a < 3; ++a) max_class[a] = bit_length(top[a]);
-    std::fill(&use[0][0][0], &use[0][0][0] + sizeof(use) / sizeof(uint16_t), uint16_t(1024));
-    for (auto& group : cls)
-      for (int b = 0; b < kPositionBuckets; ++b)
-        for (int j = 0; j < kPositionMaxClass; ++j)
-          group[b][j] = start == ClassStart::kFlat ? 1024 : kGradedClassStart[std::clamp(j - b + 1, -3, 3) + 3];
-    std::fill(sign, sign + 3, uint16_t(1024));
-    std::fill(&mantissa[0][0], &mantissa[0][0] + sizeof(mantissa) / sizeof(uint16_t), uint16_t(1024));
-  }
+                                 bool with_mask_contexts = false);
 };
+
+// The class probabilities of one group as `start` has them begin (14.4.1),
+// computed at compile time: the encoder starts a model for every payload it
+// tries, and on a small mesh filling them one by one cost as much as coding.
+struct ClassStartTable {
+  uint16_t p[kPositionBuckets][kPositionMaxClass];
+};
+constexpr ClassStartTable class_start_table(ClassStart start) {
+  ClassStartTable t{};
+  for (int b = 0; b < kPositionBuckets; ++b)
+    for (int j = 0; j < kPositionMaxClass; ++j)
+      t.p[b][j] = start == ClassStart::kFlat ? 1024 : kGradedClassStart[std::clamp(j - b + 1, -3, 3) + 3];
+  return t;
+}
+inline constexpr ClassStartTable kFlatClassTable = class_start_table(ClassStart::kFlat);
+inline constexpr ClassStartTable kGradedClassTable = class_start_table(ClassStart::kGraded);
+
+inline PositionResidualModel::PositionResidualModel(const uint32_t top[3], ClassStart start, bool with_mask_contexts)
+    : mask_contexts(with_mask_contexts) {
+  for (int a = 0; a < 3; ++a) max_class[a] = bit_length(top[a]);
+  std::fill(&use[0][0][0], &use[0][0][0] + sizeof(use) / sizeof(uint16_t), uint16_t(1024));
+  const ClassStartTable& table = start == ClassStart::kFlat ? kFlatClassTable : kGradedClassTable;
+  for (auto& group : cls) std::memcpy(group, table.p, sizeof table.p);
+  std::fill(sign, sign + 3, uint16_t(1024));
+  std::fill(&mantissa[0][0], &mantissa[0][0] + sizeof(mantissa) / sizeof(uint16_t), uint16_t(1024));
+}
 
 // 14.4: the bucket of axis a from an activity estimate t0 (a sum over three
 // axes) and the magnitudes of the vertex's earlier axes.

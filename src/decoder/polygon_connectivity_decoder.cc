@@ -215,7 +215,7 @@ class CodedFaces : public FaceSymbolSource {
 
   RangeDecoder range_;
   uint64_t bytes_;
-  PolygonSymbolModel model_;
+  PolygonSymbolModel model_ = kFreshPolygonSymbolModel;
   const FaceShapes fixed_;
   FaceShapes shapes_;  // symbol 18's faces so far
   std::vector<uint8_t> scratch_;

@@ -129,7 +129,7 @@ class EncodedFaces : public FaceSymbolSource {
  private:
   const FaceShapes& shapes_;
   const std::vector<int>& symbols_;
-  PolygonSymbolModel model_;
+  PolygonSymbolModel model_ = kFreshPolygonSymbolModel;
   RangeEncoder range_;
 };
 
