@@ -357,8 +357,10 @@ Status check_directed_edges(const PolygonSurface& s) {
   std::vector<uint32_t> target(s.corners.size()), fill(start.begin(), start.end() - 1);
   size_t begin = 0;
   for (uint32_t d : s.face_degree) {
-    for (uint32_t i = 0; i < d; ++i)
-      target[fill[s.corners[begin + i]]++] = s.corners[begin + (i + 1) % d];
+    if (d == 0) continue;  // every face has 3 corners or more (5.4.1); no read before one
+    const uint32_t* face = &s.corners[begin];
+    for (uint32_t i = 0; i + 1 < d; ++i) target[fill[face[i]]++] = face[i + 1];
+    target[fill[face[d - 1]]++] = face[0];
     begin += d;
   }
   std::vector<uint32_t> mark(n, kNone);
