@@ -5,20 +5,6 @@
 
 namespace qmc {
 
-void RangeEncoder::encode(int bit, uint32_t prob) {
-  const uint32_t bound = (range_ >> kRangeProbabilityBits) * prob;
-  if (bit == 0) {
-    range_ = bound;
-  } else {
-    low_ += bound;
-    range_ -= bound;
-  }
-  while (range_ < kRangeTop) {
-    range_ <<= 8;
-    shift_low();
-  }
-}
-
 // Moves the top byte of the 32-bit low_ out. A byte of 0xFF may still receive
 // a carry, so it waits (with the byte before it in cache_) until a byte below
 // 0xFF or a carry settles them.

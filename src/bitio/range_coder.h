@@ -62,7 +62,20 @@ class RangeEncoder {
   std::vector<uint8_t> finish();
 
  private:
-  void encode(int bit, uint32_t prob);
+  // Section 13.5.2's encode(p); inline, as it runs once per decision.
+  void encode(int bit, uint32_t prob) {
+    const uint32_t bound = (range_ >> kRangeProbabilityBits) * prob;
+    if (bit == 0) {
+      range_ = bound;
+    } else {
+      low_ += bound;
+      range_ -= bound;
+    }
+    while (range_ < kRangeTop) {
+      range_ <<= 8;
+      shift_low();
+    }
+  }
   void shift_low();
 
   uint64_t low_ = 0;  // 33 bits: bit 32 is a carry into bytes not yet written
