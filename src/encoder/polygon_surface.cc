@@ -153,8 +153,10 @@ std::string close_holes(PolygonSurfaceModel* s) {
 // The faces of the component of face f0, in breadth-first order from it,
 // marked `id` in `component` (where none is marked `id` yet).
 std::vector<uint32_t> faces_reached(const PolygonSurfaceModel& s, uint32_t f0, uint32_t id,
-                                    std::vector<uint32_t>* component) {
-  std::vector<uint32_t> faces{f0};
+                                    std::vector<uint32_t>* component, size_t expected = 1) {
+  std::vector<uint32_t> faces;
+  faces.reserve(expected);
+  faces.push_back(f0);
   (*component)[f0] = id;
   for (size_t i = 0; i < faces.size(); ++i)
     for (uint32_t h = s.face_begin[faces[i]]; h < s.face_begin[faces[i] + 1]; ++h) {
@@ -198,6 +200,7 @@ struct CycleScratch {
   std::vector<uint32_t> up, depth, out_edge;  // per vertex; up and out_edge are written before read
   std::vector<uint8_t> in_tree, in_cotree;    // per half-edge
   std::vector<uint8_t> face_seen;             // per face
+  std::vector<uint32_t> queue, face_queue;    // the two searches' queues, emptied by each
 
   // The surface grows as handles are cut.
   void fit(const PolygonSurfaceModel& s) {
@@ -233,7 +236,8 @@ std::vector<uint32_t> non_separating_cycle(const PolygonSurfaceModel& s, const s
     for (uint32_t h = s.face_begin[f]; h < s.face_begin[f + 1]; ++h) out_edge[s.corners[h]] = h;
   std::vector<uint8_t>& in_tree = scratch->in_tree;
   const uint32_t root = s.corners[s.face_begin[faces[0]]];
-  std::vector<uint32_t> queue{root};
+  std::vector<uint32_t>& queue = scratch->queue;
+  queue.assign(1, root);
   depth[root] = 0;
   for (size_t i = 0; i < queue.size(); ++i) {
     const uint32_t v = queue[i];
@@ -254,7 +258,8 @@ std::vector<uint32_t> non_separating_cycle(const PolygonSurfaceModel& s, const s
   // Dual tree over faces through edges not in the primal tree.
   std::vector<uint8_t>& face_seen = scratch->face_seen;
   std::vector<uint8_t>& in_cotree = scratch->in_cotree;
-  std::vector<uint32_t> fq{faces[0]};
+  std::vector<uint32_t>& fq = scratch->face_queue;
+  fq.assign(1, faces[0]);
   face_seen[faces[0]] = 1;
   for (size_t i = 0; i < fq.size(); ++i)
     for (uint32_t h = s.face_begin[fq[i]]; h < s.face_begin[fq[i] + 1]; ++h) {
@@ -366,7 +371,7 @@ std::string cut_handles(PolygonSurfaceModel* s) {
       cut = true;
       const size_t faces = components[c].size() + 2;  // the two faces that close the cut
       listed.resize(s->face_count(), kNone);
-      components[c] = faces_reached(*s, components[c][0], listing++, &listed);
+      components[c] = faces_reached(*s, components[c][0], listing++, &listed, faces);
       if (components[c].size() != faces) return "internal: a handle's cut separated its component";
       chi[c] += 2;
     }
