@@ -1,6 +1,8 @@
 // Canonical length-limited Huffman coding (spec section 7.3).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <functional>
 #include <random>
 
 #include "bitio/huffman.h"
@@ -58,6 +60,48 @@ TEST(HuffmanLengths, FibonacciFrequenciesRespectTheLimit) {
   // With limit 6 and 40 symbols the code is nearly flat; the most frequent symbol is shortest.
   const std::vector<uint8_t> l6 = huffman_code_lengths(f, 6);
   EXPECT_LE(l6.back(), l6.front());
+}
+
+// The cost sum f_s l_s of an unlimited Huffman code, by merging the two
+// lightest weights n - 1 times: each merge adds its weight once per bit.
+uint64_t unlimited_huffman_cost(const std::vector<uint64_t>& frequencies) {
+  std::vector<uint64_t> w;
+  for (uint64_t f : frequencies)
+    if (f > 0) w.push_back(f);
+  if (w.size() < 2) return w.empty() ? 0 : w[0];
+  uint64_t cost = 0;
+  while (w.size() > 1) {
+    std::sort(w.begin(), w.end(), std::greater<uint64_t>());
+    const uint64_t merged = w[w.size() - 1] + w[w.size() - 2];
+    w.resize(w.size() - 2);
+    w.push_back(merged);
+    cost += merged;
+  }
+  return cost;
+}
+
+// A limit of n - 1 bits or more never binds for n symbols (huffman_code_lengths
+// stops its levels there): the code is then an optimal unlimited one, whatever
+// the limit, ties included.
+TEST(HuffmanLengths, NoLimitBindsFromNMinusOneBits) {
+  std::mt19937_64 rng(7);
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::vector<uint64_t> f(2 + rng() % 14);
+    const uint64_t spread = trial % 3 == 0 ? 3 : trial % 3 == 1 ? 100 : 1u << 20;
+    for (uint64_t& x : f) x = rng() % spread;
+    size_t used = 0;
+    for (uint64_t x : f) used += x > 0;
+    if (used < 2) continue;
+    const std::vector<uint8_t> tight = huffman_code_lengths(f, int(used) - 1);
+    EXPECT_EQ(huffman_code_lengths(f, kMaxHuffmanLength), tight) << "trial " << trial;
+    uint64_t cost = 0, kraft = 0;
+    for (size_t s = 0; s < f.size(); ++s) {
+      cost += f[s] * tight[s];
+      if (tight[s]) kraft += uint64_t(1) << (kMaxHuffmanLength - tight[s]);
+    }
+    EXPECT_EQ(cost, unlimited_huffman_cost(f)) << "trial " << trial;
+    EXPECT_EQ(kraft, uint64_t(1) << kMaxHuffmanLength) << "trial " << trial;
+  }
 }
 
 TEST(HuffmanCode, RoundTripsRandomSymbolsWithMaximumLengthCodes) {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <random>
 
 #include "bitio/geometry_order.h"
 #include "bitio/position_coding.h"
@@ -13,6 +14,7 @@
 #include "bitio/vertex_prediction.h"
 #include "decoder/position_decoder.h"
 #include "encoder/position_encoder.h"
+#include "encoder/residual_costs.h"
 #include "geometry_order_rule.h"
 #include "mesh_generators.h"
 #include "qmc/decoder.h"
@@ -235,6 +237,51 @@ TEST(PredictedPositions, GradedClassStartFollowsTheBucket) {
   }
   EXPECT_EQ(graded.sign[0], 1024);
   EXPECT_EQ(graded.use[0][0][0], 1024);
+}
+
+// 14.5's costing: what ResidualCosts says a residual costs is what the
+// coding template counts decision by decision, for models that coding has
+// adapted, in every bucket and class, both signs, each axis's own k.
+TEST(PredictedPositions, ResidualCostsAreTheDecisionsTheCoderCodes) {
+  const uint32_t top[3] = {4095, 300, 65535};
+  std::mt19937 rng(3);
+  const auto random_residual = [&](int axis) {
+    const uint32_t magnitude = rng() % (top[axis] + 1) >> (rng() % 17);
+    return SignedResidual{magnitude, magnitude != 0 && rng() % 2 == 1};
+  };
+  const auto random_prediction = [&] {
+    VertexPrediction p;
+    p.kind = rng() % 2 ? PredictionKind::kSingle : PredictionKind::kSeveral;
+    p.neighbour_activity = rng() % 3 == 0 ? 0 : rng() % (1u << (rng() % 20));
+    p.scale = rng() % (1u << (rng() % 22));
+    return p;
+  };
+  PositionResidualModel model(top);
+  RangeEncoder adapting;
+  for (int round = 0; round < 20; ++round) {
+    for (int v = 0; v < 200; ++v) {  // coding adapts the probabilities
+      const VertexPrediction p = random_prediction();
+      uint32_t magnitude[3] = {0, 0, 0};
+      for (int a = 0; a < 3; ++a) {
+        const SignedResidual r = random_residual(a);
+        magnitude[a] = r.magnitude;
+        code_position_residual(&adapting, &model, p, magnitude, a, r);
+      }
+    }
+    ResidualCosts costs(model);
+    for (int v = 0; v < 200; ++v) {
+      const VertexPrediction p = random_prediction();
+      uint32_t magnitude[3] = {0, 0, 0};
+      for (int a = 0; a < 3; ++a) {
+        const SignedResidual r = random_residual(a);
+        magnitude[a] = r.magnitude;
+        CostMeter meter;
+        code_position_residual(&meter, &model, p, magnitude, a, r);
+        EXPECT_NEAR(costs.axis(p, magnitude, a, r.negative), meter.bits, 1e-9)
+            << "round " << round << " axis " << a << " residual " << r.magnitude;
+      }
+    }
+  }
 }
 
 std::vector<uint8_t> encode_with(const Mesh& mesh, const EncodeOptions& options, EncodeStats* stats = nullptr) {

@@ -16,6 +16,7 @@
 #include "bitio/position_coding.h"
 #include "bitio/range_coder.h"
 #include "bitio/vertex_prediction.h"
+#include "encoder/residual_costs.h"
 
 namespace qmc {
 namespace {
@@ -179,33 +180,6 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions) {
 
 namespace {
 
-class CostMeter {
- public:
-  int code(int bit, uint16_t* prob) {
-    bits += cost(bit, *prob);
-    return bit;
-  }
-  int code_direct(int bit) {
-    bits += 1;
-    return bit;
-  }
-  // The information content of coding `bit` with probability prob of a 0.
-  static double cost(int bit, uint16_t prob) { return kCost[bit ? kRangeProbabilityOne - prob : prob]; }
-  double bits = 0;
-
- private:
-  struct Table {
-    double cost[kRangeProbabilityOne + 1];
-    Table() {
-      for (int p = 1; p <= kRangeProbabilityOne; ++p) cost[p] = -std::log2(p / double(kRangeProbabilityOne));
-      cost[0] = 64;
-    }
-    double operator[](int p) const { return cost[p]; }
-  };
-  static const Table kCost;
-};
-const CostMeter::Table CostMeter::kCost;
-
 // The range encoder, also adding up each decision's information content
 // (CostMeter's, before the decision adapts the probability) for
 // PositionStats.
@@ -221,56 +195,6 @@ class MeteredRangeEncoder {
   }
   RangeEncoder rc;
   CostMeter meter;
-};
-
-// What code_position_residual would cost each residual of one vertex whose
-// prediction uses a candidate (14.4's third group), under probabilities that
-// do not change while 14.5 compares the vertex's masks: the class decisions
-// of each (bucket, axis) are added up once, on first use, so that a residual
-// costs a few lookups instead of one per class decision.
-class ResidualCosts {
- public:
-  explicit ResidualCosts(const PositionResidualModel& model) : m_(model) {}
-
-  // The bits of the residual of `axis` (its magnitude in magnitude[axis],
-  // the earlier axes' before it) and sign.
-  double axis(const VertexPrediction& p, const uint32_t* magnitude, int axis, bool negative) {
-    const int bucket = position_bucket(p.neighbour_activity + p.scale / 8, magnitude, axis);
-    const uint32_t value = magnitude[axis];
-    const int c = bit_length(value);
-    double bits = classes(bucket, axis)[c];
-    if (c == 0) return bits;
-    bits += CostMeter::cost(negative, m_.sign[axis]);
-    if (c >= 2) {
-      const int first = int(value >> (c - 2) & 1);
-      bits += CostMeter::cost(first, m_.mantissa[c][0]);
-      if (c >= 3) bits += CostMeter::cost(int(value >> (c - 3) & 1), m_.mantissa[c][1 + first]) + double(c - 3);
-    }
-    return bits;
-  }
-
- private:
-  static constexpr int kGroup = 2;  // 14.4: a prediction from candidates
-
-  // [c]: the bits of the class decisions that code class c (13.5.6's unary
-  // "c > i" for i < c, then "c > c" unless c is the largest, k).
-  const double* classes(int bucket, int axis) {
-    double* cost = cost_[bucket][axis];
-    if (ready_[bucket][axis]) return cost;
-    const int k = m_.max_class[axis];
-    const uint16_t* cls = m_.cls[kGroup][bucket];
-    double above = 0;  // the "c > i" decisions of every i below c
-    for (int c = 0; c <= k; ++c) {
-      cost[c] = c < k ? above + CostMeter::cost(0, cls[c]) : above;
-      if (c < k) above += CostMeter::cost(1, cls[c]);
-    }
-    ready_[bucket][axis] = true;
-    return cost;
-  }
-
-  const PositionResidualModel& m_;
-  bool ready_[kPositionBuckets][3] = {};
-  double cost_[kPositionBuckets][3][kPositionMaxClass + 1];
 };
 
 // The subset of the candidates (14.3.3) chosen as 14.5 says: the mask and
