@@ -1,4 +1,4 @@
-// What coding decisions and position residuals costs, in bits (spec
+// What coding decisions and position residuals cost, in bits (spec
 // 14.4, 14.5): the information content of each decision under the current
 // probabilities, before it adapts them. The encoder compares its candidate
 // masks (14.5) by these costs and reports bits per prediction kind.
