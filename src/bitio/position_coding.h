@@ -69,6 +69,7 @@ inline PositionResidualModel::PositionResidualModel(const uint32_t top[3], Class
   for (int a = 0; a < 3; ++a) max_class[a] = bit_length(top[a]);
   std::fill(&use[0][0][0], &use[0][0][0] + sizeof(use) / sizeof(uint16_t), uint16_t(1024));
   const ClassStartTable& table = start == ClassStart::kFlat ? kFlatClassTable : kGradedClassTable;
+  static_assert(sizeof cls[0] == sizeof table.p, "a group is one ClassStartTable");
   for (auto& group : cls) std::memcpy(group, table.p, sizeof table.p);
   std::fill(sign, sign + 3, uint16_t(1024));
   std::fill(&mantissa[0][0], &mantissa[0][0] + sizeof(mantissa) / sizeof(uint16_t), uint16_t(1024));

@@ -357,7 +357,7 @@ Status check_directed_edges(const PolygonSurface& s) {
   std::vector<uint32_t> target(s.corners.size()), fill(start.begin(), start.end() - 1);
   size_t begin = 0;
   for (uint32_t d : s.face_degree) {
-    if (d == 0) continue;  // every face has 3 corners or more (5.4.1); no read before one
+    if (d == 0) continue;  // never (5.4.1: 3 corners or more), but face[d - 1] must stay in bounds
     const uint32_t* face = &s.corners[begin];
     for (uint32_t i = 0; i + 1 < d; ++i) target[fill[face[i]]++] = face[i + 1];
     target[fill[face[d - 1]]++] = face[0];
