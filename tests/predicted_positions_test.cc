@@ -576,6 +576,25 @@ TEST(QuadTwist, SpecExample) {
   EXPECT_EQ(five.scale, four.scale);  // the difference vector is p1 - p2 either way
 }
 
+// 14.6's visit of a mesh's n vertices with its ranks, for predicting vertex
+// after vertex as a decoder does (every activity 0: no candidate depends on it).
+struct GeometryVisit {
+  GeometryVisit(const Mesh& faces, uint32_t n)
+      : order(geometry_order(n, faces.face_sizes, faces.corners)), rank(n), activity(n, 0) {
+    corners.build(n, faces.face_sizes, faces.corners);
+    for (uint32_t i = 0; i < n; ++i) rank[order[i]] = i;
+  }
+  VertexPrediction predict(uint32_t i, const std::vector<uint32_t>& q, const uint32_t top[3], bool quad_twist,
+                           bool triangle_twist) const {
+    VertexPrediction p;
+    predict_vertex_in_order(corners, order.data(), rank.data(), i, q.data(), activity.data(), top, &p, nullptr,
+                            quad_twist, triangle_twist);
+    return p;
+  }
+  VertexCorners corners;
+  std::vector<uint32_t> order, rank, activity;
+};
+
 // 14.7: on a regular grid of quads, the runs' candidates (weight 2; the
 // strips' have weight 1) of a quadratic function, its mixed term included,
 // are exact wherever a twist is found; method 4's parallelogram misses the
@@ -591,21 +610,13 @@ TEST(QuadTwist, QuadraticGridIsExact) {
       grid.face_sizes.push_back(4);
       grid.corners.insert(grid.corners.end(), {j * n + i, j * n + i + 1, (j + 1) * n + i + 1, (j + 1) * n + i});
     }
-  VertexCorners corners;
-  corners.build(n * n, grid.face_sizes, grid.corners);
-  const std::vector<uint32_t> order = geometry_order(n * n, grid.face_sizes, grid.corners);
-  std::vector<uint32_t> rank(n * n);
-  for (uint32_t i = 0; i < n * n; ++i) rank[order[i]] = i;
-  const std::vector<uint32_t> activity(n * n, 0);
+  const GeometryVisit visit(grid, n * n);
   const uint32_t top[3] = {1000, 1000, 1000};
   int runs = 0, exact_four = 0, exact_five = 0;
   for (uint32_t i = 0; i < n * n; ++i) {
-    VertexPrediction four, five;
-    predict_vertex_in_order(corners, order.data(), rank.data(), i, q.data(), activity.data(), top, &four);
-    predict_vertex_in_order(corners, order.data(), rank.data(), i, q.data(), activity.data(), top, &five, nullptr,
-                            true);
+    const VertexPrediction four = visit.predict(i, q, top, false, false), five = visit.predict(i, q, top, true, false);
     ASSERT_EQ(four.candidates, five.candidates);
-    const uint32_t v = order[i];
+    const uint32_t v = visit.order[i];
     const auto exact = [&](const VertexPrediction& p, int k) {
       return p.candidate[k][0] == kOne * q[3 * v] && p.candidate[k][1] == kOne * q[3 * v + 1] &&
              p.candidate[k][2] == kOne * q[3 * v + 2];
@@ -671,11 +682,12 @@ TEST(MaskContexts, EncoderWritesMethodSixWhereItIsSmaller) {
   EXPECT_EQ(decode_all(encode_with(tools::make_terraces(98, 4, 9), options)).quantization.method, 4);  // 9,801
 }
 
-// Methods 6 and 7 written for any mesh (14.8 forced, as the vectors are)
-// decode to the integers methods 4 and 5 carry.
+// Methods 6 and 7 written for any mesh (14.8 forced, as the vectors are),
+// and method 8 with every features byte that has the twist of triangles
+// (14.9 forced), decode to the integers methods 4 and 5 carry.
 TEST(MaskContexts, RoundTripsGeneratedMeshes) {
   std::vector<Mesh> meshes = {tools::make_refined_sphere(2), tools::triangulated(tools::make_torus(20, 9)),
-                              tools::make_terraces(12, 3, 2)};
+                              tools::make_terraces(12, 3, 2), tools::triangulated(tools::make_refined_sphere(2))};
   for (uint64_t seed = 1; seed <= 12; ++seed) {
     tools::RandomSoupOptions o;
     o.vertices = 40 + uint32_t(seed * 9);
@@ -683,11 +695,11 @@ TEST(MaskContexts, RoundTripsGeneratedMeshes) {
     meshes.push_back(tools::make_random_soup(seed, o));
   }
   for (const Mesh& mesh : meshes)
-    for (bool twist : {false, true}) {
+    for (int features : {2, 3, 4, 5, 6, 7}) {  // 14.9's bits: 1 quad twist, 2 contexts, 4 triangle twist
       const QuantizedPositions grid = quantize_positions(mesh.positions, 12);
       const std::vector<uint8_t> payload =
           encode_predicted_positions(grid, mesh, nullptr, CandidateChoice::kFewestBits, ClassStart::kFlat,
-                                     PredictionOrder::kGeometry, twist, /*mask_contexts=*/true);
+                                     PredictionOrder::kGeometry, features & 1, features & 2, features & 4);
       ASSERT_FALSE(payload.empty());
       QuantizationInfo info;
       std::vector<uint32_t> q;
@@ -695,7 +707,8 @@ TEST(MaskContexts, RoundTripsGeneratedMeshes) {
       ASSERT_TRUE(decode_positions(payload.data(), payload.size(), mesh, uint32_t(mesh.vertex_count()), &info, &q,
                                    &positions)
                       .ok());
-      EXPECT_EQ(info.method, twist ? 7 : 6);
+      EXPECT_EQ(info.method, features & 4 ? 8 : features & 1 ? 7 : 6);
+      EXPECT_EQ(info.features, features);
       EXPECT_EQ(q, grid.q);
     }
 }
@@ -715,6 +728,113 @@ TEST(QuadTwist, EncoderWritesMethodFiveWhereItIsSmaller) {
   const DecodedFile triangles = decode_all(encode_with(tools::triangulated(sphere), EncodeOptions{}));
   EXPECT_EQ(triangles.quantization.method, 4);
 }
+
+
+// Spec 14.9's example: vertex 7's parallelogram across the edge (2, 1)
+// misses z = 3 + 3 i j by 3; the twists of the edges (0, 1) and (0, 2),
+// around vertex 0 of six triangles, say so. lambda starts at 0, learns 1
+// from vertex 7 itself, and 1/2 once a vertex with the same twist and no
+// error follows.
+TEST(TriangleTwist, SpecExample) {
+  const Mesh hexagon = faces({3, 3, 3, 3, 3, 3, 3}, {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5, 0, 5, 6, 0, 6, 1, 1, 7, 2});
+  const std::vector<uint32_t> q = {10, 10, 3, 20, 10, 3, 10, 20, 3, 0, 20, 0, 0, 10, 3, 10, 0, 3, 20, 0, 0, 20, 20, 6};
+  VertexCorners corners;
+  corners.build(8, hexagon.face_sizes, hexagon.corners);
+  const std::vector<uint32_t> order = geometry_order(8, hexagon.face_sizes, hexagon.corners);
+  ASSERT_EQ(order, (std::vector<uint32_t>{0, 1, 2, 3, 4, 5, 6, 7}));
+  const std::vector<uint32_t> activity(8, 0);
+  VertexPrediction p;
+  predict_vertex_in_order(corners, order.data(), order.data(), 7, q.data(), activity.data(), kTop, &p, nullptr,
+                          false, true);
+  ASSERT_EQ(p.candidates, 1);
+  EXPECT_EQ(p.candidate[0][0], 20 * kOne);
+  EXPECT_EQ(p.candidate[0][1], 20 * kOne);
+  EXPECT_EQ(p.candidate[0][2], 3 * kOne);
+  ASSERT_EQ(p.triangle_twisted, 1u);
+  EXPECT_EQ(p.triangle_twist[0][0], 0);
+  EXPECT_EQ(p.triangle_twist[0][1], 0);
+  EXPECT_EQ(p.triangle_twist[0][2], 3 * kOne);  // 2^15 (0 + 0 + 3 + 3)
+
+  TriangleTwistWeight weight;
+  weight.apply(&p);
+  EXPECT_EQ(p.twist_weight, 0);
+  select_candidates(&p, 1, kTop);
+  EXPECT_EQ(p.value[2], 3);  // lambda 0: the parallelogram
+  weight.learn(p, &q[21]);   // t = e = 48 in z: N = D = 2304
+  weight.apply(&p);
+  EXPECT_EQ(p.twist_weight, 256);
+  select_candidates(&p, 1, kTop);
+  EXPECT_EQ(p.value[2], 6);  // exact
+  const uint32_t on_the_parallelogram[3] = {20, 20, 3};
+  weight.learn(p, on_the_parallelogram);  // e = 0: N = 2304, D = 4608
+  weight.apply(&p);
+  EXPECT_EQ(p.twist_weight, 128);
+  select_candidates(&p, 1, kTop);
+  EXPECT_EQ(p.value[2], 5);  // 3 + floor((128 x 196608 + 2^23) / 2^24)
+
+  // Without the triangle twist no candidate carries one.
+  predict_vertex_in_order(corners, order.data(), order.data(), 7, q.data(), activity.data(), kTop, &p);
+  EXPECT_EQ(p.triangle_twisted, 0u);
+}
+
+// A regular triangulation of a quadratic function on the lattice (i, j):
+// around a vertex of six triangles the twist equals the mixed difference a
+// parallelogram misses, whatever its direction, so every twisted candidate
+// plus its twist is exact, and the plain parallelograms miss wherever the
+// quadratic terms are felt.
+TEST(TriangleTwist, QuadraticLatticeIsExact) {
+  constexpr uint32_t n = 14;
+  Mesh lattice;
+  std::vector<uint32_t> q;
+  for (uint32_t j = 0; j < n; ++j)
+    for (uint32_t i = 0; i < n; ++i) q.insert(q.end(), {20 * i + i * i, 20 * j + j * j + i, 300 + 2 * i * j + j * j});
+  for (uint32_t j = 0; j + 1 < n; ++j)
+    for (uint32_t i = 0; i + 1 < n; ++i) {
+      const uint32_t o = j * n + i, a = o + 1, b = o + n, v = o + n + 1;
+      lattice.face_sizes.insert(lattice.face_sizes.end(), {3, 3});
+      lattice.corners.insert(lattice.corners.end(), {o, a, b, a, v, b});
+    }
+  const GeometryVisit visit(lattice, n * n);
+  int twisted = 0, exact_plain = 0, exact_twisted = 0;
+  for (uint32_t i = 0; i < n * n; ++i) {
+    const VertexPrediction p = visit.predict(i, q, kTop, false, true);
+    const uint32_t v = visit.order[i];
+    for (int k = 0; k < p.candidates; ++k) {
+      if (!(p.triangle_twisted >> k & 1)) continue;
+      ++twisted;
+      bool plain = true, with_twist = true;
+      for (int a = 0; a < 3; ++a) {
+        plain = plain && p.candidate[k][a] == kOne * q[3 * v + a];
+        with_twist = with_twist && p.candidate[k][a] + p.triangle_twist[k][a] == kOne * q[3 * v + a];
+      }
+      exact_plain += plain;
+      exact_twisted += with_twist;
+    }
+  }
+  EXPECT_GT(twisted, int(n * n));  // interior vertices meet one or more
+  EXPECT_EQ(exact_twisted, twisted);
+  EXPECT_EQ(exact_plain, 0);
+}
+
+// 14.5, 14.9: on a regular torus of triangles the encoder writes method 8
+// (format 1.11, features 4: the triangle twist alone) with the integers
+// method 4 carries, in fewer bytes; without triangle_twist, method 4. On an
+// irregular mesh the pass of predictions keeps method 4.
+TEST(TriangleTwist, EncoderWritesMethodEightWhereItPays) {
+  const Mesh torus = tools::triangulated(tools::make_torus(48, 32));
+  const WithAndWithout r = with_and_without(torus, EncodeOptions{}, &EncodeOptions::triangle_twist);
+  EXPECT_EQ(r.with.quantization.method, 8);
+  EXPECT_EQ(r.with.quantization.features, 4);
+  EXPECT_EQ(r.with.version_minor, 11);
+  EXPECT_EQ(r.without.quantization.method, 4);
+  EXPECT_EQ(r.with.quantized, r.without.quantized);
+  EXPECT_LT(r.with_bytes.size() * 10, r.without_bytes.size() * 9);  // more than 10 % smaller
+  tools::RandomSoupOptions o;
+  o.vertices = 400;
+  o.faces = 600;
+  EXPECT_NE(decode_all(encode_with(tools::make_random_soup(7, o), EncodeOptions{})).quantization.method, 8);
+}
+
 
 }  // namespace
 }  // namespace qmc

@@ -159,14 +159,15 @@ double max_quantization_step(const QuantizationInfo& q) {
   return std::max({q.step[0], q.step[1], q.step[2]});
 }
 
-const char* position_method_traits(int method) {
-  switch (method) {
-    case 4: return ": geometry order";
-    case 5: return ": geometry order, quads' twist";
-    case 6: return ": geometry order, candidate contexts";
-    case 7: return ": geometry order, quads' twist, candidate contexts";
-    default: return "";
-  }
+std::string position_method_traits(int method, int features) {
+  if (method < 4) return "";
+  // Methods 5 - 7 are method 4 with features that method 8 names in a byte (14.9).
+  if (method < 8) features = (method == 5 || method == 7 ? 1 : 0) | (method >= 6 ? 2 : 0);
+  std::string traits = ": geometry order";
+  if (features & 1) traits += ", quads' twist";
+  if (features & 4) traits += ", triangles' twist";
+  if (features & 2) traits += ", candidate contexts";
+  return traits;
 }
 
 std::string human_bytes(uint64_t bytes) {

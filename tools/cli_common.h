@@ -82,7 +82,7 @@ double max_quantization_step(const QuantizationInfo& q);
 
 // What a predicted POSN method (section 14.1) adds to method 1: "" for 1
 // and 3, else ": geometry order" and its additions (14.7, 14.8).
-const char* position_method_traits(int method);
+std::string position_method_traits(int method, int features);
 
 std::string human_bytes(uint64_t bytes);
 

@@ -94,7 +94,9 @@ const char kHelp[] =
     "  --gim-store-blank   also code the samples of blank pixels (smooth planes\n"
     "                      for image tools, at some cost in bytes)\n"
     "  --format 1.N        write nothing that decoders older than 1.N cannot read:\n"
-    "                      1.9 selects candidates without 14.8's contexts\n"
+    "                      1.10 predicts triangles without their neighbours'\n"
+    "                      twist (POSN methods 4 - 7, not 8), 1.9 selects\n"
+    "                      candidates without 14.8's contexts\n"
     "                      (POSN methods 4 and 5, not 6 and 7), 1.8 predicts\n"
     "                      quads without their neighbours' twist\n"
     "                      (POSN method 4, not 5), 1.7 writes predicted\n"
@@ -102,7 +104,7 @@ const char kHelp[] =
     "                      (method 1 or 3, not 4) and attribute values with\n"
     "                      coding 0 (not 4), 1.6 as method 1 only, 1.5\n"
     "                      also leaves out polygon coding 7, 1.4 also predicted\n"
-    "                      positions (deltas on the per-axis grid); default 1.10\n"
+    "                      positions (deltas on the per-axis grid); default 1.11\n"
     "  --uv-bits N         texture coordinates (spec 15) on a grid of 2^N - 1 steps\n"
     "                      over their range (default 12: 1/4 texel of a 1024\n"
     "                      texture)\n"
@@ -127,7 +129,7 @@ const char kHelp[] =
 // predicted positions (method 1) and LEVL code 2 but not polygon coding 7,
 // 1.6 decoders that but not POSN method 3, 1.7 decoders not method 4, 1.8
 // decoders not method 5, 1.9 decoders not methods 6 and 7 (spec 11).
-constexpr int kNewestMinor = 10, kOldestTargetMinor = 4;
+constexpr int kNewestMinor = 11, kOldestTargetMinor = 4;
 
 struct EncodeArgs {
   std::string input, output;
@@ -239,6 +241,8 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
 // error naming the option that needs a newer version.
 int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   EncodeOptions& o = args->options;
+  if (args->newest_minor >= 11) return -1;
+  o.triangle_twist = false;  // POSN method 8 (14.9) came with 1.11
   if (args->newest_minor >= 10) return -1;
   o.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came with 1.10
   if (args->newest_minor >= 9) return -1;
@@ -313,7 +317,7 @@ int parse(int argc, char** argv, EncodeArgs* args) {
       long minor = 0;
       if (value.compare(0, 2, "1.") != 0 || !parse_int(value.substr(2), kOldestTargetMinor, kNewestMinor, &minor) ||
           value.substr(2) != std::to_string(minor))
-        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8, 1.9 or 1.10, got '" + value + "'");
+        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 1.10 or 1.11, got '" + value + "'");
       args->newest_minor = int(minor);
       continue;
     }
@@ -439,7 +443,7 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
   const PositionStats& ps = stats.positions;
   const std::string positions_method =
       ps.method == 0 ? "deltas (spec 6)"
-                     : "predicted (spec 14, method " + std::to_string(ps.method) + position_method_traits(ps.method) +
+                     : "predicted (spec 14, method " + std::to_string(ps.method) + position_method_traits(ps.method, ps.features) +
                            (ps.graded_start ? (ps.method >= 4 ? ", graded start" : ": graded start") : "") + ")";
   std::printf("positions   %s, %s grid, step %.6g%s; bound %.6g, max error %.6g (%.3g of largest bbox side), "
               "rms %.6g\n",

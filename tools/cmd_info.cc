@@ -49,7 +49,7 @@ void print_predicted_positions(const DecodedFile& f) {
   const bool uniform = q.step[0] == q.step[1] && q.step[1] == q.step[2];
   const double bound = 0.5 * std::sqrt(q.step[0] * q.step[0] + q.step[1] * q.step[1] + q.step[2] * q.step[2]);
   std::printf("positions    predicted (spec 14, method %d%s%s), %s grid, step %.9g", q.method,
-              position_method_traits(q.method), q.graded_start ? ": graded start" : "",
+              position_method_traits(q.method, q.features).c_str(), q.graded_start ? ": graded start" : "",
               uniform ? "uniform" : "per-axis", q.step[0]);
   if (!uniform) std::printf(" %.9g %.9g", q.step[1], q.step[2]);
   std::printf(", tops %u %u %u, origin (%g %g %g); error bound %.6g\n", q.top[0], q.top[1], q.top[2], q.min[0],
@@ -65,7 +65,7 @@ void print_predicted_positions(const DecodedFile& f) {
       encode_predicted_positions(grid, f.mesh, &stats, CandidateChoice::kFewestBits,
                                  q.graded_start ? ClassStart::kGraded : ClassStart::kFlat,
                                  q.method >= 4 ? PredictionOrder::kGeometry : PredictionOrder::kLabels,
-                                 q.method == 5 || q.method == 7, q.method >= 6)
+                                 q.features & 1, q.features & 2, q.features & 4)
           .size();
   static const char* const kKinds[4] = {"previous vertex", "neighbour mean", "one rule", "several rules"};
   std::printf("             re-encoded here: %zu bytes;", payload);

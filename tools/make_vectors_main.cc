@@ -55,6 +55,7 @@ namespace {
 qmc::EncodeOptions format_1_6_options() {
   qmc::EncodeOptions options;
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
+  options.triangle_twist = false;  // and method 8 (14.9)
   options.graded_class_start = false;
   options.geometry_order = false;
   options.quad_twist = false;
@@ -2551,6 +2552,7 @@ std::vector<uint8_t> encode_posn_as_written(const Mesh& mesh, int method, int bi
                                             qmc::PositionGrid grid = qmc::PositionGrid::kUniform) {
   qmc::EncodeOptions options;
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
+  options.triangle_twist = false;  // and method 8 (14.9)
   options.position_bits = bits;
   options.position_grid = grid;
   options.position_method = qmc::PositionMethod::kPredicted;
@@ -2697,6 +2699,7 @@ void write_posn4_vectors(VectorWriter* w) {
   const Mesh scrambled = qmc::tools::make_scrambled(sphere, 67);
   qmc::EncodeOptions keep;
   keep.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
+  keep.triangle_twist = false;  // and method 8 (14.9)
   keep.keep_order = true;
   w->valid("valid_ordr_posn4_scrambled", encode_with(scrambled, keep, "scrambled method-4 sphere"), &scrambled);
   // 12.2: a progressive file's base mesh in method 4.
@@ -2751,6 +2754,7 @@ std::vector<uint8_t> rewritten_as_method_5(const std::vector<uint8_t>& file) {
 std::vector<uint8_t> encode_posn5(const Mesh& mesh, int bits) {
   qmc::EncodeOptions options;
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
+  options.triangle_twist = false;  // and method 8 (14.9)
   options.position_bits = bits;
   options.position_method = qmc::PositionMethod::kPredicted;
   options.candidate_choice = qmc::CandidateChoice::kFewestBits;
@@ -2859,13 +2863,13 @@ Mesh twist_degenerate_quads() {
 // is varint V, selector, start, grid, origin 12 bytes, step 8, three tops
 // as varints, then the stream.
 void write_geometry_order_rejections(VectorWriter* w, const std::string& prefix, const std::vector<uint8_t>& file,
-                                     size_t vertex_count) {
+                                     size_t vertex_count, size_t features_bytes = 0) {
   using qmc::ErrorCode;
   const ChunkReplacer with_posn(file, qmc::kChunkPositions);
   const std::vector<uint8_t> payload = with_posn.payload();
   std::vector<uint8_t> count;
   qmc::put_varint(&count, vertex_count);
-  const size_t start = count.size() + 1, tops = start + 2 + 12 + 8;
+  const size_t start = count.size() + 1, tops = start + features_bytes + 2 + 12 + 8;
   qmc::ByteReader after_tops(payload.data() + tops, payload.size() - tops);
   for (uint64_t top = 0, a = 0; a < 3; ++a) after_tops.get_varint(&top);
   const size_t stream = size_t(after_tops.cursor() - payload.data());
@@ -2911,12 +2915,14 @@ void write_posn5_vectors(VectorWriter* w) {
   const Mesh mixed = mixed_polygons(73);
   qmc::EncodeOptions options;
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
+  options.triangle_twist = false;  // and method 8 (14.9)
   options.position_bits = 12;
   w->valid("valid_posn5_mixed_polygons", rewritten_as_method_5(encode_with(mixed, options, "mixed polygons")), &mixed);
   // 14.7's example, its labels kept by indexed connectivity.
   const Mesh example = twist_example();
   qmc::EncodeOptions indexed;
   indexed.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
+  indexed.triangle_twist = false;  // and method 8 (14.9)
   indexed.position_bits = 4;
   indexed.connectivity = qmc::ConnectivityChoice::kIndexed;
   w->valid("valid_posn5_example", rewritten_as_method_5(encode_with(example, indexed, "14.7's example")), &example);
@@ -2939,6 +2945,7 @@ void write_posn5_vectors(VectorWriter* w) {
   qmc::tools::add_chart_texcoords(&textured);
   qmc::EncodeOptions attributes;
   attributes.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
+  attributes.triangle_twist = false;  // and method 8 (14.9)
   attributes.position_bits = 12;
   w->valid("valid_posn5_with_texcoords", encode_posn_method(textured, attributes, 5), &textured);
 
@@ -2989,6 +2996,7 @@ Mesh terraces_with_book(uint32_t fins) {
 void write_posn6_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   qmc::EncodeOptions options;  // what `qmc encode` writes
+  options.triangle_twist = false;  // but POSN method 8 (14.9) came after these vectors
   options.position_bits = 16;
   // What the encoder writes where the contexts pay: terraces, where the
   // parallelograms across a cliff are far off and the others agree.
@@ -3035,11 +3043,153 @@ void write_posn6_vectors(VectorWriter* w) {
   write_geometry_order_rejections(w, "posn6", encode_posn_method(terraces, options, 6), terraces.vertex_count());
 }
 
+// The file's POSN written again as method 8 (14.9) with the triangle twist
+// and the other features given, with the start its vertex count gives
+// (14.5); QHDR says 1.11.
+std::vector<uint8_t> rewritten_with_triangle_twist(const std::vector<uint8_t>& file, bool quad_twist,
+                                                   bool mask_contexts) {
+  Chunks c = split_chunks(file);
+  Mesh faces;
+  qmc::QuantizedPositions grid;
+  decode_grid(c, &faces, &grid);
+  const qmc::ClassStart start =
+      grid.q.size() / 3 < qmc::kGradedStartBelow ? qmc::ClassStart::kGraded : qmc::ClassStart::kFlat;
+  c[find_chunk(c, qmc::kChunkPositions)].payload =
+      qmc::encode_predicted_positions(grid, faces, nullptr, qmc::CandidateChoice::kFewestBits, start,
+                                      qmc::PredictionOrder::kGeometry, quad_twist, mask_contexts, true);
+  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, 11};
+  return join_chunks(c);
+}
+
+// Spec 14.9's example: the hexagon of 6 triangles around vertex 0 on the
+// lattice q(i, j) = (10 + 10 i, 10 + 10 j, 3 + 3 i j), and vertex 7 across
+// the edge (1, 2), faces and labels as there (indexed CONN), step 1.
+Mesh twist_hexagon() {
+  Mesh m;
+  m.positions = {10, 10, 3, 20, 10, 3, 10, 20, 3, 0, 20, 0, 0, 10, 3, 10, 0, 3, 20, 0, 0, 20, 20, 6};
+  m.face_sizes.assign(7, 3);
+  m.corners = {0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5, 0, 5, 6, 0, 6, 1, 1, 7, 2};
+  return m;
+}
+
+// A torus of 32 x 16 quads whose first half of faces is cut into triangles
+// along one diagonal each (a regular triangulation there: 14.9's twists),
+// the other half kept (14.7's), squeezed off round so twists are not zero.
+Mesh half_triangulated_torus() {
+  const Mesh torus = qmc::tools::make_torus(32, 16);
+  Mesh m;
+  m.positions = torus.positions;
+  for (size_t v = 0; v < m.vertex_count(); ++v) m.positions[3 * v + 2] *= 0.6f + 0.1f * m.positions[3 * v];
+  for (size_t f = 0, k = 0; f < torus.face_count(); k += torus.face_sizes[f], ++f) {
+    const uint32_t* c = &torus.corners[k];
+    if (f < torus.face_count() / 2 && torus.face_sizes[f] == 4) {
+      m.face_sizes.insert(m.face_sizes.end(), {3, 3});
+      m.corners.insert(m.corners.end(), {c[0], c[1], c[2], c[0], c[2], c[3]});
+    } else {
+      m.face_sizes.push_back(torus.face_sizes[f]);
+      m.corners.insert(m.corners.end(), c, c + torus.face_sizes[f]);
+    }
+  }
+  return m;
+}
+
+void write_posn8_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  // Spec 14.9's example, written as method 8 with the twist of triangles.
+  const Mesh hexagon = twist_hexagon();
+  qmc::EncodeOptions unit = options;
+  unit.connectivity = qmc::ConnectivityChoice::kIndexed;
+  unit.position_step = 1;
+  w->valid("valid_posn8_hexagon", rewritten_with_triangle_twist(encode_with(hexagon, unit, "hexagon"), false, false),
+           &hexagon);
+  // What the encoder writes where the twist pays: a regular torus of
+  // triangles, under 10,000 vertices (features 4) and over (features 6).
+  const Mesh torus = qmc::tools::triangulated(qmc::tools::make_torus(48, 32));
+  options.position_bits = 12;
+  w->valid("valid_posn8_torus", encode_posn_method(torus, options, 8), &torus);
+  const Mesh big_torus = qmc::tools::triangulated(qmc::tools::make_torus(160, 64));
+  options.position_bits = 14;
+  w->valid("valid_posn8_big_torus", encode_posn_method(big_torus, options, 8), &big_torus);
+  // Rewritten as method 8: features 0 (method 4's decoding), a graded start,
+  // an irregular sphere (lambda learns little), a rough torus at 24 bits
+  // (twists beyond 2^16 steps: the clamps of T and e and the halving of N and
+  // D), quads, triangles and larger faces (features 7), a book of 8
+  // triangles on one edge (only the 4 kept candidates carry twists).
+  const Mesh small = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(2)), 90, 0.004f);
+  options.position_bits = 12;
+  qmc::EncodeOptions no_twist = options;
+  no_twist.triangle_twist = false;
+  const std::vector<uint8_t> small_file = encode_with(small, no_twist, "small sphere");
+  {
+    Chunks c = split_chunks(small_file);
+    Mesh faces;
+    qmc::QuantizedPositions grid;
+    decode_grid(c, &faces, &grid);
+    std::vector<uint8_t> payload = qmc::encode_predicted_positions(
+        grid, faces, nullptr, qmc::CandidateChoice::kFewestBits, qmc::ClassStart::kGraded,
+        qmc::PredictionOrder::kGeometry, false, false, false);
+    // Method 4 (0x84, start) as method 8 (0x88, start, features 0): the same stream.
+    std::vector<uint8_t> count;
+    qmc::put_varint(&count, grid.q.size() / 3);
+    payload[count.size()] = 0x88;
+    payload.insert(payload.begin() + count.size() + 2, 0);
+    c[find_chunk(c, qmc::kChunkPositions)].payload = payload;
+    c[find_chunk(c, qmc::kChunkHeader)].payload = {1, 11};
+    w->valid("valid_posn8_features_0", join_chunks(c), &small);
+  }
+  w->valid("valid_posn8_graded_start", rewritten_with_triangle_twist(small_file, false, false), &small);
+  const Mesh sphere = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(3)), 91, 0.01f);
+  w->valid("valid_posn8_irregular_sphere",
+           rewritten_with_triangle_twist(encode_with(sphere, no_twist, "sphere"), false, true), &sphere);
+  const Mesh rough = rough_torus(0.3f);
+  no_twist.position_bits = 24;
+  w->valid("valid_posn8_rough_torus_24_bits",
+           rewritten_with_triangle_twist(encode_with(rough, no_twist, "rough torus"), false, true), &rough);
+  no_twist.position_bits = 12;
+  const Mesh mixed = mixed_polygons(92);
+  w->valid("valid_posn8_mixed_polygons",
+           rewritten_with_triangle_twist(encode_with(mixed, no_twist, "mixed"), true, true), &mixed);
+  // Both twists at once (features 5): a torus half of quads, half of their
+  // triangles, a quadratic bump on it.
+  const Mesh half = half_triangulated_torus();
+  w->valid("valid_posn8_quads_and_triangles",
+           rewritten_with_triangle_twist(encode_with(half, no_twist, "half torus"), true, false), &half);
+  const Mesh book = terraces_with_book(8);
+  qmc::EncodeOptions indexed = no_twist;
+  indexed.connectivity = qmc::ConnectivityChoice::kIndexed;
+  w->valid("valid_posn8_book_of_8", rewritten_with_triangle_twist(encode_with(book, indexed, "book"), false, false),
+           &book);
+  // 15.4: an aTTR's values take no twist, whatever POSN's method.
+  Mesh textured = qmc::tools::triangulated(qmc::tools::make_torus(24, 16));
+  qmc::tools::add_chart_texcoords(&textured);
+  w->valid("valid_posn8_with_texcoords",
+           rewritten_with_triangle_twist(encode_with(textured, no_twist, "texcoords"), false, false), &textured);
+
+  // 14.1's checks of the features byte, then the rules of 14.1 and 14.4 on
+  // method 8's path, as for methods 4 - 7.
+  const std::vector<uint8_t> torus_file = encode_posn_method(torus, options, 8);
+  const ChunkReplacer with_posn(torus_file, qmc::kChunkPositions);
+  const std::vector<uint8_t> payload = with_posn.payload();
+  std::vector<uint8_t> count;
+  qmc::put_varint(&count, torus.vertex_count());
+  const size_t features = count.size() + 2;
+  std::vector<uint8_t> p = payload;
+  p[features] = 8;
+  w->invalid("invalid_posn8_features_bit_3", with_posn(p), ErrorCode::kBadChunkPayload);
+  p[features] = 0x84;
+  w->invalid("invalid_posn8_features_bit_7", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn8_features_missing", with_posn({payload.begin(), payload.begin() + long(features)}),
+             ErrorCode::kBadChunkPayload);
+  write_geometry_order_rejections(w, "posn8", torus_file, torus.vertex_count(), 1);
+}
+
 // Section 15.9: aTTR coding 4, what `qmc encode` writes when it is the
 // smaller; the generator fails if the encoder kept coding 0 instead.
 std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, const char* what) {
   qmc::EncodeOptions options;
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
+  options.triangle_twist = false;  // and method 8 (14.9)
   options.geometry_order = posn_geometry_order;
   options.attribute_graded_start = false;  // codings 5 and 6 came after these vectors
   options.attribute_predicted_mapping = false;  // and mapping 3 (15.11)
@@ -3136,6 +3286,7 @@ void write_attribute_coding56_vectors(VectorWriter* w) {
   qmc::tools::add_chart_texcoords(&textured);
   qmc::EncodeOptions options;
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
+  options.triangle_twist = false;  // and method 8 (14.9)
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
   options.attribute_guided = false;             // and coding 7 (15.12)
   options.angle_weighted_normals = false;       // and coding 8 (15.13)
@@ -3360,6 +3511,7 @@ void write_attribute_coding7_vectors(VectorWriter* w) {
   const Mesh textured = jittered_textured_grid(12, 12, 91, true);
   qmc::EncodeOptions options;  // what `qmc encode` writes
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
+  options.triangle_twist = false;  // and method 8 (14.9)
   const std::vector<uint8_t> both = encode_coding7(textured, options, 1, "coding 7 texcoords");
   w->valid("valid_attr_coding7_texcoords", both, &textured);
   qmc::EncodeOptions labels = options;
@@ -3455,6 +3607,7 @@ void write_attribute_coding8_vectors(VectorWriter* w) {
   using namespace qmc::tools;
   qmc::EncodeOptions options;  // what `qmc encode` writes
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
+  options.triangle_twist = false;  // and method 8 (14.9)
   // A bumpy grid of irregular triangles, and of quads, and the triangles with a crease.
   Mesh triangles = jittered_textured_grid(12, 12, 99, true);
   triangles.attributes.clear();
@@ -3542,6 +3695,7 @@ void write_attribute_mapping3_vectors(VectorWriter* w) {
   using namespace qmc::tools;
   qmc::EncodeOptions options;  // what `qmc encode` wrote
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
+  options.triangle_twist = false;  // and method 8 (14.9)
   options.attribute_guided = false;  // coding 7 (15.12) came after these vectors
   options.angle_weighted_normals = false;  // and coding 8 (15.13)
   options.quad_twist = false;              // and POSN method 5 (14.7)
@@ -3639,6 +3793,7 @@ int main(int argc, char** argv) {
   write_attribute_coding8_vectors(&w);
   write_posn5_vectors(&w);
   write_posn6_vectors(&w);
+  write_posn8_vectors(&w);
   w.finish();
   return 0;
 }

@@ -16,6 +16,7 @@ namespace {
 const char kUsage[] =
     "usage: qmc-meshgen KIND [PARAMS] OUT.{obj,off,ply}\n"
     "  tetrahedron | cube | sphere N | torus MAJOR MINOR | grid NX NY | prism N | soup SEED\n"
+    "  triangle-torus MAJOR MINOR  the torus with each quad cut into two triangles\n"
     "  polygon N | book N | star N   one N-gon; N triangles on one edge; N triangles on one vertex\n"
     "  deltoidal                the 60-quad sphere (deltoidal hexecontahedron)\n"
     "  sphere-series LEVELS     it after LEVELS Catmull-Clark steps, on the unit sphere (0..10)\n"
@@ -64,6 +65,7 @@ int main(int argc, char** argv) {
   else if (kind == "cube") mesh = make_cube();
   else if (kind == "sphere") mesh = make_quad_sphere(param(argc, argv, 2));
   else if (kind == "torus") mesh = make_torus(param(argc, argv, 2), param(argc, argv, 3));
+  else if (kind == "triangle-torus") mesh = triangulated(make_torus(param(argc, argv, 2), param(argc, argv, 3)));
   else if (kind == "grid") mesh = make_grid(param(argc, argv, 2), param(argc, argv, 3));
   else if (kind == "prism") mesh = make_prism(param(argc, argv, 2));
   else if (kind == "polygon") mesh = make_polygon(uint32_t(param(argc, argv, 2)));

@@ -28,13 +28,14 @@ struct ChunkInfo {
 std::string chunk_type_name(uint32_t type);
 
 struct QuantizationInfo {
-  int method = 0;                 // POSN method: 0 deltas (section 6), 1, 3 or 4 predicted (section 14)
+  int method = 0;                 // POSN method: 0 deltas (section 6), 1 or 3 - 8 predicted (section 14)
   bool graded_start = false;      // methods 3 and 4 with start 1: 14.4.1's class probabilities
   int bits = 0;                   // method 0: n of section 6.1; method 1: bit length of the largest top
   std::array<float, 3> min{};     // method 0: the stored box; method 1: the origin
   std::array<float, 3> max{};     // method 1: the grid's last point, float(min + top x step)
   std::array<double, 3> step{};   // x = min + q x step (6.4, 14.1), per axis
   std::array<uint32_t, 3> top{};  // the largest q per axis
+  int features = 0;               // method 8's features (14.9): 1 quad twist, 2 mask contexts, 4 triangle twist
 };
 
 // Section 12: one level of a progressive file. Level 0 is the base mesh of

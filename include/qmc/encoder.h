@@ -115,6 +115,13 @@ struct EncodeOptions {
   // or more (spec 14.5: face.obj's positions 6.4 % smaller at 12 bits,
   // beetle's 4.8 %). false keeps methods 4 and 5, which 1.9 decoders read.
   bool mask_contexts = true;
+  // With geometry_order: a triangle's parallelogram also carries the twist
+  // of the parallelograms beside it, in the share the vertices before it
+  // say pays, POSN method 8 (format 1.11, spec 14.9), written where a pass
+  // of predictions says it beats methods 4 - 7 (regular triangulations:
+  // camelhead's positions 9-15 % smaller). false keeps methods 4 - 7, which
+  // 1.10 decoders read.
+  bool triangle_twist = true;
   // Attribute values on a grid may take aTTR coding 4 (spec 15.9, 14.6's
   // order over the attribute mesh) where it is smaller than coding 0: 2-7 %
   // of the corpus's texture coordinates. Decoders of the revisions before
@@ -237,8 +244,9 @@ struct GimEncodeStats {
 
 // Sections 6 and 14: how the positions were coded.
 struct PositionStats {
-  int method = 0;                  // POSN method: 0 deltas, 1, 3 or 4 predicted
-  bool graded_start = false;       // methods 3 and 4: 14.4.1's start
+  int method = 0;                  // POSN method: 0 deltas, 1 or 3 - 8 predicted
+  int features = 0;                // method 8's features byte (14.9)
+  bool graded_start = false;       // methods 3 - 8: 14.4.1's start
   std::array<double, 3> step{};    // the grid's step per axis
   std::array<uint32_t, 3> top{};   // the largest grid coordinate per axis
   double error_bound = 0;          // Euclidean bound of the rounding: |step| / 2

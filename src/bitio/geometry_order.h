@@ -47,12 +47,16 @@ class PredictionVisit {
   }
   // POSN method 5 (14.7): quads' runs carry their neighbours' twist; geometry order only.
   void twist_quads(bool on = true) { twist_ = on && !order_.empty(); }
+  // POSN method 8 (14.9): triangle candidates carry their twists; geometry order only.
+  void twist_triangles(bool on = true) { triangle_twist_ = on && !order_.empty(); }
+  bool twists_triangles() const { return triangle_twist_; }
   // 14.3 for item(i), in order i = 0, 1, ... (the guide's orientation carries on).
   void predict(uint32_t i, const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
                VertexPrediction* out) const {
     PositionGuide* guide = guided_ ? &guide_ : nullptr;
     if (order_.empty()) return predict_vertex(mesh_, i, q, activity, top, out, guide);
-    predict_vertex_in_order(mesh_, order_.data(), rank_.data(), i, q, activity, top, out, guide, twist_);
+    predict_vertex_in_order(mesh_, order_.data(), rank_.data(), i, q, activity, top, out, guide, twist_,
+                            triangle_twist_);
   }
 
  private:
@@ -60,6 +64,7 @@ class PredictionVisit {
   mutable PositionGuide guide_;  // 15.12's orientation changes as the values are predicted
   bool guided_ = false;
   bool twist_ = false;
+  bool triangle_twist_ = false;
   std::vector<uint32_t> order_, rank_;  // empty in label order
 };
 

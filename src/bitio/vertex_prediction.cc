@@ -43,12 +43,20 @@ constexpr int kMaxExamined = 8;
 // Whether a vertex u is decoded before the vertex v predicted: u < v in
 // label order (14.2), rank(u) < rank(v) in the geometry order (14.6), where
 // predicting over the original faces gives what 14.6's renamed faces give.
+// kTriangleTwist: parallelogram candidates carry 14.9's twist (POSN method 8,
+// in the geometry order only), a type of its own so that the other methods'
+// predictions do not test for it.
 struct LabelOrder {
+  static constexpr bool kTriangleTwist = false;
   uint32_t key(uint32_t u) const { return u; }
 };
 struct RankOrder {
+  static constexpr bool kTriangleTwist = false;
   const uint32_t* rank;
   uint32_t key(uint32_t u) const { return rank[u]; }
+};
+struct TwistedRankOrder : RankOrder {
+  static constexpr bool kTriangleTwist = true;
 };
 template <class Order>
 struct Visit {
@@ -71,15 +79,72 @@ void search_across(const VertexCorners& m, uint32_t u, uint32_t w, bool triangle
   });
 }
 
+// 14.9: adds to sum the twist of the edge (o, s) of the triangle g, s - o -
+// c + d: c is o's other neighbour in the first triangle across (o, s) whose
+// c is decoded, d its other neighbour in the first triangle across (o, c)
+// whose d is decoded; false if there is none. On a regular triangulation
+// the triangles (o, s, c) and (o, c, d) make the parallelogram beside the
+// one predicting v. o has 6 corners, so 14.2's searches are scans of them
+// that the bound of 8 never stops.
+template <class Order>
+bool add_triangle_twist(const VertexCorners& m, uint32_t g, uint32_t o, uint32_t s, const Visit<Order>& at,
+                        const uint32_t* q, int64_t sum[3]) {
+  const uint32_t* corner = m.begin(o);
+  const VertexCorners::Sides* side = m.sides(o);
+  // The neighbour of o across w at corner i, if corner i is a triangle's with w next to o and not in face `skip`.
+  const auto across = [&](int i, uint32_t w, uint32_t skip, uint32_t* other) {
+    if ((side[i].next != w && side[i].previous != w) || m.degree(corner[i]) != 3 || m.face(corner[i]) == skip)
+      return false;
+    *other = side[i].next == w ? side[i].previous : side[i].next;
+    return true;
+  };
+  for (int i = 0; i < 6; ++i) {
+    uint32_t c = 0;
+    if (!across(i, s, g, &c) || !at.before(c) || c == s || c == o) continue;
+    for (int k = 0; k < 6; ++k) {
+      uint32_t d = 0;
+      if (!across(k, c, m.face(corner[i]), &d) || !at.before(d) || d == c || d == o || d == s) continue;
+      for (int x = 0; x < 3; ++x)
+        sum[x] += int64_t(q[3 * size_t(s) + x]) - int64_t(q[3 * size_t(o) + x]) - int64_t(q[3 * size_t(c) + x]) +
+                  int64_t(q[3 * size_t(d) + x]);
+      return true;
+    }
+    return false;  // only the first c
+  }
+  return false;
+}
+
+// 14.9: the twist of the parallelogram candidate just added from the triangle
+// (a, b, o), if o has exactly six corners: the mean twist of its edges (o, b)
+// and (o, a).
+template <class Order>
+void add_triangle_twists(const VertexCorners& m, uint32_t ka, uint32_t a, uint32_t b, uint32_t o,
+                         const Visit<Order>& at, const uint32_t* q, VertexPrediction* c) {
+  if (m.end(o) - m.begin(o) != 6) return;
+  const uint32_t g = m.face(ka);
+  int64_t sum[3] = {0, 0, 0};
+  const int n = int(add_triangle_twist(m, g, o, b, at, q, sum)) + int(add_triangle_twist(m, g, o, a, at, q, sum));
+  if (n == 0) return;
+  const int k = c->candidates - 1;
+  c->triangle_twisted |= 1u << k;
+  for (int x = 0; x < 3; ++x) c->triangle_twist[k][x] = kOne / n * sum[x];
+}
+
 // 14.3.1, across-edge parallelogram: the triangles over the edge (a, b)
-// opposite v's corner, o being their third vertex.
+// opposite v's corner, o being their third vertex; with 14.9's twist, each
+// candidate's twist summed.
 template <class Order>
 void add_parallelograms(const VertexCorners& m, uint32_t corner, const VertexCorners::Sides& sides,
                         const Visit<Order>& at, const uint32_t* q, VertexPrediction* c) {
   const uint32_t a = sides.next, b = sides.previous;
   if (!at.before(a) || !at.before(b) || a == b) return;
-  search_across(m, a, b, true, corner, [&](uint32_t, uint32_t o) {
-    if (at.before(o) && o != a && o != b) add_candidate(c, kWeightParallelogram, q, a, b, o, kOne);
+  search_across(m, a, b, true, corner, [&](uint32_t ka, uint32_t o) {
+    if (at.before(o) && o != a && o != b) {
+      const int before = c->candidates;
+      add_candidate(c, kWeightParallelogram, q, a, b, o, kOne);
+      if constexpr (Order::kTriangleTwist)
+        if (c->candidates > before) add_triangle_twists(m, ka, a, b, o, at, q, c);
+    }
     return c->candidates < kMaxCandidates;
   });
 }
@@ -297,6 +362,8 @@ void predict(const VertexCorners& m, const Visit<Order>& at, const uint32_t* pre
   out->candidates = 0;
   out->scale = 0;
   out->twisted = 0;
+  out->triangle_twisted = 0;
+  out->twist_weight = 0;
   int64_t neighbour_sum[3] = {0, 0, 0};
   int64_t neighbours = 0;
   uint64_t activity_sum = 0;
@@ -333,9 +400,12 @@ void predict_vertex(const VertexCorners& m, uint32_t v, const uint32_t* q, const
 
 void predict_vertex_in_order(const VertexCorners& m, const uint32_t* order, const uint32_t* rank, uint32_t i,
                              const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
-                             VertexPrediction* out, PositionGuide* guide, bool quad_twist) {
-  predict(m, Visit<RankOrder>{{rank}, order[i], i}, i > 0 ? &order[i - 1] : nullptr, q, activity, top, guide,
-          quad_twist, out);
+                             VertexPrediction* out, PositionGuide* guide, bool quad_twist, bool triangle_twist) {
+  const uint32_t* previous = i > 0 ? &order[i - 1] : nullptr;
+  if (triangle_twist)
+    predict(m, Visit<TwistedRankOrder>{{{rank}}, order[i], i}, previous, q, activity, top, guide, quad_twist, out);
+  else
+    predict(m, Visit<RankOrder>{{rank}, order[i], i}, previous, q, activity, top, guide, quad_twist, out);
 }
 
 namespace {
@@ -371,16 +441,53 @@ void select_candidates(VertexPrediction* p, unsigned mask, const uint32_t top[3]
   }
   if (used == 0) {  // 14.3.2's fallback
     const int64_t n = p->neighbours;
-    for (int a = 0; a < 3; ++a)
+    for (int a = 0; a < 3; ++a) {
       p->value[a] = std::clamp<int64_t>(n > 0 ? floor_div(2 * p->neighbour_sum[a] + n, 2 * n) : p->previous[a], 0, top[a]);
+      p->mean[a] = p->value[a];
+      p->twist_mean[a] = 0;
+    }
     p->kind = n > 0 ? PredictionKind::kNeighbours : PredictionKind::kPrevious;
     return;
   }
-  // 14.3.3's floor((2 S + W 2^16) / (2 W 2^16)), as floor(floor(x / 2^17) / W).
-  for (int a = 0; a < 3; ++a)
-    p->value[a] =
-        std::clamp<int64_t>(floor_div_by_weight(floor_shift(2 * sum[a] + weight * kOne, 17), weight), 0, top[a]);
+  // 14.3.3's floor((2 S + W 2^16) / (2 W 2^16)), as floor(floor(x / 2^17) / W),
+  // plus 14.9's correction floor((lambda T + 2^23) / 2^24), T = floor(twist_sum / W):
+  // 0 but in POSN method 8 with the triangle twist.
+  int64_t correction[3] = {0, 0, 0};
+  for (int a = 0; a < 3; ++a) {
+    p->mean[a] = floor_div_by_weight(floor_shift(2 * sum[a] + weight * kOne, 17), weight);
+    p->twist_mean[a] = 0;
+  }
+  if (const unsigned twisted = p->triangle_twisted & mask; twisted != 0) {
+    int64_t twist_sum[3] = {0, 0, 0};
+    for (int i = 0; i < p->candidates; ++i)
+      if (twisted >> i & 1)
+        for (int a = 0; a < 3; ++a) twist_sum[a] += p->weight[i] * p->triangle_twist[i][a];
+    for (int a = 0; a < 3; ++a) {
+      p->twist_mean[a] = floor_div_by_weight(twist_sum[a], weight);
+      correction[a] = floor_shift(p->twist_weight * p->twist_mean[a] + (int64_t(1) << 23), 24);
+    }
+  }
+  for (int a = 0; a < 3; ++a) p->value[a] = std::clamp<int64_t>(p->mean[a] + correction[a], 0, top[a]);
   p->kind = used > 1 ? PredictionKind::kSeveral : PredictionKind::kSingle;
+}
+
+
+// 14.9: N += e t, D += t t per axis, e and t in 1/16 of a step and clamped
+// to +-2^20 (so |N| <= 2^20 D and nothing overflows), both halved while D
+// is above 2^40.
+void TriangleTwistWeight::learn_twisted(const VertexPrediction& p, const uint32_t* q) {
+  constexpr int64_t kBound = int64_t(1) << 20;
+  for (int a = 0; a < 3; ++a) {
+    const int64_t t = std::clamp<int64_t>(floor_shift(p.twist_mean[a], 12), -kBound, kBound);
+    const int64_t error = std::clamp<int64_t>(int64_t(q[a]) - p.mean[a], -kBound, kBound);
+    const int64_t e = std::clamp<int64_t>(16 * error, -kBound, kBound);
+    products_ += e * t;
+    squares_ += t * t;
+  }
+  while (squares_ > (int64_t(1) << 40)) {
+    products_ = floor_shift(products_, 1);
+    squares_ = floor_shift(squares_, 1);
+  }
 }
 
 }  // namespace qmc

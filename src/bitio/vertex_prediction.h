@@ -179,9 +179,41 @@ struct VertexPrediction {
   // one prediction.
   unsigned twisted = 0;
   int64_t twist_term[kMaxCandidates][3];
-  // The prediction of the selected subset (select_candidates), clamped to 0..top[a].
+  // With 14.9's triangle twist: the parallelogram candidates that carry a
+  // twist (a bit each), the twist of each (units of 2^-16), and the weight
+  // lambda (units of 1/256) TriangleTwistWeight gives them.
+  unsigned triangle_twisted = 0;
+  int64_t triangle_twist[kMaxCandidates][3];
+  int64_t twist_weight = 0;
+  // The prediction of the selected subset (select_candidates): the weighted
+  // mean of 14.3.3 before the twist's correction and the clamp (mean), the
+  // selected candidates' weighted mean twist (twist_mean, 2^-16 units), and
+  // the prediction, clamped to 0..top[a] (value).
   PredictionKind kind = PredictionKind::kPrevious;
+  int64_t mean[3] = {0, 0, 0};
+  int64_t twist_mean[3] = {0, 0, 0};
   int64_t value[3] = {0, 0, 0};
+};
+
+// 14.9: how much of the triangle twist a vertex's prediction takes, a weight
+// fitted by least squares to the vertices decoded before it (the decoder
+// learns it as the encoder did, nothing is transmitted).
+class TriangleTwistWeight {
+ public:
+  // Before v's mask: the weight of p's twists, lambda = clamp(floor(256 N /
+  // D), 0, 256) in units of 1/256 (0 < N < D where it divides).
+  void apply(VertexPrediction* p) const {
+    p->twist_weight = products_ <= 0 ? 0 : products_ >= squares_ ? 256 : 256 * products_ / squares_;
+  }
+  // After v's integers q (3) are known, p selected as coded (its mean and
+  // twist_mean those of v's mask): the fit learns from them.
+  void learn(const VertexPrediction& p, const uint32_t* q) {
+    if (p.triangle_twisted != 0) learn_twisted(p, q);  // (else T = 0: nothing to learn)
+  }
+
+ private:
+  void learn_twisted(const VertexPrediction& p, const uint32_t* q);
+  int64_t products_ = 0, squares_ = 0;  // 14.9's N and D
 };
 
 // Section 15.12 (aTTR coding 7): texture coordinates guided by the
@@ -207,10 +239,12 @@ void predict_vertex(const VertexCorners& mesh, uint32_t v, const uint32_t* q, co
 // the vertices decoded before it those of rank below i, and order[i - 1]
 // the previous vertex. Gives what predict_vertex gives for vertex i of the
 // faces renamed by rank, without renaming them. With quad_twist, a quad's
-// run carries the twist of its neighbours (POSN method 5, 14.7).
+// run carries the twist of its neighbours (POSN method 5, 14.7); with
+// triangle_twist, out gets the triangle candidates' twists (14.9).
 void predict_vertex_in_order(const VertexCorners& mesh, const uint32_t* order, const uint32_t* rank, uint32_t i,
                              const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
-                             VertexPrediction* out, PositionGuide* guide = nullptr, bool quad_twist = false);
+                             VertexPrediction* out, PositionGuide* guide = nullptr, bool quad_twist = false,
+                             bool triangle_twist = false);
 
 // 14.3.3: the prediction from the candidates whose bit is set in mask (the
 // weighted mean), or the fallback if none is.

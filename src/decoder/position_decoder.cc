@@ -23,8 +23,11 @@ Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadCh
 
 // Section 14.1: the byte after vertex_count selects the method.
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (14.1)
-// Methods 4 - 7 (14.1, 14.6 - 14.8), 0x84 .. 0x87, all with the start byte.
-constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x87;
+// Methods 4 - 8 (14.1, 14.6 - 14.9), 0x84 .. 0x88, all with the start byte;
+// method 8 with the features byte of 14.9 after it.
+constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x88;
+constexpr uint8_t kFeaturesSelector = 0x88;
+constexpr uint8_t kQuadTwistFeature = 1, kMaskContextsFeature = 2, kTriangleTwistFeature = 4;
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
   for (int a = 0; a < 3; ++a)
@@ -85,12 +88,22 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
       if (start > 1) return bad_payload("start " + std::to_string(start) + " is neither 0 nor 1 (section 14.1)");
       info->graded_start = start == 1;
     }
+    if (selector == kFeaturesSelector) {
+      uint8_t features = 0;
+      if (!in->get_u8(&features)) return bad_payload("method 8's features byte missing (section 14.9)");
+      if (features > 7)
+        return bad_payload("features " + std::to_string(features) + " has a bit above bit 2 set (section 14.9)");
+      info->features = features;
+    } else {
+      info->features = (info->method == 5 || info->method == 7 ? kQuadTwistFeature : 0) |
+                       (info->method >= 6 ? kMaskContextsFeature : 0);
+    }
     return read_grid(in, info);
   }
   if (selector >= 0x80)
     return Status(ErrorCode::kUnsupportedFeature,
                   "POSN: method " + std::to_string(selector - 0x80) +
-                      " is not defined (section 14.1 knows 0, 1, 3, 4, 5, 6 and 7)");
+                      " is not defined (section 14.1 knows 0, 1, 3, 4, 5, 6, 7 and 8)");
   if (selector < 1 || selector > 30) return bad_payload("quantization bits " + std::to_string(selector) + " outside 1..30");
   info->method = 0;
   info->bits = selector;
@@ -170,7 +183,7 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
 Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& faces, uint32_t count,
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
                              ClassStart start, PredictionOrder order, const PositionGuide* guide, bool quad_twist,
-                             bool mask_contexts) {
+                             bool mask_contexts, bool triangle_twist) {
   if (!range_stream_justifies(count, size))  // section 14.1, before anything is reserved
     return Status(ErrorCode::kLimitExceeded, names.chunk + ": " + std::to_string(count) + " " + names.items +
                                                  " for " + std::to_string(size) +
@@ -181,6 +194,8 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   PredictionVisit visit(corners, order);
   visit.guide_by(guide);
   visit.twist_quads(quad_twist);
+  visit.twist_triangles(triangle_twist);
+  TriangleTwistWeight twist_weight;
   std::vector<uint32_t> activity(count);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start, mask_contexts));
   RangeDecoder rc(stream, size);
@@ -191,8 +206,10 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   for (uint32_t i = 0; i < count; ++i) {
     const size_t v = visit.item(i);
     visit.predict(i, quantized->data(), activity.data(), top, &p);
+    twist_weight.apply(&p);
     if (Status s = decode_vertex(&rc, &model[0], names, i, top, &p, &(*quantized)[3 * v], &activity[v]); !s.ok())
       return s;
+    twist_weight.learn(p, &(*quantized)[3 * v]);
   }
   if (rc.unread() != 0)
     return Status(ErrorCode::kBadChunkPayload, names.chunk + ": " + std::to_string(rc.unread()) +
@@ -218,8 +235,8 @@ Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, 
     const ClassStart start = info->graded_start ? ClassStart::kGraded : ClassStart::kFlat;
     const PredictionOrder order = info->method >= 4 ? PredictionOrder::kGeometry : PredictionOrder::kLabels;
     if (Status s = decode_predicted_grid(in.cursor(), in.remaining(), faces, vertex_count, info->top.data(), names,
-                                         quantized, start, order, nullptr, info->method == 5 || info->method == 7,
-                                         info->method >= 6);
+                                         quantized, start, order, nullptr, info->features & kQuadTwistFeature,
+                                         info->features & kMaskContextsFeature, info->features & kTriangleTwistFeature);
         !s.ok())
       return s;
   } else {

@@ -4,8 +4,8 @@
 #include "encoder/position_encoder.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <cstdio>
 
 #include "bitio/bit_writer.h"
 #include "bitio/byte_io.h"
@@ -25,6 +25,8 @@ constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods
 constexpr uint8_t kGeometryOrderSelector = 0x84;                         // method 4 (14.1, 14.6)
 constexpr uint8_t kQuadTwistSelector = 0x85;                             // method 5 (14.1, 14.7)
 constexpr uint8_t kMaskContextSelectors[2] = {0x86, 0x87};               // methods 6 and 7 (14.1, 14.8)
+constexpr uint8_t kFeaturesSelector = 0x88;                              // method 8 (14.1, 14.9)
+constexpr uint8_t kQuadTwistFeature = 1, kMaskContextsFeature = 2, kTriangleTwistFeature = 4;  // 14.9
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
 
 void bounding_box(const std::vector<float>& positions, QuantizedPositions* out) {
@@ -216,7 +218,7 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
   const unsigned all = (1u << p->candidates) - 1;
   unsigned best = all;
   double best_cost = INFINITY;
-  int64_t best_value[3] = {0, 0, 0};
+  int64_t best_value[3] = {0, 0, 0}, best_mean[3] = {0, 0, 0}, best_twist[3] = {0, 0, 0};
   PredictionKind best_kind = PredictionKind::kPrevious;
   const bool fewest_bits = choice == CandidateChoice::kFewestBits;
   ResidualCosts residual_costs(*model);
@@ -240,10 +242,14 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
       best_cost = cost();
       best = mask;
       std::copy(p->value, p->value + 3, best_value);
+      std::copy(p->mean, p->mean + 3, best_mean);
+      std::copy(p->twist_mean, p->twist_mean + 3, best_twist);
       best_kind = p->kind;
     }
   }
   std::copy(best_value, best_value + 3, p->value);
+  std::copy(best_mean, best_mean + 3, p->mean);
+  std::copy(best_twist, best_twist + 3, p->twist_mean);
   p->kind = best_kind;
   return best;
 }
@@ -260,9 +266,11 @@ std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t
   PositionStats local;
   PositionStats& st = stats ? *stats : local;
   VertexPrediction p;
+  TriangleTwistWeight twist_weight;  // 14.9: no correction without the triangle twist
   for (uint32_t i = 0; i < n; ++i) {
     const size_t v = visit.item(i);
     visit.predict(i, q.data(), activity.data(), top, &p);
+    twist_weight.apply(&p);
     const double before = rc.meter.bits;
     const int context = mask_context(model[0], p);
     const unsigned mask = best_candidates(&q[3 * v], top, &model[0], choice, context, &p);
@@ -274,6 +282,7 @@ std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t
       code_position_residual(&rc, &model[0], p, magnitude, a, SignedResidual{magnitude[a], r < 0});
     }
     activity[v] = magnitude[0] + magnitude[1] + magnitude[2];
+    twist_weight.learn(p, &q[3 * v]);
     ++st.vertices_by_kind[int(p.kind)];
     st.bits_by_kind[int(p.kind)] += rc.meter.bits - before;
   }
@@ -283,12 +292,18 @@ std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t
 // 14.1: the payload of a predicted POSN, its header and the stream; empty
 // when the vertices cost too little for 14.1's bound.
 std::vector<uint8_t> predicted_payload(const QuantizedPositions& positions, ClassStart start, PredictionOrder order,
-                                       bool quad_twist, bool mask_contexts, const std::vector<uint8_t>& stream) {
+                                       bool quad_twist, bool mask_contexts, bool triangle_twist,
+                                       const std::vector<uint8_t>& stream) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
   if (!range_stream_justifies(n, stream.size())) return {};
   std::vector<uint8_t> payload;
   put_varint(&payload, n);
-  if (order == PredictionOrder::kGeometry) {
+  if (order == PredictionOrder::kGeometry && triangle_twist) {
+    put_u8(&payload, kFeaturesSelector);
+    put_u8(&payload, start == ClassStart::kGraded ? 1 : 0);
+    put_u8(&payload, (quad_twist ? kQuadTwistFeature : 0) | (mask_contexts ? kMaskContextsFeature : 0) |
+                         kTriangleTwistFeature);
+  } else if (order == PredictionOrder::kGeometry) {
     if (mask_contexts)
       put_u8(&payload, kMaskContextSelectors[quad_twist ? 1 : 0]);
     else
@@ -312,22 +327,25 @@ std::vector<uint8_t> predicted_payload(const QuantizedPositions& positions, Clas
 std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const uint32_t top[3], const Mesh& faces,
                                            PositionStats* stats, CandidateChoice choice, ClassStart start,
                                            PredictionOrder order, const PositionGuide* guide, bool quad_twist,
-                                           bool mask_contexts) {
+                                           bool mask_contexts, bool triangle_twist) {
   VertexCorners corners;
   corners.build(uint32_t(q.size() / 3), faces.face_sizes, faces.corners);
   PredictionVisit visit(corners, order);
   visit.guide_by(guide);
   visit.twist_quads(quad_twist);
+  visit.twist_triangles(triangle_twist);
   return encode_visit(q, top, visit, stats, choice, start, mask_contexts);
 }
 
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
                                                 PositionStats* stats, CandidateChoice choice, ClassStart start,
-                                                PredictionOrder order, bool quad_twist, bool mask_contexts) {
+                                                PredictionOrder order, bool quad_twist, bool mask_contexts,
+                                                bool triangle_twist) {
   mask_contexts = mask_contexts && order == PredictionOrder::kGeometry;
-  return predicted_payload(positions, start, order, quad_twist, mask_contexts,
+  triangle_twist = triangle_twist && order == PredictionOrder::kGeometry;
+  return predicted_payload(positions, start, order, quad_twist, mask_contexts, triangle_twist,
                            encode_predicted_grid(positions.q, positions.top.data(), faces, stats, choice, start,
-                                                 order, nullptr, quad_twist, mask_contexts));
+                                                 order, nullptr, quad_twist, mask_contexts, triangle_twist));
 }
 
 namespace {
@@ -335,6 +353,11 @@ namespace {
 // Whether some face is a quad, which POSN method 5's twist (14.7) needs.
 bool has_quads(const Mesh& faces) {
   return std::find(faces.face_sizes.begin(), faces.face_sizes.end(), 4u) != faces.face_sizes.end();
+}
+
+// Whether some face is a triangle, which method 8's twist of triangles (14.9) needs.
+bool has_triangles(const Mesh& faces) {
+  return std::find(faces.face_sizes.begin(), faces.face_sizes.end(), 3u) != faces.face_sizes.end();
 }
 
 // Whether 14.7's twist brings the predictions nearer to the vertices, told
@@ -369,6 +392,82 @@ bool twist_pays(const QuantizedPositions& positions, PredictionVisit* visit) {
   return twist_cost < plain_cost;
 }
 
+// 14.5: the triangle twist must save this share of triangle_twist_pays's
+// stand-in for bits. Near 1 the stand-in misjudges: on the corpus it said
+// 0.998-1.02 wherever coding with the twist changed POSN by less than 0.2 %
+// either way, 0.991-0.993 on armadillo and human_neutral at 12 bits, which
+// it makes 0.3-0.8 % smaller, and 0.86 on face at 12 bits, which it makes
+// 0.16 % larger (0.75 at 16 bits: 2.2 % smaller).
+constexpr double kTriangleTwistMargin = 0.995;
+// The pass runs on meshes of this many vertices or more (a prediction pass
+// costs a small mesh 10-25 % of its encode, and on the corpus the twist pays
+// on none under 1,000 vertices: cathead's POSN takes 1 byte more with it),
+// and looks at every eighth vertex only.
+constexpr uint32_t kTriangleTwistFrom = 1000, kTriangleTwistStride = 8;
+
+// log2(1 + m) for the small m most residuals are, without a call to log2.
+const std::array<double, 256> kLog2Table = [] {
+  std::array<double, 256> table{};
+  for (size_t m = 0; m < table.size(); ++m) table[m] = std::log2(1.0 + double(m));
+  return table;
+}();
+
+// Whether 14.9's triangle twist brings the predictions nearer to the
+// vertices, told without coding them: over the vertices with a twisted
+// candidate, log2(1 + |residual|) summed over the axes for the subset of
+// candidates (all of them, or one alone) that minimises it, with the
+// correction and without, the weight learning from the former as the
+// decoder's would; never under kTriangleTwistFrom vertices. `visit` is
+// left with the triangle twist on.
+bool triangle_twist_pays(const QuantizedPositions& positions, PredictionVisit* visit) {
+  const uint32_t n = uint32_t(positions.q.size() / 3);
+  if (n < kTriangleTwistFrom) return false;
+  visit->twist_triangles();
+  const std::vector<uint32_t> activity(n, 0);  // no candidate depends on it
+  const uint32_t* top = positions.top.data();
+  double plain_cost = 0, twist_cost = 0;
+  TriangleTwistWeight weight;
+  VertexPrediction p;
+  // The encoder knows every vertex, so any of them can be predicted alone:
+  // every kTriangleTwistStride-th vertex tells as well.
+  for (uint32_t i = 0; i < n; i += kTriangleTwistStride) {
+    visit->predict(i, positions.q.data(), activity.data(), top, &p);
+    if (p.triangle_twisted == 0) continue;
+    weight.apply(&p);
+    const uint32_t* q = &positions.q[3 * size_t(visit->item(i))];
+    // Per variant, the mask nearest in log2(1 + |r|) (14.5 picks the cheapest one)
+    // among all candidates and each alone.
+    const auto log_cost = [&](const int64_t* value) {
+      double bits = 0;
+      for (int a = 0; a < 3; ++a) {
+        const int64_t r = int64_t(q[a]) - value[a];
+        const uint64_t m = uint64_t(r < 0 ? -r : r);
+        bits += m < kLog2Table.size() ? kLog2Table[m] : std::log2(1.0 + double(m));
+      }
+      return bits;
+    };
+    double best_twist = INFINITY, best_plain = INFINITY;
+    unsigned best_mask = 1;
+    // All candidates, then each alone: the masks 14.5 picks most often.
+    const unsigned all = (1u << p.candidates) - 1;
+    for (unsigned k = 0; k <= unsigned(p.candidates); ++k) {
+      const unsigned mask = k == 0 ? all : 1u << (k - 1);
+      if (k == 1 && p.candidates == 1) break;
+      select_candidates(&p, mask, top);
+      int64_t plain[3];
+      for (int a = 0; a < 3; ++a) plain[a] = std::clamp<int64_t>(p.mean[a], 0, top[a]);
+      const double t = log_cost(p.value), u = log_cost(plain);
+      if (t < best_twist) best_twist = t, best_mask = mask;
+      best_plain = std::min(best_plain, u);
+    }
+    twist_cost += best_twist;
+    plain_cost += best_plain;
+    select_candidates(&p, best_mask, top);
+    weight.learn(p, q);
+  }
+  return twist_cost < kTriangleTwistMargin * plain_cost;
+}
+
 }  // namespace
 
 // The predicted payload of `order` (with 14.7's twist where twist_pays:
@@ -379,7 +478,8 @@ bool twist_pays(const QuantizedPositions& positions, PredictionVisit* visit) {
 // way (fish_control_mesh at 14 bits: 516 against 514).
 std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions, const Mesh& faces,
                                              CandidateChoice choice, ClassStart start, PredictionOrder order,
-                                             bool quad_twist, bool mask_contexts, PositionStats* stats) {
+                                             bool quad_twist, bool mask_contexts, bool triangle_twist,
+                                             PositionStats* stats) {
   const PositionStats before = *stats;  // the coder adds its counts to stats
   // The corners, and 14.6's order, built once for every payload tried.
   VertexCorners corners;
@@ -388,19 +488,23 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   const bool twisted = order == PredictionOrder::kGeometry && quad_twist && has_quads(faces) &&
                        twist_pays(positions, &visit);
   visit.twist_quads(twisted);
+  const bool triangles_twisted = order == PredictionOrder::kGeometry && triangle_twist && has_triangles(faces) &&
+                                 triangle_twist_pays(positions, &visit);
+  visit.twist_triangles(triangles_twisted);
   const uint32_t* top = positions.top.data();
   const bool contexts =
       mask_contexts && order == PredictionOrder::kGeometry && positions.q.size() / 3 >= kMaskContextsFrom;
   std::vector<uint8_t> best =
-      predicted_payload(positions, start, order, twisted, contexts,
+      predicted_payload(positions, start, order, twisted, contexts, triangles_twisted,
                         encode_visit(positions.q, top, visit, stats, choice, start, contexts));
   int method = twisted ? 5 : order == PredictionOrder::kGeometry ? 4 : start == ClassStart::kGraded ? 3 : 1;
   if (contexts) method += 2;
+  if (triangles_twisted) method = 8;
   if (order == PredictionOrder::kGeometry && positions.q.size() / 3 < kGradedStartBelow) {
     PositionStats label_stats = before;
     const PredictionVisit labels_visit(corners, PredictionOrder::kLabels);
     std::vector<uint8_t> labels =
-        predicted_payload(positions, start, PredictionOrder::kLabels, false, false,
+        predicted_payload(positions, start, PredictionOrder::kLabels, false, false, false,
                           encode_visit(positions.q, top, labels_visit, &label_stats, choice, start));
     if (!labels.empty() && labels.size() <= best.size()) {
       best = std::move(labels);
@@ -409,13 +513,17 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     }
   }
   stats->method = method;
+  stats->features = method == 8 ? (twisted ? kQuadTwistFeature : 0) | (contexts ? kMaskContextsFeature : 0) |
+                                      kTriangleTwistFeature
+                                : 0;
   stats->graded_start = start == ClassStart::kGraded;
   return best;
 }
 
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces, PositionMethod method,
                                       CandidateChoice choice, ClassStart start, PredictionOrder order,
-                                      bool quad_twist, bool mask_contexts, PositionStats* stats) {
+                                      bool quad_twist, bool mask_contexts, bool triangle_twist,
+                                      PositionStats* stats) {
   *stats = PositionStats{};
   stats->step = positions.step;
   stats->top = positions.top;
@@ -427,7 +535,8 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const
   if (positions.q.size() / 3 >= kGradedStartBelow) start = ClassStart::kFlat;
   PositionStats predicted_stats = *stats;
   std::vector<uint8_t> predicted =
-      encode_predicted_choice(positions, faces, choice, start, order, quad_twist, mask_contexts, &predicted_stats);
+      encode_predicted_choice(positions, faces, choice, start, order, quad_twist, mask_contexts, triangle_twist,
+                              &predicted_stats);
   if (predicted.empty()) {
     // Only vertices that all coincide cost so little (section 14.1); on
     // one point method 0's per-axis grid gives the same positions.

@@ -62,10 +62,11 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
                                            ClassStart start = ClassStart::kFlat,
                                            PredictionOrder order = PredictionOrder::kLabels,
                                            const PositionGuide* guide = nullptr, bool quad_twist = false,
-                                           bool mask_contexts = false);
+                                           bool mask_contexts = false, bool triangle_twist = false);
 
 // Method 1, or 3 with the graded start (section 14), or 4 in the geometry
-// order (5 with quad_twist, 6 or 7 with mask_contexts too), over the file's
+// order (5 with quad_twist, 6 or 7 with mask_contexts too, 8 with
+// triangle_twist and the features of those two), over the file's
 // faces; stats may be null. Empty when the vertices cost too little for
 // 14.1's bound (all on one point).
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
@@ -73,7 +74,8 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
                                                 CandidateChoice choice = CandidateChoice::kFewestBits,
                                                 ClassStart start = ClassStart::kFlat,
                                                 PredictionOrder order = PredictionOrder::kLabels,
-                                                bool quad_twist = false, bool mask_contexts = false);
+                                                bool quad_twist = false, bool mask_contexts = false,
+                                                bool triangle_twist = false);
 
 // 14.4.1's start when the options ask for POSN method 3.
 inline ClassStart class_start(const EncodeOptions& options) {
@@ -87,12 +89,13 @@ inline PredictionOrder prediction_order(const EncodeOptions& options) {
 
 // The POSN payload the options ask for: predicted positions (method 4 in
 // the geometry order, or 5 where quad_twist allows it and it is smaller,
-// either as 6 or 7 where mask_contexts allows it and that is smaller, else
+// either as 6 or 7 where mask_contexts allows it and that is smaller, as
+// 8 where triangle_twist allows it and a pass of predictions says it pays, else
 // 3 with `start` graded under 1,000 vertices, or 1), method 0, or the
 // smaller of the two when both can carry the grid. Fills stats.
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces,
                                       PositionMethod method, CandidateChoice choice, ClassStart start,
                                       PredictionOrder order, bool quad_twist, bool mask_contexts,
-                                      PositionStats* stats);
+                                      bool triangle_twist, PositionStats* stats);
 
 }  // namespace qmc
