@@ -81,6 +81,8 @@ check format-1.11 0 "$qmc" encode "$work/tritorus.obj" "$work/f111.qmc" -q 12 --
 check format-1.11-info 0 "$qmc" info "$work/f111.qmc"
 contains format-1.11-written "$work/out" "format 1.11"
 contains format-1.11-method-8 "$work/out" "predicted (spec 14, method 8: geometry order, triangles' twist)"
+check format-1.11-info-json 0 "$qmc" info --json "$work/f111.qmc"
+contains format-1.11-features "$work/out" '"position_method":8,"position_features":4,'
 check format-1.10-tritorus 0 "$qmc" encode "$work/tritorus.obj" "$work/f110t.qmc" -q 12 --quiet --format 1.10
 check format-1.10-tritorus-info 0 "$qmc" info "$work/f110t.qmc"
 contains format-1.10-tritorus-method-4 "$work/out" "predicted (spec 14, method 4: geometry order)"

@@ -171,6 +171,8 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
               f.mesh.vertex_count(), f.mesh.face_count());
   std::printf("\"connectivity\":\"%s\",\"quad_coding\":%d,\"position_bits\":%d,\"position_method\":%d,", connectivity_method_name(f.method),
               f.quad_coding, f.quantization.bits, f.quantization.method);
+  // Spec 14.9's features (methods 5 - 7 say theirs without the byte): 1 quad twist, 2 contexts, 4 triangle twist.
+  std::printf("\"position_features\":%d,", f.quantization.features);
   std::printf("\"order_restored\":%s,\"order_flags\":%u,", f.order_restored ? "true" : "false", f.order_flags);
   std::printf("\"loop_levels\":%u,\"levels\":[", f.loop_level_count);
   for (size_t j = 0; j < f.levels.size(); ++j) {
