@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "atomic_file.h"
+#include "bitio/position_coding.h"
 #include "mesh_io.h"
 
 namespace qmc::cli {
@@ -161,12 +162,10 @@ double max_quantization_step(const QuantizationInfo& q) {
 
 std::string position_method_traits(int method, int features) {
   if (method < 4) return "";
-  // Methods 5 - 7 are method 4 with features that method 8 names in a byte (14.9).
-  if (method < 8) features = (method == 5 || method == 7 ? 1 : 0) | (method >= 6 ? 2 : 0);
   std::string traits = ": geometry order";
-  if (features & 1) traits += ", quads' twist";
-  if (features & 4) traits += ", triangles' twist";
-  if (features & 2) traits += ", candidate contexts";
+  if (features & kQuadTwistFeature) traits += ", quads' twist";
+  if (features & kTriangleTwistFeature) traits += ", triangles' twist";
+  if (features & kMaskContextsFeature) traits += ", candidate contexts";
   return traits;
 }
 

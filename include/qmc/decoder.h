@@ -35,7 +35,7 @@ struct QuantizationInfo {
   std::array<float, 3> max{};     // method 1: the grid's last point, float(min + top x step)
   std::array<double, 3> step{};   // x = min + q x step (6.4, 14.1), per axis
   std::array<uint32_t, 3> top{};  // the largest q per axis
-  int features = 0;               // method 8's features (14.9): 1 quad twist, 2 mask contexts, 4 triangle twist
+  int features = 0;               // methods 4 - 8: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
 };
 
 // Section 12: one level of a progressive file. Level 0 is the base mesh of

@@ -245,7 +245,7 @@ struct GimEncodeStats {
 // Sections 6 and 14: how the positions were coded.
 struct PositionStats {
   int method = 0;                  // POSN method: 0 deltas, 1 or 3 - 8 predicted
-  int features = 0;                // method 8's features byte (14.9)
+  int features = 0;                // methods 4 - 8: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
   bool graded_start = false;       // methods 3 - 8: 14.4.1's start
   std::array<double, 3> step{};    // the grid's step per axis
   std::array<uint32_t, 3> top{};   // the largest grid coordinate per axis

@@ -30,6 +30,14 @@ inline constexpr uint16_t kGradedClassStart[7] = {150, 300, 700, 1200, 1700, 190
 
 inline int bit_length(uint32_t v) { return v == 0 ? 0 : bit_length64(v); }
 
+// 14.9: the bits of method 8's features byte; methods 5 - 7 are method 4
+// with the features their selector implies (position_features).
+inline constexpr uint8_t kQuadTwistFeature = 1, kMaskContextsFeature = 2, kTriangleTwistFeature = 4;
+inline uint8_t position_features(bool quad_twist, bool mask_contexts, bool triangle_twist) {
+  return uint8_t((quad_twist ? kQuadTwistFeature : 0) | (mask_contexts ? kMaskContextsFeature : 0) |
+                 (triangle_twist ? kTriangleTwistFeature : 0));
+}
+
 // 14.8 (POSN methods 6 and 7): the decisions "candidate k is selected" take
 // one of these contexts, s = min(bitlen(D), 11).
 inline constexpr int kMaskContexts = 12;

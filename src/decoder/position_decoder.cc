@@ -27,7 +27,6 @@ constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods
 // method 8 with the features byte of 14.9 after it.
 constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x88;
 constexpr uint8_t kFeaturesSelector = 0x88;
-constexpr uint8_t kQuadTwistFeature = 1, kMaskContextsFeature = 2, kTriangleTwistFeature = 4;
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
   for (int a = 0; a < 3; ++a)
@@ -95,8 +94,7 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
         return bad_payload("features " + std::to_string(features) + " has a bit above bit 2 set (section 14.9)");
       info->features = features;
     } else {
-      info->features = (info->method == 5 || info->method == 7 ? kQuadTwistFeature : 0) |
-                       (info->method >= 6 ? kMaskContextsFeature : 0);
+      info->features = position_features(info->method == 5 || info->method == 7, info->method >= 6, false);
     }
     return read_grid(in, info);
   }

@@ -26,7 +26,6 @@ constexpr uint8_t kGeometryOrderSelector = 0x84;                         // meth
 constexpr uint8_t kQuadTwistSelector = 0x85;                             // method 5 (14.1, 14.7)
 constexpr uint8_t kMaskContextSelectors[2] = {0x86, 0x87};               // methods 6 and 7 (14.1, 14.8)
 constexpr uint8_t kFeaturesSelector = 0x88;                              // method 8 (14.1, 14.9)
-constexpr uint8_t kQuadTwistFeature = 1, kMaskContextsFeature = 2, kTriangleTwistFeature = 4;  // 14.9
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
 
 void bounding_box(const std::vector<float>& positions, QuantizedPositions* out) {
@@ -301,8 +300,7 @@ std::vector<uint8_t> predicted_payload(const QuantizedPositions& positions, Clas
   if (order == PredictionOrder::kGeometry && triangle_twist) {
     put_u8(&payload, kFeaturesSelector);
     put_u8(&payload, start == ClassStart::kGraded ? 1 : 0);
-    put_u8(&payload, (quad_twist ? kQuadTwistFeature : 0) | (mask_contexts ? kMaskContextsFeature : 0) |
-                         kTriangleTwistFeature);
+    put_u8(&payload, position_features(quad_twist, mask_contexts, true));
   } else if (order == PredictionOrder::kGeometry) {
     if (mask_contexts)
       put_u8(&payload, kMaskContextSelectors[quad_twist ? 1 : 0]);
@@ -513,9 +511,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     }
   }
   stats->method = method;
-  stats->features = method == 8 ? (twisted ? kQuadTwistFeature : 0) | (contexts ? kMaskContextsFeature : 0) |
-                                      kTriangleTwistFeature
-                                : 0;
+  stats->features = method >= 4 ? position_features(twisted, contexts, triangles_twisted) : 0;
   stats->graded_start = start == ClassStart::kGraded;
   return best;
 }
