@@ -216,19 +216,25 @@ TEST(AttributeEncoder, GeometryOrderCodingCarriesCodingZerosValues) {
 // class probabilities. Under 1,000 values the encoder keeps them where
 // smaller, as here: the same values, fewer bytes; asked for codings 0 and 4
 // only, or for the label order only, it keeps within them.
+// The decoded file of mesh, with one attribute, coded with the options'
+// attribute_geometry_order and attribute_graded_start; its stats in *stats.
+DecodedFile coded_attribute(const Mesh& mesh, bool geometry_order, bool graded_start, AttributeStats* stats) {
+  EncodeOptions options;
+  options.attribute_geometry_order = geometry_order;
+  options.attribute_graded_start = graded_start;
+  EncodeStats st;
+  std::vector<uint8_t> file;
+  EXPECT_TRUE(encode(mesh, options, &file, &st).ok());
+  EXPECT_EQ(st.attributes.size(), 1u);
+  *stats = st.attributes.at(0);
+  return decode_or_fail(file);
+}
+
 TEST(AttributeEncoder, GradedStartCodingsCarryTheSameValues) {
   Mesh torus = tools::triangulated(tools::make_torus(20, 8));  // 160 vertices
   tools::add_chart_texcoords(&torus);
   const auto coded = [&](bool geometry_order, bool graded_start, AttributeStats* stats) {
-    EncodeOptions options;
-    options.attribute_geometry_order = geometry_order;
-    options.attribute_graded_start = graded_start;
-    EncodeStats st;
-    std::vector<uint8_t> file;
-    EXPECT_TRUE(encode(torus, options, &file, &st).ok());
-    EXPECT_EQ(st.attributes.size(), 1u);
-    *stats = st.attributes.at(0);
-    return decode_or_fail(file);
+    return coded_attribute(torus, geometry_order, graded_start, stats);
   };
   AttributeStats six, four, five, zero;
   const DecodedFile with_six = coded(true, true, &six);
@@ -247,6 +253,25 @@ TEST(AttributeEncoder, GradedStartCodingsCarryTheSameValues) {
     EXPECT_EQ(with_six.mesh.attributes[0].values, other->mesh.attributes[0].values);
     EXPECT_EQ(with_six.mesh.attributes[0].corner_values, other->mesh.attributes[0].corner_values);
   }
+}
+
+// From 1,000 values on the encoder tries only the graded start of the
+// coding that won with the flat one, and keeps it where smaller, as on this
+// sphere's 1,010 texture coordinates (15.10).
+TEST(AttributeEncoder, LargeTablesTryTheWinnersGradedStart) {
+  Mesh sphere = tools::triangulated(tools::make_refined_sphere(2));
+  tools::add_chart_texcoords(&sphere);
+  AttributeStats graded, flat;
+  const DecodedFile with_graded = coded_attribute(sphere, true, true, &graded);
+  const DecodedFile with_flat = coded_attribute(sphere, true, false, &flat);
+  EXPECT_GE(with_graded.mesh.attributes[0].value_count(), 1000u);
+  EXPECT_TRUE(graded.graded_start);
+  EXPECT_FALSE(flat.graded_start);
+  EXPECT_EQ(graded.geometry_order, flat.geometry_order);
+  EXPECT_EQ(graded.guided, flat.guided);
+  EXPECT_LT(graded.value_bytes, flat.value_bytes);
+  EXPECT_EQ(with_graded.mesh.attributes[0].values, with_flat.mesh.attributes[0].values);
+  EXPECT_EQ(with_graded.mesh.attributes[0].corner_values, with_flat.mesh.attributes[0].corner_values);
 }
 
 // Spec 16: labels in runs, unlabelled faces, through every coder, in coder

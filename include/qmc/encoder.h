@@ -127,11 +127,12 @@ struct EncodeOptions {
   // of the corpus's texture coordinates. Decoders of the revisions before
   // it skip such an attribute; false keeps coding 0.
   bool attribute_geometry_order = true;
-  // Attribute values on a grid of fewer than 1,000 values may take aTTR
-  // coding 5 or 6 (spec 15.10: codings 0 and 4 with 14.4.1's start of the
-  // class probabilities) where that is smaller: 10-15 % of the texture
-  // coordinates of the corpus's control meshes. Decoders of the revisions
-  // before it skip such an attribute; false keeps codings 0 and 4.
+  // Attribute values on a grid may take aTTR coding 5 or 6 (spec 15.10:
+  // codings 0 and 4 with 14.4.1's start of the class probabilities) where
+  // that is smaller: 10-15 % of the texture coordinates of the corpus's
+  // control meshes; from 1,000 values on only the winning coding's graded
+  // start is tried (spot's texture coordinates: 0.4 %). Decoders of the
+  // revisions before it skip such an attribute; false keeps codings 0 and 4.
   bool attribute_graded_start = true;
   // A per-corner attribute may take aTTR mapping 3 (spec 15.11: a decision a
   // vertex where its corners share one value, a seam vertex's corners
