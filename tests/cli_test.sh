@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # End-to-end checks of the qmc command line: the commands a user runs, their
-# output files, and exit codes on bad input. Usage: cli_test.sh QMC MESHGEN
+# output files, and exit codes on bad input. Usage: cli_test.sh QMC MESHGEN VECTORS
+# (VECTORS: the conformance vectors' directory).
 set -u
-qmc=$1 meshgen=$2
+qmc=$1 meshgen=$2 vectors=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 passed=0 failed=0
@@ -88,6 +89,15 @@ check format-1.10-tritorus-info 0 "$qmc" info "$work/f110t.qmc"
 contains format-1.10-tritorus-method-4 "$work/out" "predicted (spec 14, method 4: geometry order)"
 if [ "$(stat -c %s "$work/f111.qmc")" -lt "$(stat -c %s "$work/f110t.qmc")" ]; then passed=$((passed + 1)); else
   failed=$((failed + 1)); echo "FAIL format-1.11-smaller: method 8's file is not smaller than method 4's"; fi
+# info describes a file that fails as far as it decodes, names the fault and exits 3: every invalid vector.
+info_crashed=""
+for vector in "$vectors"/invalid_*.qmc; do
+  "$qmc" info "$vector" >"$work/out" 2>&1
+  got=$?
+  if [ "$got" -ne 3 ] || ! grep -q "^error " "$work/out"; then info_crashed="$info_crashed $(basename "$vector") ($got)"; fi
+done
+if [ -z "$info_crashed" ]; then passed=$((passed + 1)); else
+  failed=$((failed + 1)); echo "FAIL info-invalid-vectors:$info_crashed"; fi
 check format-1.12-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f112.qmc" --format 1.12
 check format-1.010-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f112.qmc" --format 1.010
 "$meshgen" torus 40 30 "$work/torus1200.obj" >/dev/null  # 1,200 vertices of quads: method 4 or 5, never 1 (14.5)

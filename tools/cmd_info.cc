@@ -43,8 +43,9 @@ std::string order_description(uint8_t flags) {
 }
 
 // Section 14: the grid, its error bound, and what each prediction kind
-// costs as this encoder would code the decoded values (information content).
-void print_predicted_positions(const DecodedFile& f) {
+// costs as this encoder would code the decoded values (information content;
+// only of a file that decoded, as a rejected one's integers may be missing).
+void print_predicted_positions(const DecodedFile& f, bool decoded) {
   const QuantizationInfo& q = f.quantization;
   const bool uniform = q.step[0] == q.step[1] && q.step[1] == q.step[2];
   const double bound = 0.5 * std::sqrt(q.step[0] * q.step[0] + q.step[1] * q.step[1] + q.step[2] * q.step[2]);
@@ -54,7 +55,7 @@ void print_predicted_positions(const DecodedFile& f) {
   if (!uniform) std::printf(" %.9g %.9g", q.step[1], q.step[2]);
   std::printf(", tops %u %u %u, origin (%g %g %g); error bound %.6g\n", q.top[0], q.top[1], q.top[2], q.min[0],
               q.min[1], q.min[2], bound);
-  if (f.order_restored || f.loop_level_count > 0) return;  // faces no longer in the coder's order
+  if (!decoded || f.order_restored || f.loop_level_count > 0) return;  // faces no longer in the coder's order
   QuantizedPositions grid;
   grid.min = q.min;
   grid.step = q.step;
@@ -106,7 +107,7 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
     std::printf("positions    deltas (spec 6), %d bits/axis, box (%g %g %g) - (%g %g %g)\n", f.quantization.bits,
                 f.quantization.min[0], f.quantization.min[1], f.quantization.min[2], f.quantization.max[0],
                 f.quantization.max[1], f.quantization.max[2]);
-  if (f.quantization.method >= 1) print_predicted_positions(f);
+  if (f.quantization.method >= 1) print_predicted_positions(f, status.ok());
   if (!f.gim.present)
     std::printf("order        %s\n", f.order_restored ? order_description(f.order_flags).c_str()
                                                      : "coder order (no oRDR chunk)");
