@@ -48,7 +48,7 @@ check compare-missing 3 "$qmc" compare "$work/torus.obj" "$work/nope.obj"
 check info 0 "$qmc" info "$work/torus.qmc"
 contains info-chunks "$work/out" "CONN"
 contains info-method "$work/out" "polygon coder (spec 5.4)"
-contains info-predicted "$work/out" "predicted (spec 14, method 5: geometry order, quads' twist: graded start), uniform grid"
+contains info-predicted "$work/out" "predicted (spec 14, method 9: geometry order, quads' twist, mirror images: graded start), uniform grid"
 check info-json 0 "$qmc" info --json "$work/torus.qmc"
 contains info-json-valid "$work/out" '"connectivity":"polygon"'
 # Spec 14.1's grids as a user states them.
@@ -62,12 +62,13 @@ check encode-per-axis-deltas 0 "$qmc" encode "$work/torus.obj" "$work/deltas.qmc
 contains encode-per-axis-deltas-reported "$work/out" "deltas (spec 6), per-axis grid"
 check info-deltas 0 "$qmc" info "$work/deltas.qmc"
 contains info-deltas-method "$work/out" "deltas (spec 6), 12 bits/axis"
-# --format 1.N: files older decoders read (spec 11: 1.10 with POSN method 4 instead of 8, 1.9 with POSN
+# --format 1.N: files older decoders read (spec 11: 1.11 with POSN method 5 - 8 instead of 9, 1.10 with
+# POSN method 4 instead of 8, 1.9 with POSN
 # method 4 instead of 6, 1.8 with
 # method 4 instead of 5, 1.7 with the label order instead of method 4, 1.6 with method 1 for 3, 1.5 also
 # without polygon coding 7, 1.4 also without predicted positions).
 "$meshgen" terraces 100 4 "$work/terraces.obj" >/dev/null  # 10,201 vertices: method 6 (14.5, 14.8)
-check format-1.10 0 "$qmc" encode "$work/terraces.obj" "$work/f110.qmc" -q 16 --quiet
+check format-1.10 0 "$qmc" encode "$work/terraces.obj" "$work/f110.qmc" -q 16 --quiet --format 1.11
 check format-1.10-info 0 "$qmc" info "$work/f110.qmc"
 contains format-1.10-written "$work/out" "format 1.10"
 contains format-1.10-method-6 "$work/out" "predicted (spec 14, method 6: geometry order, candidate contexts)"
@@ -78,7 +79,7 @@ contains format-1.9-terraces-method-4 "$work/out" "predicted (spec 14, method 4:
 if [ "$(stat -c %s "$work/f110.qmc")" -lt "$(stat -c %s "$work/f19t.qmc")" ]; then passed=$((passed + 1)); else
   failed=$((failed + 1)); echo "FAIL format-1.10-smaller: method 6's file is not smaller than method 4's"; fi
 "$meshgen" triangle-torus 48 32 "$work/tritorus.obj" >/dev/null  # regular triangles: method 8 (14.5, 14.9)
-check format-1.11 0 "$qmc" encode "$work/tritorus.obj" "$work/f111.qmc" -q 12 --quiet
+check format-1.11 0 "$qmc" encode "$work/tritorus.obj" "$work/f111.qmc" -q 12 --quiet --format 1.11
 check format-1.11-info 0 "$qmc" info "$work/f111.qmc"
 contains format-1.11-written "$work/out" "format 1.11"
 contains format-1.11-method-8 "$work/out" "predicted (spec 14, method 8: geometry order, triangles' twist)"
@@ -89,6 +90,16 @@ check format-1.10-tritorus-info 0 "$qmc" info "$work/f110t.qmc"
 contains format-1.10-tritorus-method-4 "$work/out" "predicted (spec 14, method 4: geometry order)"
 if [ "$(stat -c %s "$work/f111.qmc")" -lt "$(stat -c %s "$work/f110t.qmc")" ]; then passed=$((passed + 1)); else
   failed=$((failed + 1)); echo "FAIL format-1.11-smaller: method 8's file is not smaller than method 4's"; fi
+# Method 9 (14.10): the torus is symmetric across x, and every vertex whose mirror image was decoded
+# before it may be predicted by that image.
+check format-1.12 0 "$qmc" encode "$work/tritorus.obj" "$work/f112.qmc" -q 12 --quiet
+check format-1.12-info 0 "$qmc" info "$work/f112.qmc"
+contains format-1.12-written "$work/out" "format 1.12"
+contains format-1.12-method-9 "$work/out" "predicted (spec 14, method 9: geometry order, triangles' twist, mirror images)"
+check format-1.12-info-json 0 "$qmc" info --json "$work/f112.qmc"
+contains format-1.12-plane "$work/out" '"position_method":9,"position_features":4,"position_mirror_axis":[0-2],'
+if [ "$(stat -c %s "$work/f112.qmc")" -lt "$(stat -c %s "$work/f111.qmc")" ]; then passed=$((passed + 1)); else
+  failed=$((failed + 1)); echo "FAIL format-1.12-smaller: method 9's file is not smaller than method 8's"; fi
 # info describes a file that fails as far as it decodes, names the fault and exits 3: every invalid vector.
 info_crashed=""
 for vector in "$vectors"/invalid_*.qmc; do
@@ -98,10 +109,10 @@ for vector in "$vectors"/invalid_*.qmc; do
 done
 if [ -z "$info_crashed" ]; then passed=$((passed + 1)); else
   failed=$((failed + 1)); echo "FAIL info-invalid-vectors:$info_crashed"; fi
-check format-1.12-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f112.qmc" --format 1.12
+check format-1.13-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f113.qmc" --format 1.13
 check format-1.010-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f112.qmc" --format 1.010
 "$meshgen" torus 40 30 "$work/torus1200.obj" >/dev/null  # 1,200 vertices of quads: method 4 or 5, never 1 (14.5)
-check format-1.9 0 "$qmc" encode "$work/torus1200.obj" "$work/f19.qmc" --quiet
+check format-1.9 0 "$qmc" encode "$work/torus1200.obj" "$work/f19.qmc" --quiet --format 1.11
 check format-1.9-info 0 "$qmc" info "$work/f19.qmc"
 contains format-1.9-written "$work/out" "format 1.9"
 contains format-1.9-method-5 "$work/out" "predicted (spec 14, method 5: geometry order, quads' twist)"
@@ -316,7 +327,7 @@ check decode-groups-off-refused 3 "$qmc" decode "$work/groups.qmc" "$work/groups
 { echo "v 0 0 0 1 0 0"; echo "v 1 0 0 0 1 0"; echo "v 0 1 0 0 0 1 1"; echo "f 1 2 3"; echo "l 1 2"; } >"$work/colours.obj"
 check encode-colours-refused 3 "$qmc" encode "$work/colours.obj" "$work/colours.qmc"
 contains encode-colours-refused-names-flag "$work/err" "pass --drop-unsupported"
-contains encode-colours-refused-names-format "$work/err" "holds what format 1.11 cannot carry yet"
+contains encode-colours-refused-names-format "$work/err" "holds what format 1.12 cannot carry yet"
 contains encode-colours-refused-colours "$work/err" "  ignored per-vertex colours on v lines of 7 numbers: 1"
 contains encode-colours-refused-partial "$work/err" "  ignored per-vertex colours on v lines: only 2 of 3 vertices have one"
 check encode-colours-refused-no-output 0 test ! -e "$work/colours.qmc"

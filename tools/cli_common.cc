@@ -166,6 +166,7 @@ std::string position_method_traits(int method, int features) {
   if (features & kQuadTwistFeature) traits += ", quads' twist";
   if (features & kTriangleTwistFeature) traits += ", triangles' twist";
   if (features & kMaskContextsFeature) traits += ", candidate contexts";
+  if (method == 9) traits += ", mirror images";
   return traits;
 }
 

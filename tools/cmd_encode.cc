@@ -94,7 +94,9 @@ const char kHelp[] =
     "  --gim-store-blank   also code the samples of blank pixels (smooth planes\n"
     "                      for image tools, at some cost in bytes)\n"
     "  --format 1.N        write nothing that decoders older than 1.N cannot read:\n"
-    "                      1.10 predicts triangles without their neighbours'\n"
+    "                      1.11 predicts no vertex by its mirror image (POSN\n"
+    "                      methods 4 - 8, not 9), 1.10 predicts triangles\n"
+    "                      without their neighbours'\n"
     "                      twist (POSN methods 4 - 7, not 8), 1.9 selects\n"
     "                      candidates without 14.8's contexts\n"
     "                      (POSN methods 4 and 5, not 6 and 7), 1.8 predicts\n"
@@ -104,7 +106,7 @@ const char kHelp[] =
     "                      (method 1 or 3, not 4) and attribute values with\n"
     "                      coding 0 (not 4), 1.6 as method 1 only, 1.5\n"
     "                      also leaves out polygon coding 7, 1.4 also predicted\n"
-    "                      positions (deltas on the per-axis grid); default 1.11\n"
+    "                      positions (deltas on the per-axis grid); default 1.12\n"
     "  --uv-bits N         texture coordinates (spec 15) on a grid of 2^N - 1 steps\n"
     "                      over their range (default 12: 1/4 texel of a 1024\n"
     "                      texture)\n"
@@ -129,7 +131,7 @@ const char kHelp[] =
 // predicted positions (method 1) and LEVL code 2 but not polygon coding 7,
 // 1.6 decoders that but not POSN method 3, 1.7 decoders not method 4, 1.8
 // decoders not method 5, 1.9 decoders not methods 6 and 7 (spec 11).
-constexpr int kNewestMinor = 11, kOldestTargetMinor = 4;
+constexpr int kNewestMinor = 12, kOldestTargetMinor = 4;
 
 struct EncodeArgs {
   std::string input, output;
@@ -241,6 +243,8 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
 // error naming the option that needs a newer version.
 int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   EncodeOptions& o = args->options;
+  if (args->newest_minor >= 12) return -1;
+  o.mirror_symmetry = false;  // POSN method 9 (14.10) came with 1.12
   if (args->newest_minor >= 11) return -1;
   o.triangle_twist = false;  // POSN method 8 (14.9) came with 1.11
   if (args->newest_minor >= 10) return -1;
@@ -317,7 +321,7 @@ int parse(int argc, char** argv, EncodeArgs* args) {
       long minor = 0;
       if (value.compare(0, 2, "1.") != 0 || !parse_int(value.substr(2), kOldestTargetMinor, kNewestMinor, &minor) ||
           value.substr(2) != std::to_string(minor))
-        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 1.10 or 1.11, got '" + value + "'");
+        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 1.10, 1.11 or 1.12, got '" + value + "'");
       args->newest_minor = int(minor);
       continue;
     }
@@ -452,9 +456,10 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
               ps.step[0] == ps.step[1] && ps.step[1] == ps.step[2] ? "" : " (x)", ps.error_bound, check.max_error,
               check.max_error / side, check.rms_error);
   if (ps.method >= 1) {
-    static const char* const kKinds[4] = {"previous vertex", "neighbour mean", "one rule", "several rules"};
+    static const char* const kKinds[5] = {"previous vertex", "neighbour mean", "one rule", "several rules",
+                                         "mirror"};
     std::printf("             by prediction (spec 14.3):");
-    for (int k = 0; k < 4; ++k)
+    for (int k = 0; k < 5; ++k)
       if (ps.vertices_by_kind[k])
         std::printf(" %s %u vertices %.2f bits each;", kKinds[k], ps.vertices_by_kind[k],
                     ps.bits_by_kind[k] / ps.vertices_by_kind[k]);

@@ -62,15 +62,18 @@ void print_predicted_positions(const DecodedFile& f, bool decoded) {
   grid.top = q.top;
   grid.q = f.quantized;
   PositionStats stats;
+  const MirrorPlane plane{q.mirror_axis, q.mirror_sum};
   const size_t payload =
       encode_predicted_positions(grid, f.mesh, &stats, CandidateChoice::kFewestBits,
                                  q.graded_start ? ClassStart::kGraded : ClassStart::kFlat,
                                  q.method >= 4 ? PredictionOrder::kGeometry : PredictionOrder::kLabels,
-                                 q.features & 1, q.features & 2, q.features & 4)
+                                 q.features & 1, q.features & 2, q.features & 4,
+                                 q.mirror_axis >= 0 ? &plane : nullptr)
           .size();
-  static const char* const kKinds[4] = {"previous vertex", "neighbour mean", "one rule", "several rules"};
+  static const char* const kKinds[5] = {"previous vertex", "neighbour mean", "one rule", "several rules",
+                                         "mirror"};
   std::printf("             re-encoded here: %zu bytes;", payload);
-  for (int k = 0; k < 4; ++k)
+  for (int k = 0; k < 5; ++k)
     if (stats.vertices_by_kind[k])
       std::printf(" %s %u vertices %.2f bits each;", kKinds[k], stats.vertices_by_kind[k],
                   stats.bits_by_kind[k] / stats.vertices_by_kind[k]);
@@ -174,6 +177,9 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
               f.quad_coding, f.quantization.bits, f.quantization.method);
   // Spec 14.9's features (methods 5 - 7 say theirs without the byte): 1 quad twist, 2 contexts, 4 triangle twist.
   std::printf("\"position_features\":%d,", f.quantization.features);
+  // Spec 14.10's plane (method 9): the axis, or -1, and the sum.
+  std::printf("\"position_mirror_axis\":%d,\"position_mirror_sum\":%u,", f.quantization.mirror_axis,
+              f.quantization.mirror_sum);
   std::printf("\"order_restored\":%s,\"order_flags\":%u,", f.order_restored ? "true" : "false", f.order_flags);
   std::printf("\"loop_levels\":%u,\"levels\":[", f.loop_level_count);
   for (size_t j = 0; j < f.levels.size(); ++j) {

@@ -56,6 +56,7 @@ qmc::EncodeOptions format_1_6_options() {
   qmc::EncodeOptions options;
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
+  options.mirror_symmetry = false;  // and method 9 (14.10)
   options.graded_class_start = false;
   options.geometry_order = false;
   options.quad_twist = false;
@@ -1676,6 +1677,7 @@ void write_predicted_position_errors(VectorWriter* w) {
              ErrorCode::kLimitExceeded);
 }
 
+
 }  // namespace
 
 // Section 5.4.10 (format 1.6): polygon coding 7, the face symbols range
@@ -2553,6 +2555,7 @@ std::vector<uint8_t> encode_posn_as_written(const Mesh& mesh, int method, int bi
   qmc::EncodeOptions options;
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
+  options.mirror_symmetry = false;  // and method 9 (14.10)
   options.position_bits = bits;
   options.position_grid = grid;
   options.position_method = qmc::PositionMethod::kPredicted;
@@ -2700,6 +2703,7 @@ void write_posn4_vectors(VectorWriter* w) {
   qmc::EncodeOptions keep;
   keep.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   keep.triangle_twist = false;  // and method 8 (14.9)
+  keep.mirror_symmetry = false;  // and method 9 (14.10)
   keep.keep_order = true;
   w->valid("valid_ordr_posn4_scrambled", encode_with(scrambled, keep, "scrambled method-4 sphere"), &scrambled);
   // 12.2: a progressive file's base mesh in method 4.
@@ -2755,6 +2759,7 @@ std::vector<uint8_t> encode_posn5(const Mesh& mesh, int bits) {
   qmc::EncodeOptions options;
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
+  options.mirror_symmetry = false;  // and method 9 (14.10)
   options.position_bits = bits;
   options.position_method = qmc::PositionMethod::kPredicted;
   options.candidate_choice = qmc::CandidateChoice::kFewestBits;
@@ -2916,6 +2921,7 @@ void write_posn5_vectors(VectorWriter* w) {
   qmc::EncodeOptions options;
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
+  options.mirror_symmetry = false;  // and method 9 (14.10)
   options.position_bits = 12;
   w->valid("valid_posn5_mixed_polygons", rewritten_as_method_5(encode_with(mixed, options, "mixed polygons")), &mixed);
   // 14.7's example, its labels kept by indexed connectivity.
@@ -2923,6 +2929,7 @@ void write_posn5_vectors(VectorWriter* w) {
   qmc::EncodeOptions indexed;
   indexed.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   indexed.triangle_twist = false;  // and method 8 (14.9)
+  indexed.mirror_symmetry = false;  // and method 9 (14.10)
   indexed.position_bits = 4;
   indexed.connectivity = qmc::ConnectivityChoice::kIndexed;
   w->valid("valid_posn5_example", rewritten_as_method_5(encode_with(example, indexed, "14.7's example")), &example);
@@ -2946,6 +2953,7 @@ void write_posn5_vectors(VectorWriter* w) {
   qmc::EncodeOptions attributes;
   attributes.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   attributes.triangle_twist = false;  // and method 8 (14.9)
+  attributes.mirror_symmetry = false;  // and method 9 (14.10)
   attributes.position_bits = 12;
   w->valid("valid_posn5_with_texcoords", encode_posn_method(textured, attributes, 5), &textured);
 
@@ -2997,6 +3005,7 @@ void write_posn6_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   qmc::EncodeOptions options;  // what `qmc encode` writes
   options.triangle_twist = false;  // but POSN method 8 (14.9) came after these vectors
+  options.mirror_symmetry = false;  // and method 9 (14.10)
   options.position_bits = 16;
   // What the encoder writes where the contexts pay: terraces, where the
   // parallelograms across a cliff are far off and the others agree.
@@ -3097,7 +3106,8 @@ Mesh half_triangulated_torus() {
 
 void write_posn8_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
-  qmc::EncodeOptions options;  // what `qmc encode` writes
+  qmc::EncodeOptions options;  // what `qmc encode` wrote before method 9 (14.10)
+  options.mirror_symmetry = false;
   // Spec 14.9's example, written as method 8 with the twist of triangles.
   const Mesh hexagon = twist_hexagon();
   qmc::EncodeOptions unit = options;
@@ -3122,6 +3132,7 @@ void write_posn8_vectors(VectorWriter* w) {
   options.position_bits = 12;
   qmc::EncodeOptions no_twist = options;
   no_twist.triangle_twist = false;
+  no_twist.mirror_symmetry = false;  // and method 9 (14.10)
   const std::vector<uint8_t> small_file = encode_with(small, no_twist, "small sphere");
   {
     Chunks c = split_chunks(small_file);
@@ -3186,12 +3197,152 @@ void write_posn8_vectors(VectorWriter* w) {
   write_geometry_order_rejections(w, "posn8", torus_file, torus.vertex_count(), 1);
 }
 
+// Spec 14.10's example: a kite of two triangles across the plane x = 6.
+Mesh mirror_kite() {
+  Mesh m;
+  m.positions = {6, 0, 0, 6, 10, 0, 0, 5, 3, 12, 5, 3};
+  m.face_sizes.assign(2, 3);
+  m.corners = {0, 1, 2, 1, 0, 3};
+  return m;
+}
+
+// A fan of `spokes` triangles around a centre on the plane x = 0: the
+// centre is the image vertex of every rim vertex next to it, and has more
+// than 14.10's 16 corners.
+Mesh mirror_fan(uint32_t spokes) {
+  Mesh m;
+  m.positions = {0, 0, 0};
+  for (uint32_t k = 0; k < spokes; ++k) {
+    const double angle = 2 * 3.14159265358979 * k / spokes;
+    m.positions.insert(m.positions.end(),
+                       {float(std::cos(angle)), float(std::sin(angle)), float(0.2 * std::sin(3 * angle))});
+    m.face_sizes.push_back(3);
+    m.corners.insert(m.corners.end(), {0, 1 + k, 1 + (k + 1) % spokes});
+  }
+  return qmc::tools::make_mirrored_across_x(m, 1e-6f);
+}
+
+// The file's POSN written again as method 9 (14.10) with `plane` (or the
+// one find_mirror_plane finds, which the file must have) and `features`,
+// the start its vertex count gives (14.5): the same integers.
+std::vector<uint8_t> rewritten_with_mirror(const std::vector<uint8_t>& file, uint8_t features,
+                                           const qmc::MirrorPlane* plane = nullptr) {
+  Chunks c = split_chunks(file);
+  Mesh faces;
+  qmc::QuantizedPositions grid;
+  decode_grid(c, &faces, &grid);
+  qmc::MirrorPlane found;
+  if (!plane && !qmc::find_mirror_plane(grid, &found)) {
+    std::fprintf(stderr, "qmc-make-vectors: a file to rewrite as method 9 has no mirror plane\n");
+    std::exit(3);
+  }
+  const qmc::ClassStart start =
+      grid.q.size() / 3 < qmc::kGradedStartBelow ? qmc::ClassStart::kGraded : qmc::ClassStart::kFlat;
+  c[find_chunk(c, qmc::kChunkPositions)].payload = qmc::encode_predicted_positions(
+      grid, faces, nullptr, qmc::CandidateChoice::kFewestBits, start, qmc::PredictionOrder::kGeometry,
+      features & qmc::kQuadTwistFeature, features & qmc::kMaskContextsFeature,
+      features & qmc::kTriangleTwistFeature, plane ? plane : &found);
+  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, 12};
+  return join_chunks(c);
+}
+
+void write_posn9_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  // Spec 14.10's example, on the integers as given.
+  const Mesh kite = mirror_kite();
+  qmc::EncodeOptions unit = options;
+  unit.connectivity = qmc::ConnectivityChoice::kIndexed;
+  unit.position_step = 1;
+  const qmc::MirrorPlane kite_plane{0, 12};
+  w->valid("valid_posn9_kite", rewritten_with_mirror(encode_with(kite, unit, "kite"), 0, &kite_plane), &kite);
+  // What the encoder writes on mirrored meshes: a sphere of triangles (with
+  // the twist of triangles where it pays), under 10,000 vertices and over
+  // (14.8's contexts), and one of quads at 16 bits.
+  const Mesh sphere = qmc::tools::make_mirrored_across_x(perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(3)), 93, 0.002f));
+  options.position_bits = 12;
+  w->valid("valid_posn9_sphere", encode_posn_method(sphere, options, 9), &sphere);
+  const Mesh big = qmc::tools::make_mirrored_across_x(perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(5)), 94, 0.0005f),
+                                     0.001f);
+  options.position_bits = 14;
+  w->valid("valid_posn9_big_sphere", encode_posn_method(big, options, 9), &big);
+  const Mesh quads = qmc::tools::make_mirrored_across_x(perturbed(qmc::tools::make_refined_sphere(3), 95, 0.002f));
+  options.position_bits = 16;
+  w->valid("valid_posn9_quad_sphere", encode_posn_method(quads, options, 9), &quads);
+  // Rewritten as method 9: every feature at once on triangles, quads and
+  // larger faces; a small sphere (start 1); a sphere with no twins, its
+  // plane taken all the same; the extreme sums 0 and 2 top (every image
+  // clamped or out of the grid); a fan whose centre has 40 corners.
+  options.position_bits = 12;
+  const Mesh mixed = qmc::tools::make_mirrored_across_x(mixed_polygons(96));
+  w->valid("valid_posn9_mixed_polygons", rewritten_with_mirror(encode_with(mixed, options, "mixed"), 7), &mixed);
+  const Mesh small = qmc::tools::make_mirrored_across_x(perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(2)), 97, 0.004f));
+  w->valid("valid_posn9_graded_start", rewritten_with_mirror(encode_with(small, options, "small"), 0), &small);
+  const Mesh lopsided = perturbed(qmc::tools::triangulated(qmc::tools::make_refined_sphere(2)), 98, 0.05f);
+  const std::vector<uint8_t> lopsided_file = encode_with(lopsided, options, "lopsided");
+  Mesh lopsided_faces;
+  qmc::QuantizedPositions lopsided_grid;
+  decode_grid(split_chunks(lopsided_file), &lopsided_faces, &lopsided_grid);
+  const qmc::MirrorPlane middle{0, lopsided_grid.top[0]}, low{1, 0}, high{2, 2 * lopsided_grid.top[2]};
+  w->valid("valid_posn9_no_twins", rewritten_with_mirror(lopsided_file, 0, &middle), &lopsided);
+  w->valid("valid_posn9_sum_0", rewritten_with_mirror(lopsided_file, 2, &low), &lopsided);
+  w->valid("valid_posn9_sum_twice_top", rewritten_with_mirror(lopsided_file, 4, &high), &lopsided);
+  const Mesh fan = mirror_fan(40);
+  qmc::EncodeOptions indexed = options;
+  indexed.connectivity = qmc::ConnectivityChoice::kIndexed;
+  w->valid("valid_posn9_fan_of_40", rewritten_with_mirror(encode_with(fan, indexed, "fan"), 0), &fan);
+  // 15.4: an aTTR's values take no mirror candidate, whatever POSN's method.
+  Mesh textured = sphere;
+  qmc::tools::add_chart_texcoords(&textured);
+  w->valid("valid_posn9_with_texcoords", encode_posn_method(textured, options, 9), &textured);
+
+  // 14.1's checks of the plane, then the rules of 14.1 and 14.4 on method 9's path.
+  const std::vector<uint8_t> file = encode_posn_method(sphere, options, 9);
+  const ChunkReplacer with_posn(file, qmc::kChunkPositions);
+  const std::vector<uint8_t> payload = with_posn.payload();
+  std::vector<uint8_t> count;
+  qmc::put_varint(&count, sphere.vertex_count());
+  const size_t features = count.size() + 2, axis = features + 1, sum = axis + 1;
+  qmc::ByteReader after_sum(payload.data() + sum, payload.size() - sum);
+  uint64_t sum_value = 0;
+  after_sum.get_varint(&sum_value);
+  const size_t grid = size_t(after_sum.cursor() - payload.data());
+  std::vector<uint8_t> p = payload;
+  p[features] = 8;
+  w->invalid("invalid_posn9_features_bit_3", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  p[axis] = 3;
+  w->invalid("invalid_posn9_axis_3", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn9_axis_missing", with_posn({payload.begin(), payload.begin() + long(axis)}),
+             ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn9_sum_missing", with_posn({payload.begin(), payload.begin() + long(sum)}),
+             ErrorCode::kBadChunkPayload);
+  p = {payload.begin(), payload.begin() + long(sum)};
+  qmc::put_varint(&p, 2 * 4095 + 1);
+  p.insert(p.end(), payload.begin() + long(grid), payload.end());
+  w->invalid("invalid_posn9_sum_above_twice_top", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  p[count.size() + 1] = 2;
+  w->invalid("invalid_posn9_start_2", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn9_truncated_stream", with_posn({payload.begin(), payload.end() - 8}),
+             ErrorCode::kTruncated);
+  // The tops cut to the plane's half: the twins' values fall outside the grid.
+  qmc::ByteReader tops(payload.data() + grid + 1 + 12 + 8, payload.size() - (grid + 1 + 12 + 8));
+  for (uint64_t top = 0, a = 0; a < 3; ++a) tops.get_varint(&top);
+  p = {payload.begin(), payload.begin() + long(grid + 1 + 12 + 8)};
+  const uint64_t half = (sum_value + 1) / 2;
+  for (int a = 0; a < 3; ++a) qmc::put_varint(&p, half);
+  p.insert(p.end(), tops.cursor(), payload.data() + payload.size());
+  w->invalid("invalid_posn9_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
+}
+
 // Section 15.9: aTTR coding 4, what `qmc encode` writes when it is the
 // smaller; the generator fails if the encoder kept coding 0 instead.
 std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, const char* what) {
   qmc::EncodeOptions options;
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
+  options.mirror_symmetry = false;  // and method 9 (14.10)
   options.geometry_order = posn_geometry_order;
   options.attribute_graded_start = false;  // codings 5 and 6 came after these vectors
   options.attribute_predicted_mapping = false;  // and mapping 3 (15.11)
@@ -3289,6 +3440,7 @@ void write_attribute_coding56_vectors(VectorWriter* w) {
   qmc::EncodeOptions options;
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
+  options.mirror_symmetry = false;  // and method 9 (14.10)
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
   options.attribute_guided = false;             // and coding 7 (15.12)
   options.angle_weighted_normals = false;       // and coding 8 (15.13)
@@ -3514,6 +3666,7 @@ void write_attribute_coding7_vectors(VectorWriter* w) {
   qmc::EncodeOptions options;  // what `qmc encode` writes
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
+  options.mirror_symmetry = false;  // and method 9 (14.10)
   const std::vector<uint8_t> both = encode_coding7(textured, options, 1, "coding 7 texcoords");
   w->valid("valid_attr_coding7_texcoords", both, &textured);
   qmc::EncodeOptions labels = options;
@@ -3610,6 +3763,7 @@ void write_attribute_coding8_vectors(VectorWriter* w) {
   qmc::EncodeOptions options;  // what `qmc encode` writes
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
+  options.mirror_symmetry = false;  // and method 9 (14.10)
   // A bumpy grid of irregular triangles, and of quads, and the triangles with a crease.
   Mesh triangles = jittered_textured_grid(12, 12, 99, true);
   triangles.attributes.clear();
@@ -3698,6 +3852,7 @@ void write_attribute_mapping3_vectors(VectorWriter* w) {
   qmc::EncodeOptions options;  // what `qmc encode` wrote
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
+  options.mirror_symmetry = false;  // and method 9 (14.10)
   options.attribute_guided = false;  // coding 7 (15.12) came after these vectors
   options.angle_weighted_normals = false;  // and coding 8 (15.13)
   options.quad_twist = false;              // and POSN method 5 (14.7)
@@ -3796,6 +3951,7 @@ int main(int argc, char** argv) {
   write_posn5_vectors(&w);
   write_posn6_vectors(&w);
   write_posn8_vectors(&w);
+  write_posn9_vectors(&w);
   w.finish();
   return 0;
 }

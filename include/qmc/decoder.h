@@ -35,7 +35,9 @@ struct QuantizationInfo {
   std::array<float, 3> max{};     // method 1: the grid's last point, float(min + top x step)
   std::array<double, 3> step{};   // x = min + q x step (6.4, 14.1), per axis
   std::array<uint32_t, 3> top{};  // the largest q per axis
-  int features = 0;               // methods 4 - 8: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
+  int features = 0;               // methods 4 - 9: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
+  int mirror_axis = -1;           // method 9: 14.10's plane, q[axis] -> mirror_sum - q[axis]; -1 in the others
+  uint32_t mirror_sum = 0;
 };
 
 // Section 12: one level of a progressive file. Level 0 is the base mesh of

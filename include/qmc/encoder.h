@@ -122,6 +122,12 @@ struct EncodeOptions {
   // camelhead's positions 9-15 % smaller). false keeps methods 4 - 7, which
   // 1.10 decoders read.
   bool triangle_twist = true;
+  // With geometry_order: where reflecting the vertices across a plane
+  // halfway across the grid puts 1/8 of them or more onto others exactly (a
+  // mesh modelled with a mirror), a vertex whose mirror image was decoded
+  // before it may be predicted by it, POSN method 9 (format 1.12, spec
+  // 14.10). false keeps methods 4 - 8, which 1.11 decoders read.
+  bool mirror_symmetry = true;
   // Attribute values on a grid may take aTTR coding 4 (spec 15.9, 14.6's
   // order over the attribute mesh) where it is smaller than coding 0: 2-7 %
   // of the corpus's texture coordinates. Decoders of the revisions before
@@ -245,16 +251,17 @@ struct GimEncodeStats {
 
 // Sections 6 and 14: how the positions were coded.
 struct PositionStats {
-  int method = 0;                  // POSN method: 0 deltas, 1 or 3 - 8 predicted
-  int features = 0;                // methods 4 - 8: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
-  bool graded_start = false;       // methods 3 - 8: 14.4.1's start
+  int method = 0;                  // POSN method: 0 deltas, 1 or 3 - 9 predicted
+  int features = 0;                // methods 4 - 9: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
+  bool graded_start = false;       // methods 3 - 9: 14.4.1's start
   std::array<double, 3> step{};    // the grid's step per axis
   std::array<uint32_t, 3> top{};   // the largest grid coordinate per axis
   double error_bound = 0;          // Euclidean bound of the rounding: |step| / 2
-  // Methods 1, 3, 4: vertices and information content (bits, -log2 of the coded
-  // decisions' probabilities) by prediction kind (section 14.3.2).
-  std::array<uint32_t, 4> vertices_by_kind{};
-  std::array<double, 4> bits_by_kind{};
+  // Methods 1, 3 - 9: vertices and information content (bits, -log2 of the
+  // coded decisions' probabilities) by prediction kind (PredictionKind: 14.3.2,
+  // and 4 the mirror candidate of 14.10).
+  std::array<uint32_t, 5> vertices_by_kind{};
+  std::array<double, 5> bits_by_kind{};
 };
 
 // Section 15: how one attribute was coded.

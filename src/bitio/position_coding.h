@@ -9,14 +9,16 @@
 #include <cstring>
 
 #include "bitio/exact_arith.h"  // bit_length64
+#include "bitio/mirror_prediction.h"
 #include "bitio/residual_code.h"
 #include "bitio/vertex_prediction.h"
 
 namespace qmc {
 
 inline constexpr int kPositionBuckets = 16;
-// 14.4: the class contexts' groups: previous vertex, neighbours, candidates.
-inline constexpr int kPositionGroups = 3;
+// 14.4: the class contexts' groups: previous vertex, neighbours, candidates;
+// and 14.10's mirror candidate (POSN method 9).
+inline constexpr int kPositionGroups = 4;
 inline constexpr int kPositionMaxClass = 30;  // |r| <= top <= 2^30 - 1
 
 // Where the probabilities of "class > j" start (14.4). POSN method 1 and
@@ -50,6 +52,7 @@ struct PositionResidualModel {
   // 14.4: "candidate k is selected", by 14.8's context (0 but in methods 6
   // and 7), count - 2 and k.
   uint16_t use[kMaskContexts][kMaxCandidates - 1][kMaxCandidates];
+  uint16_t mirror[kMirrorContexts];  // 14.10: "the mirror candidate is used", by its context
   int max_class[3];  // bitlen(top_a): k of 13.5.6 per axis
   bool mask_contexts;  // 14.8: methods 6 and 7
   explicit PositionResidualModel(const uint32_t top[3], ClassStart start = ClassStart::kFlat,
@@ -80,6 +83,7 @@ inline PositionResidualModel::PositionResidualModel(const uint32_t top[3], Class
   static_assert(sizeof cls[0] == sizeof table.p, "a group is one ClassStartTable");
   for (auto& group : cls) std::memcpy(group, table.p, sizeof table.p);
   std::fill(sign, sign + 3, uint16_t(1024));
+  std::fill(mirror, mirror + kMirrorContexts, uint16_t(1024));
   std::fill(&mantissa[0][0], &mantissa[0][0] + sizeof(mantissa) / sizeof(uint16_t), uint16_t(1024));
 }
 
@@ -137,7 +141,7 @@ template <class Coder>
 SignedResidual code_position_residual(Coder* coder, PositionResidualModel* m, const VertexPrediction& p,
                                       const uint32_t* magnitude, int axis, SignedResidual value) {
   const int bucket = position_bucket(p.neighbour_activity + p.scale / 8, magnitude, axis);
-  const int group = p.kind >= PredictionKind::kSingle ? 2 : int(p.kind);
+  const int group = p.kind == PredictionKind::kMirror ? 3 : p.kind >= PredictionKind::kSingle ? 2 : int(p.kind);
   return code_class_residual(coder, m->cls[group][bucket], &m->sign[axis], m->mantissa, m->max_class[axis], value);
 }
 

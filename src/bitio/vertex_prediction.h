@@ -153,8 +153,9 @@ enum class PredictionKind : uint8_t {
   kNeighbours = 1,  // the mean of decoded neighbours
   kSingle = 2,      // one parallelogram, polygon or strip rule
   kSeveral = 3,     // the weighted mean of two or more
+  kMirror = 4,      // 14.10: the mirror candidate (POSN method 9)
 };
-inline constexpr int kPredictionKinds = 4;
+inline constexpr int kPredictionKinds = 5;
 
 // 14.3.1: the most candidates a vertex takes; a file selects a subset of
 // them per vertex (14.3.3, 14.4).

@@ -4,6 +4,7 @@
 #include "decoder/position_decoder.h"
 
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "bitio/bit_reader.h"
@@ -12,6 +13,7 @@
 #include "bitio/geometry_order.h"
 #include "bitio/huffman.h"
 #include "bitio/magnitude_code.h"
+#include "bitio/mirror_prediction.h"
 #include "bitio/position_coding.h"
 #include "bitio/range_coder.h"
 #include "bitio/vertex_prediction.h"
@@ -23,10 +25,11 @@ Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadCh
 
 // Section 14.1: the byte after vertex_count selects the method.
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (14.1)
-// Methods 4 - 8 (14.1, 14.6 - 14.9), 0x84 .. 0x88, all with the start byte;
-// method 8 with the features byte of 14.9 after it.
-constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x88;
-constexpr uint8_t kFeaturesSelector = 0x88;
+// Methods 4 - 9 (14.1, 14.6 - 14.10), 0x84 .. 0x89, all with the start byte;
+// methods 8 and 9 with the features byte of 14.9 after it, method 9 with
+// 14.10's plane after that.
+constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x89;
+constexpr uint8_t kFeaturesSelector = 0x88, kMirrorSelector = 0x89;
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
   for (int a = 0; a < 3; ++a)
@@ -69,6 +72,20 @@ Status read_grid(ByteReader* in, QuantizationInfo* info) {
   return Status::Ok();
 }
 
+// Section 14.10: method 9's plane, its axis byte and sum (checked against
+// the grid's top once read_grid has it).
+Status read_mirror_plane(ByteReader* in, QuantizationInfo* info) {
+  uint8_t axis = 0;
+  uint64_t sum = 0;
+  if (!in->get_u8(&axis)) return bad_payload("method 9's mirror axis missing (section 14.10)");
+  if (axis > 2) return bad_payload("mirror axis " + std::to_string(axis) + " is not 0, 1 or 2 (section 14.10)");
+  if (!in->get_varint(&sum)) return bad_payload("method 9's mirror sum missing or malformed (section 14.10)");
+  if (sum >= (uint64_t(1) << 31)) return bad_payload("mirror sum " + std::to_string(sum) + " above 2^31 - 1 (section 14.10)");
+  info->mirror_axis = axis;
+  info->mirror_sum = uint32_t(sum);
+  return Status::Ok();
+}
+
 Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info) {
   uint64_t count = 0;
   uint8_t selector = 0;
@@ -87,21 +104,29 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
       if (start > 1) return bad_payload("start " + std::to_string(start) + " is neither 0 nor 1 (section 14.1)");
       info->graded_start = start == 1;
     }
-    if (selector == kFeaturesSelector) {
+    if (selector == kFeaturesSelector || selector == kMirrorSelector) {
+      const std::string method = "method " + std::to_string(info->method);
       uint8_t features = 0;
-      if (!in->get_u8(&features)) return bad_payload("method 8's features byte missing (section 14.9)");
+      if (!in->get_u8(&features)) return bad_payload(method + "'s features byte missing (section 14.9)");
       if (features > 7)
-        return bad_payload("features " + std::to_string(features) + " has a bit above bit 2 set (section 14.9)");
+        return bad_payload(method + "'s features " + std::to_string(features) +
+                           " has a bit above bit 2 set (section 14.9)");
       info->features = features;
+      if (selector == kMirrorSelector)
+        if (Status s = read_mirror_plane(in, info); !s.ok()) return s;
     } else {
       info->features = position_features(info->method == 5 || info->method == 7, info->method >= 6, false);
     }
-    return read_grid(in, info);
+    if (Status s = read_grid(in, info); !s.ok()) return s;
+    if (info->mirror_axis >= 0 && info->mirror_sum > 2 * uint64_t(info->top[size_t(info->mirror_axis)]))
+      return bad_payload("mirror sum " + std::to_string(info->mirror_sum) + " above 2 top[" +
+                         std::to_string(info->mirror_axis) + "] (section 14.10)");
+    return Status::Ok();
   }
   if (selector >= 0x80)
     return Status(ErrorCode::kUnsupportedFeature,
                   "POSN: method " + std::to_string(selector - 0x80) +
-                      " is not defined (section 14.1 knows 0, 1, 3, 4, 5, 6, 7 and 8)");
+                      " is not defined (section 14.1 knows 0, 1 and 3 - 9)");
   if (selector < 1 || selector > 30) return bad_payload("quantization bits " + std::to_string(selector) + " outside 1..30");
   info->method = 0;
   info->bits = selector;
@@ -145,17 +170,17 @@ Status decode_deltas(BitReader* bits, size_t size, uint32_t vertex_count, const 
   return Status::Ok();
 }
 
-// Section 14.4 for one vertex (or attribute value, 15.4) whose candidates
-// and fallback are in p: the mask, then the three residuals; the stream's
-// end is checked after each decision group, before the value it gave is.
-Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const PredictedGridNames& names, uint32_t v,
-                     const uint32_t* top, VertexPrediction* p, uint32_t* q, uint32_t* activity) {
-  const auto truncated = [&] {
-    return Status(ErrorCode::kTruncated, names.chunk + ": the range-coded stream ends inside " + names.item + " " +
-                                             std::to_string(v) + " (section 14.4)");
-  };
-  select_candidates(p, code_candidate_mask(rc, model, p->candidates, 0, mask_context(*model, *p)), top);
-  if (rc->overrun()) return truncated();
+Status truncated_inside(const PredictedGridNames& names, uint32_t v) {
+  return Status(ErrorCode::kTruncated, names.chunk + ": the range-coded stream ends inside " + names.item + " " +
+                                           std::to_string(v) + " (section 14.4)");
+}
+
+// Section 14.4's three residuals of one vertex (or attribute value, 15.4)
+// predicted by p; the stream's end is checked after each, before the value
+// it gave is.
+Status decode_residuals(RangeDecoder* rc, PositionResidualModel* model, const PredictedGridNames& names, uint32_t v,
+                        const uint32_t* top, const VertexPrediction* p, uint32_t* q, uint32_t* activity) {
+  const auto truncated = [&] { return truncated_inside(names, v); };
   uint32_t magnitude[3] = {0, 0, 0};
   for (int a = 0; a < 3; ++a) {
     const SignedResidual r = code_position_residual(rc, model, *p, magnitude, a, SignedResidual{});
@@ -173,6 +198,37 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
   return Status::Ok();
 }
 
+// Section 14.4 for one vertex (or attribute value) whose candidates and
+// fallback are in p: the mask, then the residuals.
+Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const PredictedGridNames& names, uint32_t v,
+                     const uint32_t* top, VertexPrediction* p, uint32_t* q, uint32_t* activity) {
+  select_candidates(p, code_candidate_mask(rc, model, p->candidates, 0, mask_context(*model, *p)), top);
+  if (rc->overrun()) return truncated_inside(names, v);
+  return decode_residuals(rc, model, names, v, top, p, q, activity);
+}
+
+// Section 14.10 (POSN method 9) for vertex `vertex`, the i-th visited: if it
+// has a mirror candidate, the decision whether it is used, and if it is,
+// the residuals against it (*used then true; no mask is decoded).
+Status decode_mirrored(RangeDecoder* rc, PositionResidualModel* model, const MirrorCandidates& mirrors,
+                       uint32_t vertex, uint32_t i, const uint32_t* top, VertexPrediction* p, uint32_t* q,
+                       uint32_t* activity, bool* used) {
+  *used = false;
+  select_candidates(p, (1u << p->candidates) - 1, top);  // the reference: every candidate
+  int64_t candidate[3];
+  if (!mirrors.find(vertex, q, *p, candidate)) return Status::Ok();
+  const PredictedGridNames names{"POSN", "vertex", "vertices", "axis"};
+  if (!rc->code(0, &model->mirror[mirror_context(candidate, p->value)])) {
+    if (rc->overrun()) return truncated_inside(names, i);
+    return Status::Ok();
+  }
+  if (rc->overrun()) return truncated_inside(names, i);
+  *used = true;
+  p->kind = PredictionKind::kMirror;
+  std::copy(candidate, candidate + 3, p->value);
+  return decode_residuals(rc, model, names, i, top, p, &q[3 * size_t(vertex)], activity);
+}
+
 }  // namespace
 
 // Section 14: each vertex in label order or 14.6's geometry order,
@@ -181,7 +237,7 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
 Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& faces, uint32_t count,
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
                              ClassStart start, PredictionOrder order, const PositionGuide* guide, bool quad_twist,
-                             bool mask_contexts, bool triangle_twist) {
+                             bool mask_contexts, bool triangle_twist, const MirrorPlane* mirror) {
   if (!range_stream_justifies(count, size))  // section 14.1, before anything is reserved
     return Status(ErrorCode::kLimitExceeded, names.chunk + ": " + std::to_string(count) + " " + names.items +
                                                  " for " + std::to_string(size) +
@@ -200,14 +256,25 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   if (rc.bad_start())
     return Status(ErrorCode::kBadChunkPayload,
                   names.chunk + ": the range coder's first four bytes are 0xFFFFFFFF (section 13.5.2)");
+  std::unique_ptr<MirrorCandidates> mirrors;
+  if (mirror) mirrors = std::make_unique<MirrorCandidates>(corners, *mirror, top);
   VertexPrediction p;
   for (uint32_t i = 0; i < count; ++i) {
-    const size_t v = visit.item(i);
+    const uint32_t v = visit.item(i);
     visit.predict(i, quantized->data(), activity.data(), top, &p);
     twist_weight.apply(&p);
-    if (Status s = decode_vertex(&rc, &model[0], names, i, top, &p, &(*quantized)[3 * v], &activity[v]); !s.ok())
-      return s;
-    twist_weight.learn(p, &(*quantized)[3 * v]);
+    bool mirrored = false;
+    if (mirrors)
+      if (Status s = decode_mirrored(&rc, &model[0], *mirrors, v, i, top, &p, quantized->data(), &activity[v], &mirrored);
+          !s.ok())
+        return s;
+    if (!mirrored) {
+      if (Status s = decode_vertex(&rc, &model[0], names, i, top, &p, &(*quantized)[3 * size_t(v)], &activity[v]);
+          !s.ok())
+        return s;
+      twist_weight.learn(p, &(*quantized)[3 * size_t(v)]);
+    }
+    if (mirrors) mirrors->decoded(v, quantized->data());
   }
   if (rc.unread() != 0)
     return Status(ErrorCode::kBadChunkPayload, names.chunk + ": " + std::to_string(rc.unread()) +
@@ -232,9 +299,11 @@ Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, 
     const PredictedGridNames names{"POSN", "vertex", "vertices", "axis"};
     const ClassStart start = info->graded_start ? ClassStart::kGraded : ClassStart::kFlat;
     const PredictionOrder order = info->method >= 4 ? PredictionOrder::kGeometry : PredictionOrder::kLabels;
+    const MirrorPlane plane{info->mirror_axis, info->mirror_sum};
     if (Status s = decode_predicted_grid(in.cursor(), in.remaining(), faces, vertex_count, info->top.data(), names,
                                          quantized, start, order, nullptr, info->features & kQuadTwistFeature,
-                                         info->features & kMaskContextsFeature, info->features & kTriangleTwistFeature);
+                                         info->features & kMaskContextsFeature, info->features & kTriangleTwistFeature,
+                                         info->mirror_axis >= 0 ? &plane : nullptr);
         !s.ok())
       return s;
   } else {

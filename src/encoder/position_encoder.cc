@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 
 #include "bitio/bit_writer.h"
 #include "bitio/byte_io.h"
@@ -13,6 +14,7 @@
 #include "bitio/geometry_order.h"
 #include "bitio/huffman.h"
 #include "bitio/magnitude_code.h"
+#include "bitio/mirror_prediction.h"
 #include "bitio/position_coding.h"
 #include "bitio/range_coder.h"
 #include "bitio/vertex_prediction.h"
@@ -26,6 +28,7 @@ constexpr uint8_t kGeometryOrderSelector = 0x84;                         // meth
 constexpr uint8_t kQuadTwistSelector = 0x85;                             // method 5 (14.1, 14.7)
 constexpr uint8_t kMaskContextSelectors[2] = {0x86, 0x87};               // methods 6 and 7 (14.1, 14.8)
 constexpr uint8_t kFeaturesSelector = 0x88;                              // method 8 (14.1, 14.9)
+constexpr uint8_t kMirrorSelector = 0x89;                                // method 9 (14.1, 14.10)
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
 
 void bounding_box(const std::vector<float>& positions, QuantizedPositions* out) {
@@ -253,11 +256,54 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
   return best;
 }
 
+// 14.4's residuals of the vertex q (3 integers) predicted by p, coded by
+// coder (an encoder, or a CostMeter to price them); their activity.
+template <class Coder>
+uint32_t code_residuals(Coder* coder, PositionResidualModel* model, const VertexPrediction& p, const uint32_t* q) {
+  uint32_t magnitude[3] = {0, 0, 0};
+  for (int a = 0; a < 3; ++a) {
+    const int64_t r = int64_t(q[a]) - p.value[a];
+    magnitude[a] = uint32_t(r < 0 ? -r : r);
+    code_position_residual(coder, model, p, magnitude, a, SignedResidual{magnitude[a], r < 0});
+  }
+  return magnitude[0] + magnitude[1] + magnitude[2];
+}
+
+// 14.10 for the vertex q (3 integers) with p's candidates: whether its
+// mirror candidate (if it has one) is used, priced against the mask
+// best_candidates chooses (p is left selected with that mask, *mask set);
+// the decision is coded, and when true p predicts by the candidate.
+bool code_mirror_choice(MeteredRangeEncoder* rc, PositionResidualModel* model, const MirrorCandidates& mirrors,
+                        uint32_t v, const std::vector<uint32_t>& q, const uint32_t top[3], CandidateChoice choice,
+                        VertexPrediction* p, unsigned* mask) {
+  select_candidates(p, (1u << p->candidates) - 1, top);  // the reference: every candidate
+  int64_t candidate[3];
+  const bool has_candidate = mirrors.find(v, q.data(), *p, candidate);
+  const int mirror = has_candidate ? mirror_context(candidate, p->value) : 0;
+  VertexPrediction mirrored = *p;
+  const int context = mask_context(*model, *p);
+  *mask = best_candidates(&q[3 * size_t(v)], top, model, choice, context, p);
+  if (!has_candidate) return false;
+  mirrored.kind = PredictionKind::kMirror;
+  std::copy(candidate, candidate + 3, mirrored.value);
+  CostMeter use, plain;
+  use.code(1, &model->mirror[mirror]);
+  code_residuals(&use, model, mirrored, &q[3 * size_t(v)]);
+  plain.code(0, &model->mirror[mirror]);
+  code_candidate_mask(&plain, model, p->candidates, *mask, context);
+  code_residuals(&plain, model, *p, &q[3 * size_t(v)]);
+  const bool used = use.bits < plain.bits;
+  rc->code(used, &model->mirror[mirror]);
+  if (used) *p = mirrored;
+  return used;
+}
+
 // 14.2 - 14.4 over a visit built for q's vertices (its order, guide and
-// twist set), with 14.8's mask contexts or not.
+// twist set), with 14.8's mask contexts or not, with 14.10's mirror
+// candidate where a plane is given.
 std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t top[3], const PredictionVisit& visit,
                                   PositionStats* stats, CandidateChoice choice, ClassStart start,
-                                  bool mask_contexts = false) {
+                                  bool mask_contexts = false, const MirrorPlane* mirror = nullptr) {
   const uint32_t n = uint32_t(q.size() / 3);
   std::vector<uint32_t> activity(n);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start, mask_contexts));
@@ -266,22 +312,20 @@ std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t
   PositionStats& st = stats ? *stats : local;
   VertexPrediction p;
   TriangleTwistWeight twist_weight;  // 14.9: no correction without the triangle twist
+  std::unique_ptr<MirrorCandidates> mirrors;
+  if (mirror) mirrors = std::make_unique<MirrorCandidates>(visit.mesh(), *mirror, top);
   for (uint32_t i = 0; i < n; ++i) {
-    const size_t v = visit.item(i);
+    const uint32_t v = visit.item(i);
     visit.predict(i, q.data(), activity.data(), top, &p);
     twist_weight.apply(&p);
     const double before = rc.meter.bits;
-    const int context = mask_context(model[0], p);
-    const unsigned mask = best_candidates(&q[3 * v], top, &model[0], choice, context, &p);
-    code_candidate_mask(&rc, &model[0], p.candidates, mask, context);
-    uint32_t magnitude[3] = {0, 0, 0};
-    for (int a = 0; a < 3; ++a) {
-      const int64_t r = int64_t(q[3 * v + a]) - p.value[a];
-      magnitude[a] = uint32_t(r < 0 ? -r : r);
-      code_position_residual(&rc, &model[0], p, magnitude, a, SignedResidual{magnitude[a], r < 0});
-    }
-    activity[v] = magnitude[0] + magnitude[1] + magnitude[2];
-    twist_weight.learn(p, &q[3 * v]);
+    unsigned mask = 0;
+    const bool mirrored = mirrors && code_mirror_choice(&rc, &model[0], *mirrors, v, q, top, choice, &p, &mask);
+    if (!mirrors) mask = best_candidates(&q[3 * size_t(v)], top, &model[0], choice, mask_context(model[0], p), &p);
+    if (!mirrored) code_candidate_mask(&rc, &model[0], p.candidates, mask, mask_context(model[0], p));
+    activity[v] = code_residuals(&rc, &model[0], p, &q[3 * size_t(v)]);
+    if (!mirrored) twist_weight.learn(p, &q[3 * size_t(v)]);
+    if (mirrors) mirrors->decoded(v, q.data());
     ++st.vertices_by_kind[int(p.kind)];
     st.bits_by_kind[int(p.kind)] += rc.meter.bits - before;
   }
@@ -292,15 +336,19 @@ std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t
 // when the vertices cost too little for 14.1's bound.
 std::vector<uint8_t> predicted_payload(const QuantizedPositions& positions, ClassStart start, PredictionOrder order,
                                        bool quad_twist, bool mask_contexts, bool triangle_twist,
-                                       const std::vector<uint8_t>& stream) {
+                                       const MirrorPlane* mirror, const std::vector<uint8_t>& stream) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
   if (!range_stream_justifies(n, stream.size())) return {};
   std::vector<uint8_t> payload;
   put_varint(&payload, n);
-  if (order == PredictionOrder::kGeometry && triangle_twist) {
-    put_u8(&payload, kFeaturesSelector);
+  if (order == PredictionOrder::kGeometry && (triangle_twist || mirror)) {
+    put_u8(&payload, mirror ? kMirrorSelector : kFeaturesSelector);
     put_u8(&payload, start == ClassStart::kGraded ? 1 : 0);
-    put_u8(&payload, position_features(quad_twist, mask_contexts, true));
+    put_u8(&payload, position_features(quad_twist, mask_contexts, triangle_twist));
+    if (mirror) {
+      put_u8(&payload, uint8_t(mirror->axis));
+      put_varint(&payload, mirror->sum);
+    }
   } else if (order == PredictionOrder::kGeometry) {
     if (mask_contexts)
       put_u8(&payload, kMaskContextSelectors[quad_twist ? 1 : 0]);
@@ -338,12 +386,57 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
                                                 PositionStats* stats, CandidateChoice choice, ClassStart start,
                                                 PredictionOrder order, bool quad_twist, bool mask_contexts,
-                                                bool triangle_twist) {
+                                                bool triangle_twist, const MirrorPlane* mirror) {
   mask_contexts = mask_contexts && order == PredictionOrder::kGeometry;
   triangle_twist = triangle_twist && order == PredictionOrder::kGeometry;
-  return predicted_payload(positions, start, order, quad_twist, mask_contexts, triangle_twist,
-                           encode_predicted_grid(positions.q, positions.top.data(), faces, stats, choice, start,
-                                                 order, nullptr, quad_twist, mask_contexts, triangle_twist));
+  if (order != PredictionOrder::kGeometry) mirror = nullptr;
+  VertexCorners corners;
+  corners.build(uint32_t(positions.q.size() / 3), faces.face_sizes, faces.corners);
+  PredictionVisit visit(corners, order);
+  visit.twist_quads(quad_twist);
+  visit.twist_triangles(triangle_twist);
+  return predicted_payload(
+      positions, start, order, quad_twist, mask_contexts, triangle_twist, mirror,
+      encode_visit(positions.q, positions.top.data(), visit, stats, choice, start, mask_contexts, mirror));
+}
+
+namespace {
+
+}  // namespace
+
+constexpr uint32_t kMirrorSample = 1024, kMirroredShareDivisor = 8;
+
+bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane) {
+  const uint32_t n = uint32_t(positions.q.size() / 3);
+  if (n < 16) return false;
+  GridPointTable points(n);
+  for (uint32_t v = 0; v < n; ++v) points.insert(&positions.q[3 * size_t(v)], v);
+  const auto hits = [&](MirrorPlane candidate, uint32_t stride) {
+    uint32_t count = 0;
+    for (uint32_t v = 0; v < n; v += stride) {
+      uint32_t image[3];
+      std::copy(&positions.q[3 * size_t(v)], &positions.q[3 * size_t(v)] + 3, image);
+      const int64_t m = int64_t(candidate.sum) - int64_t(image[candidate.axis]);
+      if (m < 0 || m > int64_t(positions.top[size_t(candidate.axis)])) continue;
+      image[candidate.axis] = uint32_t(m);
+      count += points.find(image) != GridPointTable::kNone;
+    }
+    return count;
+  };
+  const uint32_t stride = std::max<uint32_t>(1, n / kMirrorSample);
+  uint32_t best = 0;
+  for (int axis = 0; axis < 3; ++axis) {
+    const int64_t top = positions.top[size_t(axis)];
+    for (int64_t sum = std::max<int64_t>(0, top - 2); sum <= top + 2; ++sum) {
+      const MirrorPlane candidate{axis, uint32_t(sum)};
+      const uint32_t count = hits(candidate, stride);
+      if (count > best) {
+        best = count;
+        *plane = candidate;
+      }
+    }
+  }
+  return best > 0 && hits(*plane, 1) >= n / kMirroredShareDivisor;
 }
 
 namespace {
@@ -477,7 +570,7 @@ bool triangle_twist_pays(const QuantizedPositions& positions, PredictionVisit* v
 std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions, const Mesh& faces,
                                              CandidateChoice choice, ClassStart start, PredictionOrder order,
                                              bool quad_twist, bool mask_contexts, bool triangle_twist,
-                                             PositionStats* stats) {
+                                             bool mirror, PositionStats* stats) {
   const PositionStats before = *stats;  // the coder adds its counts to stats
   // The corners, and 14.6's order, built once for every payload tried.
   VertexCorners corners;
@@ -492,17 +585,34 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   const uint32_t* top = positions.top.data();
   const bool contexts =
       mask_contexts && order == PredictionOrder::kGeometry && positions.q.size() / 3 >= kMaskContextsFrom;
+  MirrorPlane plane;
+  const bool mirrored = order == PredictionOrder::kGeometry && mirror && find_mirror_plane(positions, &plane);
   std::vector<uint8_t> best =
-      predicted_payload(positions, start, order, twisted, contexts, triangles_twisted,
-                        encode_visit(positions.q, top, visit, stats, choice, start, contexts));
+      predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, mirrored ? &plane : nullptr,
+                        encode_visit(positions.q, top, visit, stats, choice, start, contexts,
+                                     mirrored ? &plane : nullptr));
   int method = twisted ? 5 : order == PredictionOrder::kGeometry ? 4 : start == ClassStart::kGraded ? 3 : 1;
   if (contexts) method += 2;
   if (triangles_twisted) method = 8;
+  if (mirrored) method = 9;
+  if (mirrored && positions.q.size() / 3 < kGradedStartBelow) {
+    // A small mesh's mirror decisions may cost more than its twins save
+    // (cylinder_ngon_caps: 4 - 10 bytes): methods 4 - 8 too, the smaller kept.
+    PositionStats plain_stats = before;
+    std::vector<uint8_t> plain =
+        predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, nullptr,
+                          encode_visit(positions.q, top, visit, &plain_stats, choice, start, contexts));
+    if (!plain.empty() && plain.size() <= best.size()) {
+      best = std::move(plain);
+      *stats = plain_stats;
+      method = triangles_twisted ? 8 : (twisted ? 5 : 4) + (contexts ? 2 : 0);
+    }
+  }
   if (order == PredictionOrder::kGeometry && positions.q.size() / 3 < kGradedStartBelow) {
     PositionStats label_stats = before;
     const PredictionVisit labels_visit(corners, PredictionOrder::kLabels);
     std::vector<uint8_t> labels =
-        predicted_payload(positions, start, PredictionOrder::kLabels, false, false, false,
+        predicted_payload(positions, start, PredictionOrder::kLabels, false, false, false, nullptr,
                           encode_visit(positions.q, top, labels_visit, &label_stats, choice, start));
     if (!labels.empty() && labels.size() <= best.size()) {
       best = std::move(labels);
@@ -518,7 +628,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
 
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces, PositionMethod method,
                                       CandidateChoice choice, ClassStart start, PredictionOrder order,
-                                      bool quad_twist, bool mask_contexts, bool triangle_twist,
+                                      bool quad_twist, bool mask_contexts, bool triangle_twist, bool mirror,
                                       PositionStats* stats) {
   *stats = PositionStats{};
   stats->step = positions.step;
@@ -532,7 +642,7 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const
   PositionStats predicted_stats = *stats;
   std::vector<uint8_t> predicted =
       encode_predicted_choice(positions, faces, choice, start, order, quad_twist, mask_contexts, triangle_twist,
-                              &predicted_stats);
+                              mirror, &predicted_stats);
   if (predicted.empty()) {
     // Only vertices that all coincide cost so little (section 14.1); on
     // one point method 0's per-axis grid gives the same positions.

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "bitio/geometry_order.h"
+#include "bitio/mirror_prediction.h"
 #include "bitio/position_coding.h"
 #include "qmc/encoder.h"
 #include "qmc/mesh.h"
@@ -66,7 +67,8 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
 
 // Method 1, or 3 with the graded start (section 14), or 4 in the geometry
 // order (5 with quad_twist, 6 or 7 with mask_contexts too, 8 with
-// triangle_twist and the features of those two), over the file's
+// triangle_twist and the features of those two; 9 with a mirror plane
+// too, 14.10), over the file's
 // faces; stats may be null. Empty when the vertices cost too little for
 // 14.1's bound (all on one point).
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
@@ -75,7 +77,13 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
                                                 ClassStart start = ClassStart::kFlat,
                                                 PredictionOrder order = PredictionOrder::kLabels,
                                                 bool quad_twist = false, bool mask_contexts = false,
-                                                bool triangle_twist = false);
+                                                bool triangle_twist = false, const MirrorPlane* mirror = nullptr);
+
+// 14.10's plane for POSN method 9, if the vertices have one: of the planes
+// halfway across the grid on each axis (sum top - 2 .. top + 2), the one
+// whose reflection puts the most of a sample of the vertices exactly onto
+// vertices; taken if it does so for 1/8 of all of them.
+bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane);
 
 // 14.4.1's start when the options ask for POSN method 3.
 inline ClassStart class_start(const EncodeOptions& options) {
@@ -90,12 +98,13 @@ inline PredictionOrder prediction_order(const EncodeOptions& options) {
 // The POSN payload the options ask for: predicted positions (method 4 in
 // the geometry order, or 5 where quad_twist allows it and it is smaller,
 // either as 6 or 7 where mask_contexts allows it and that is smaller, as
-// 8 where triangle_twist allows it and a pass of predictions says it pays, else
-// 3 with `start` graded under 1,000 vertices, or 1), method 0, or the
-// smaller of the two when both can carry the grid. Fills stats.
+// 8 where triangle_twist allows it and a pass of predictions says it pays,
+// either as 9 where mirror allows it and the vertices have a mirror plane
+// (14.10), else 3 with `start` graded under 1,000 vertices, or 1), method 0,
+// or the smaller of the two when both can carry the grid. Fills stats.
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces,
                                       PositionMethod method, CandidateChoice choice, ClassStart start,
                                       PredictionOrder order, bool quad_twist, bool mask_contexts,
-                                      bool triangle_twist, PositionStats* stats);
+                                      bool triangle_twist, bool mirror, PositionStats* stats);
 
 }  // namespace qmc

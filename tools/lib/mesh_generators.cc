@@ -423,6 +423,31 @@ Mesh make_vertex_star(uint32_t triangles) {
   return mesh;
 }
 
+Mesh make_mirrored_across_x(Mesh m, float near) {
+  const size_t n = m.vertex_count();
+  for (size_t v = 0; v < n; ++v)
+    if (std::fabs(m.positions[3 * v]) < near) m.positions[3 * v] = 0;
+  const std::vector<float> before = m.positions;
+  for (size_t v = 0; v < n; ++v) {
+    if (before[3 * v] >= 0) continue;
+    size_t twin = v;
+    float best = INFINITY;
+    for (size_t w = 0; w < n; ++w) {
+      if (before[3 * w] <= 0) continue;
+      const float dx = before[3 * w] + before[3 * v], dy = before[3 * w + 1] - before[3 * v + 1],
+                  dz = before[3 * w + 2] - before[3 * v + 2];
+      if (dx * dx + dy * dy + dz * dz < best) {
+        best = dx * dx + dy * dy + dz * dz;
+        twin = w;
+      }
+    }
+    m.positions[3 * v] = -before[3 * twin];
+    m.positions[3 * v + 1] = before[3 * twin + 1];
+    m.positions[3 * v + 2] = before[3 * twin + 2];
+  }
+  return m;
+}
+
 Mesh make_deltoidal_hexecontahedron() {
   // Icosahedron: cyclic permutations of (0, +-1, +-phi); edges have squared
   // length exactly 4, non-edges more.

@@ -78,6 +78,12 @@ qmc::Mesh make_polygon(uint32_t corners);
 qmc::Mesh make_book(uint32_t pages);
 qmc::Mesh make_vertex_star(uint32_t triangles);
 
+// The mesh made mirror-symmetric across x = 0, as a modeller's mirror leaves
+// it: vertices within `near` of the plane moved onto it, every other one with
+// x < 0 moved to the image of the vertex with x > 0 nearest to its own image
+// (spec 14.10's twins). Quadratic in the vertices: for test meshes.
+qmc::Mesh make_mirrored_across_x(qmc::Mesh mesh, float near = 0.01f);
+
 // Splits quad `quad` of `mesh` along its diagonal corner 0 - corner 2 into
 // two quads that share two edges, around a new vertex of valence 2 at the
 // diagonal's midpoint (appended last): (c0, c1, c2, v) in place and

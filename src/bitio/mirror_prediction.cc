@@ -1,0 +1,140 @@
+// Section 14.10 of spec/qmc-format.md: the mirror candidate.
+#include "bitio/mirror_prediction.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "bitio/exact_arith.h"  // bit_length64
+
+namespace qmc {
+namespace {
+
+// 14.10: the neighbours of v whose image vertices are searched, and of
+// each image vertex the corners examined. Two neighbours are next to v's
+// twin from two sides; more add candidates near the reference that are not
+// the twin (all of them: face's positions 2 % larger at 12 bits, spot's 3 %).
+constexpr int kMirrorNeighbours = 2, kMirrorCorners = 16;
+
+uint64_t mix(uint64_t x) {  // splitmix64's finalizer
+  x ^= x >> 30;
+  x *= 0xBF58476D1CE4E5B9ull;
+  x ^= x >> 27;
+  x *= 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+}  // namespace
+
+GridPointTable::GridPointTable(uint32_t capacity_for) {
+  size_t size = 16;
+  while (size < 2 * size_t(capacity_for)) size *= 2;
+  entries_.reset(new Entry[size]);
+  for (size_t i = 0; i < size; ++i) entries_[i].vertex = kNone;
+  mask_ = size - 1;
+  // Any key gives the same vertices; one a file cannot know keeps probes short.
+  key_ = mix(uint64_t(std::chrono::steady_clock::now().time_since_epoch().count()) ^
+             uint64_t(reinterpret_cast<uintptr_t>(entries_.get())));
+}
+
+size_t GridPointTable::slot(const uint32_t q[3]) const {
+  const uint64_t h = mix(mix(key_ ^ q[0]) ^ (uint64_t(q[1]) << 32 | q[2]));
+  return size_t(h) & mask_;
+}
+
+uint32_t GridPointTable::find(const uint32_t q[3]) const {
+  for (size_t i = slot(q);; i = (i + 1) & mask_) {
+    const Entry& e = entries_[i];
+    if (e.vertex == kNone) return kNone;
+    if (e.q[0] == q[0] && e.q[1] == q[1] && e.q[2] == q[2]) return e.vertex;
+  }
+}
+
+void GridPointTable::insert(const uint32_t q[3], uint32_t v) {
+  for (size_t i = slot(q);; i = (i + 1) & mask_) {
+    Entry& e = entries_[i];
+    if (e.vertex == kNone) {
+      e = Entry{{q[0], q[1], q[2]}, v};
+      return;
+    }
+    if (e.q[0] == q[0] && e.q[1] == q[1] && e.q[2] == q[2]) return;
+  }
+}
+
+MirrorCandidates::MirrorCandidates(const VertexCorners& mesh, MirrorPlane plane, const uint32_t top[3])
+    : mesh_(mesh),
+      plane_(plane),
+      decoded_(mesh.vertex_count(), 0),
+      first_at_(mesh.vertex_count()),
+      first_(mesh.vertex_count(), GridPointTable::kNone),
+      image_vertex_(mesh.vertex_count(), GridPointTable::kNone) {
+  std::copy(top, top + 3, top_);
+}
+
+bool MirrorCandidates::image(const uint32_t* point, uint32_t out[3]) const {
+  for (int a = 0; a < 3; ++a) out[a] = point[a];
+  const int64_t m = int64_t(plane_.sum) - int64_t(point[plane_.axis]);
+  if (m < 0 || m > int64_t(top_[plane_.axis])) return false;
+  out[plane_.axis] = uint32_t(m);
+  return true;
+}
+
+bool MirrorCandidates::find(uint32_t v, const uint32_t* q, const VertexPrediction& p, int64_t out[3]) const {
+  bool found = false;
+  int64_t best = 0;
+  const int axis = plane_.axis;
+  const int64_t sum = plane_.sum, top = top_[axis];
+  uint32_t searched[kMirrorNeighbours];
+  int neighbours = 0;
+  const VertexCorners::Sides* sides = mesh_.sides(v);
+  for (const uint32_t* corner = mesh_.begin(v); corner != mesh_.end(v); ++corner, ++sides) {
+    for (const uint32_t u : {sides->previous, sides->next}) {
+      if (!decoded_[u] || std::find(searched, searched + neighbours, u) != searched + neighbours) continue;
+      const uint32_t u_image = image_vertex_[first_[u]];
+      if (u_image == GridPointTable::kNone) continue;
+      if (neighbours == kMirrorNeighbours) return found;
+      searched[neighbours++] = u;
+      const VertexCorners::Sides* around = mesh_.sides(u_image);
+      const int corners = int(std::min<ptrdiff_t>(mesh_.end(u_image) - mesh_.begin(u_image), kMirrorCorners));
+      for (int k = 0; k < corners; ++k)
+        for (const uint32_t w : {around[k].previous, around[k].next}) {
+          if (!decoded_[w]) continue;
+          const uint32_t* point = &q[3 * size_t(w)];
+          int64_t c[3] = {point[0], point[1], point[2]};
+          c[axis] = std::clamp<int64_t>(sum - c[axis], 0, top);
+          const int64_t distance = std::abs(c[0] - p.value[0]) + std::abs(c[1] - p.value[1]) + std::abs(c[2] - p.value[2]);
+          if (found && distance >= best) continue;
+          found = true;
+          best = distance;
+          std::copy(c, c + 3, out);
+        }
+    }
+  }
+  return found;
+}
+
+void MirrorCandidates::decoded(uint32_t v, const uint32_t* q) {
+  decoded_[v] = 1;
+  const uint32_t* point = &q[3 * size_t(v)];
+  const uint32_t first = first_at_.find(point);
+  if (first != GridPointTable::kNone) {  // a duplicate: its images are the first vertex's
+    first_[v] = first;
+    return;
+  }
+  first_at_.insert(point, v);
+  first_[v] = v;
+  uint32_t m[3];
+  if (!image(point, m)) return;
+  const uint32_t twin = first_at_.find(m);  // v itself when v lies on the plane
+  if (twin == GridPointTable::kNone) return;
+  image_vertex_[v] = twin;
+  // v is the first vertex at twin's image point: twin's image vertex.
+  if (image_vertex_[twin] == GridPointTable::kNone) image_vertex_[twin] = v;
+}
+
+int mirror_context(const int64_t candidate[3], const int64_t reference[3]) {
+  uint64_t distance = 0;
+  for (int a = 0; a < 3; ++a) distance += uint64_t(std::abs(candidate[a] - reference[a]));
+  return distance == 0 ? 0 : std::min(bit_length64(distance), kMirrorContexts - 1);
+}
+
+}  // namespace qmc

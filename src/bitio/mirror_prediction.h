@@ -1,0 +1,82 @@
+// Section 14.10 of spec/qmc-format.md (POSN method 9): the mirror
+// candidate. A mesh modelled with a mirror (most characters, animals,
+// vehicles and heads are) has a vertex v' for nearly every vertex v with
+// q[v'] = M(q[v]), M a reflection across a plane of the grid. When v' was
+// decoded before v, M(q[v']) predicts v exactly. The decoder finds v'
+// through v's decoded neighbours u: u's mirror image is a decoded vertex u'
+// (the first decoded at M(q[u])), and v' is a neighbour of u', the one whose
+// image is nearest to v's usual prediction. Nothing but the plane is
+// transmitted.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "bitio/vertex_prediction.h"
+
+namespace qmc {
+
+// 14.10: M(q) = q with q[axis] replaced by sum - q[axis].
+struct MirrorPlane {
+  int axis = 0;       // 0, 1 or 2
+  uint32_t sum = 0;   // 0 .. 2 top[axis]
+};
+
+// The first vertex decoded at each grid point: an open-addressing table
+// whose hash is keyed per table, so that no file can make its probes long
+// (the vertices it returns do not depend on the key).
+class GridPointTable {
+ public:
+  explicit GridPointTable(uint32_t capacity_for);
+  // The first vertex inserted at q, or kNone.
+  uint32_t find(const uint32_t q[3]) const;
+  // Inserts v at q unless a vertex is there already.
+  void insert(const uint32_t q[3], uint32_t v);
+  static constexpr uint32_t kNone = 0xFFFFFFFFu;
+
+ private:
+  struct Entry {
+    uint32_t q[3];
+    uint32_t vertex;
+  };
+  size_t slot(const uint32_t q[3]) const;
+  std::unique_ptr<Entry[]> entries_;
+  size_t mask_ = 0;
+  uint64_t key_ = 0;
+};
+
+// 14.10's search, shared by the encoder and the decoder.
+class MirrorCandidates {
+ public:
+  MirrorCandidates(const VertexCorners& mesh, MirrorPlane plane, const uint32_t top[3]);
+  // The mirror candidate of vertex v (its prediction p selected with every
+  // candidate, so that p.value is 14.10's reference), clamped to the grid,
+  // in out; false if v has none. q: 3 integers per vertex, those of the
+  // vertices decoded() so far meaningful.
+  bool find(uint32_t v, const uint32_t* q, const VertexPrediction& p, int64_t out[3]) const;
+  // After v's integers q[3 v ..] are known.
+  void decoded(uint32_t v, const uint32_t* q);
+
+ private:
+  // M(point) into out; false if it leaves the grid.
+  bool image(const uint32_t* point, uint32_t out[3]) const;
+  const VertexCorners& mesh_;
+  MirrorPlane plane_;
+  uint32_t top_[3];
+  std::vector<uint8_t> decoded_;
+  GridPointTable first_at_;
+  // Per decoded vertex: the first vertex decoded at its point (itself, or
+  // one it duplicates), and for such a first vertex its image vertex once
+  // one is decoded (kNone before). Kept as vertices are decoded, so that a
+  // search looks up no grid point: each image vertex is found once.
+  std::vector<uint32_t> first_, image_vertex_;
+};
+
+inline constexpr int kMirrorContexts = 12;
+
+// 14.10: the context of the decision "the mirror candidate is used", from
+// the L1 distance between it and the reference, s = min(bitlen(D), 11).
+int mirror_context(const int64_t candidate[3], const int64_t reference[3]);
+
+}  // namespace qmc

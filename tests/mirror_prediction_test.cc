@@ -1,0 +1,162 @@
+// POSN method 9 (spec 14.10): the mirror candidate, its search, the
+// encoder's choice and round trips over every plane.
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "bitio/geometry_order.h"
+#include "bitio/mirror_prediction.h"
+#include "bitio/vertex_prediction.h"
+#include "decoder/position_decoder.h"
+#include "encoder/position_encoder.h"
+#include "mesh_generators.h"
+#include "qmc/decoder.h"
+#include "qmc/encoder.h"
+
+namespace qmc {
+namespace {
+
+constexpr uint32_t kKiteTop[3] = {12, 10, 3};
+
+Mesh kite_faces() {
+  Mesh m;
+  m.face_sizes = {3, 3};
+  m.corners = {0, 1, 2, 1, 0, 3};
+  return m;
+}
+
+// Spec 14.10's example step by step: vertex 2's candidate is the image of
+// vertex 0 (D = 5, s = 3), vertex 3's the image of vertex 2 (D = 3, s = 2);
+// vertices 0 and 1 have none.
+TEST(MirrorCandidate, SpecExample) {
+  const Mesh kite = kite_faces();
+  const std::vector<uint32_t> q = {6, 0, 0, 6, 10, 0, 0, 5, 3, 12, 5, 3};
+  VertexCorners corners;
+  corners.build(4, kite.face_sizes, kite.corners);
+  ASSERT_EQ(geometry_order(4, kite.face_sizes, kite.corners), (std::vector<uint32_t>{0, 1, 2, 3}));
+  MirrorCandidates mirrors(corners, MirrorPlane{0, 12}, kKiteTop);
+  const std::vector<uint32_t> order = {0, 1, 2, 3}, activity(4, 0);
+  VertexPrediction p;
+  int64_t c[3];
+  for (uint32_t v = 0; v < 2; ++v) {
+    predict_vertex_in_order(corners, order.data(), order.data(), v, q.data(), activity.data(), kKiteTop, &p);
+    select_candidates(&p, (1u << p.candidates) - 1, kKiteTop);
+    EXPECT_FALSE(mirrors.find(v, q.data(), p, c)) << v;
+    mirrors.decoded(v, q.data());
+  }
+  predict_vertex_in_order(corners, order.data(), order.data(), 2, q.data(), activity.data(), kKiteTop, &p);
+  ASSERT_EQ(p.candidates, 0);
+  select_candidates(&p, 0, kKiteTop);
+  EXPECT_EQ(std::vector<int64_t>(p.value, p.value + 3), (std::vector<int64_t>{6, 5, 0}));  // the fallback
+  ASSERT_TRUE(mirrors.find(2, q.data(), p, c));
+  EXPECT_EQ(std::vector<int64_t>(c, c + 3), (std::vector<int64_t>{6, 0, 0}));
+  EXPECT_EQ(mirror_context(c, p.value), 3);  // D = 5
+  mirrors.decoded(2, q.data());
+  predict_vertex_in_order(corners, order.data(), order.data(), 3, q.data(), activity.data(), kKiteTop, &p);
+  ASSERT_EQ(p.candidates, 1);
+  select_candidates(&p, 1, kKiteTop);
+  EXPECT_EQ(std::vector<int64_t>(p.value, p.value + 3), (std::vector<int64_t>{12, 5, 0}));  // (12, 5, -3) clamped
+  ASSERT_TRUE(mirrors.find(3, q.data(), p, c));
+  EXPECT_EQ(std::vector<int64_t>(c, c + 3), (std::vector<int64_t>{12, 5, 3}));
+  EXPECT_EQ(mirror_context(c, p.value), 2);  // D = 3
+}
+
+// 14.10's image vertex is the first decoded at the point, and a point off
+// the grid has none.
+TEST(MirrorCandidate, TheFirstVertexAtAPointIsItsImageVertex) {
+  GridPointTable table(4);
+  const uint32_t a[3] = {1, 2, 3}, b[3] = {3, 2, 1};
+  EXPECT_EQ(table.find(a), GridPointTable::kNone);
+  table.insert(a, 7);
+  table.insert(a, 5);
+  table.insert(b, 9);
+  EXPECT_EQ(table.find(a), 7u);
+  EXPECT_EQ(table.find(b), 9u);
+  // Vertex 1 at (2, 0, 0) has vertex 0 at (8, 0, 0) as neighbour; across
+  // x = 5 (sum 10) 0's image point (2, 0, 0) holds no decoded vertex yet.
+  Mesh edge;
+  edge.face_sizes = {3};
+  edge.corners = {0, 1, 2};
+  VertexCorners corners;
+  corners.build(3, edge.face_sizes, edge.corners);
+  const uint32_t top[3] = {20, 20, 20};
+  const std::vector<uint32_t> q = {8, 0, 0, 2, 0, 0, 5, 5, 0};
+  VertexPrediction p;
+  p.value[0] = p.value[1] = p.value[2] = 0;
+  int64_t c[3];
+  MirrorCandidates off_grid(corners, MirrorPlane{0, 30}, top);  // 0's image x = 22 > top
+  off_grid.decoded(0, q.data());
+  EXPECT_FALSE(off_grid.find(1, q.data(), p, c));
+}
+
+// On a mirrored mesh the encoder writes method 9, the same integers as
+// methods 4 - 8 in far fewer bytes; without the option, or on a mesh
+// without a plane, methods 4 - 8.
+TEST(MirrorCandidate, EncoderWritesMethodNineOnMirroredMeshes) {
+  const Mesh sphere = tools::make_mirrored_across_x(tools::triangulated(tools::make_refined_sphere(3)));
+  EncodeOptions with, without;
+  without.mirror_symmetry = false;
+  std::vector<uint8_t> a, b;
+  EncodeStats sa, sb;
+  ASSERT_TRUE(encode(sphere, with, &a, &sa).ok());
+  ASSERT_TRUE(encode(sphere, without, &b, &sb).ok());
+  DecodedFile da, db;
+  ASSERT_TRUE(decode(a.data(), a.size(), &da).ok());
+  ASSERT_TRUE(decode(b.data(), b.size(), &db).ok());
+  EXPECT_EQ(da.quantization.method, 9);
+  EXPECT_EQ(da.version_minor, 12);
+  EXPECT_GE(da.quantization.mirror_axis, 0);  // the sphere has planes across each axis
+  EXPECT_LT(db.quantization.method, 9);
+  EXPECT_EQ(da.quantized, db.quantized);
+  EXPECT_LT(a.size() * 10, b.size() * 8);  // 20 % smaller at least
+  EXPECT_GT(sa.positions.vertices_by_kind[int(PredictionKind::kMirror)], sphere.vertex_count() / 3);
+  const Mesh lopsided = tools::triangulated(tools::make_torus(24, 10, 1.f, 0.3f));
+  Mesh bent = lopsided;
+  for (size_t v = 0; v < bent.vertex_count(); ++v)  // z + 0.3 x y + 0.1 x: no plane maps it onto itself
+    bent.positions[3 * v + 2] += 0.3f * bent.positions[3 * v] * bent.positions[3 * v + 1] + 0.1f * bent.positions[3 * v];
+  std::vector<uint8_t> c;
+  ASSERT_TRUE(encode(bent, with, &c).ok());
+  DecodedFile dc;
+  ASSERT_TRUE(decode(c.data(), c.size(), &dc).ok());
+  EXPECT_LT(dc.quantization.method, 9);
+}
+
+// Any plane, those whose images leave the grid included, and any features:
+// what the encoder writes decodes to its integers.
+TEST(MirrorCandidate, RoundTripsEveryPlane) {
+  std::vector<Mesh> meshes = {tools::make_mirrored_across_x(tools::make_refined_sphere(2)),
+                              tools::make_mirrored_across_x(tools::triangulated(tools::make_torus(12, 8)))};
+  for (uint64_t seed = 1; seed <= 6; ++seed) {
+    tools::RandomSoupOptions o;
+    o.vertices = 40 + uint32_t(seed * 9);
+    o.faces = 30 + uint32_t(seed * 7);
+    meshes.push_back(tools::make_mirrored_across_x(tools::make_random_soup(seed, o), 0.05f));
+  }
+  for (const Mesh& mesh : meshes) {
+    const QuantizedPositions grid = quantize_positions(mesh.positions, 12);
+    for (int axis = 0; axis < 3; ++axis)
+      for (uint32_t sum : {0u, grid.top[size_t(axis)] - 1, grid.top[size_t(axis)], 2 * grid.top[size_t(axis)]})
+        for (int features : {0, 7}) {
+          const MirrorPlane plane{axis, sum};
+          const std::vector<uint8_t> payload = encode_predicted_positions(
+              grid, mesh, nullptr, CandidateChoice::kFewestBits, ClassStart::kGraded, PredictionOrder::kGeometry,
+              features & 1, features & 2, features & 4, &plane);
+          ASSERT_FALSE(payload.empty());
+          QuantizationInfo info;
+          std::vector<uint32_t> q;
+          std::vector<float> positions;
+          ASSERT_TRUE(decode_positions(payload.data(), payload.size(), mesh, uint32_t(mesh.vertex_count()), &info,
+                                       &q, &positions)
+                          .ok());
+          EXPECT_EQ(info.method, 9);
+          EXPECT_EQ(info.mirror_axis, axis);
+          EXPECT_EQ(info.mirror_sum, sum);
+          EXPECT_EQ(info.features, features);
+          EXPECT_EQ(q, grid.q);
+        }
+  }
+}
+
+}  // namespace
+}  // namespace qmc
