@@ -404,13 +404,18 @@ namespace {
 
 }  // namespace
 
-constexpr uint32_t kMirrorSample = 1024, kMirroredShareDivisor = 8;
+// find_mirror_plane's screen: every plane tried on about kMirrorScreen
+// vertices, those that map 1/16 of them onto vertices on about
+// kMirrorSample, the best of those on all (1/8 needed). A mesh without a
+// plane costs the table of its points and 15 x kMirrorScreen look-ups.
+constexpr uint32_t kMirrorScreen = 128, kMirrorSample = 1024, kMirroredShareDivisor = 8;
 
 bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
   if (n < 16) return false;
   GridPointTable points(n);
   for (uint32_t v = 0; v < n; ++v) points.insert(&positions.q[3 * size_t(v)], v);
+  // Of every stride-th vertex, the share (in 1/count) whose image is a vertex.
   const auto hits = [&](MirrorPlane candidate, uint32_t stride) {
     uint32_t count = 0;
     for (uint32_t v = 0; v < n; v += stride) {
@@ -423,13 +428,16 @@ bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane) 
     }
     return count;
   };
-  const uint32_t stride = std::max<uint32_t>(1, n / kMirrorSample);
+  const uint32_t screen_stride = std::max<uint32_t>(1, n / kMirrorScreen);
+  const uint32_t screened = (n + screen_stride - 1) / screen_stride;
+  const uint32_t sample_stride = std::max<uint32_t>(1, n / kMirrorSample);
   uint32_t best = 0;
   for (int axis = 0; axis < 3; ++axis) {
     const int64_t top = positions.top[size_t(axis)];
     for (int64_t sum = std::max<int64_t>(0, top - 2); sum <= top + 2; ++sum) {
       const MirrorPlane candidate{axis, uint32_t(sum)};
-      const uint32_t count = hits(candidate, stride);
+      if (hits(candidate, screen_stride) * 16 < screened) continue;
+      const uint32_t count = hits(candidate, sample_stride);
       if (count > best) {
         best = count;
         *plane = candidate;
@@ -595,9 +603,12 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   if (contexts) method += 2;
   if (triangles_twisted) method = 8;
   if (mirrored) method = 9;
-  if (mirrored && positions.q.size() / 3 < kGradedStartBelow) {
-    // A small mesh's mirror decisions may cost more than its twins save
-    // (cylinder_ngon_caps: 4 - 10 bytes): methods 4 - 8 too, the smaller kept.
+  const uint32_t twins = stats->vertices_by_kind[int(PredictionKind::kMirror)] -
+                         before.vertices_by_kind[int(PredictionKind::kMirror)];
+  if (mirrored && positions.q.size() / 3 < kGradedStartBelow && twins < positions.q.size() / 3 / 8) {
+    // A small mesh with few twins may pay more for its mirror decisions than
+    // they save (cylinder_ngon_caps: 4 - 10 bytes): methods 4 - 8 too, the
+    // smaller kept.
     PositionStats plain_stats = before;
     std::vector<uint8_t> plain =
         predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, nullptr,
