@@ -619,7 +619,9 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
       method = triangles_twisted ? 8 : (twisted ? 5 : 4) + (contexts ? 2 : 0);
     }
   }
-  if (order == PredictionOrder::kGeometry && positions.q.size() / 3 < kGradedStartBelow) {
+  // Under 1,000 vertices the label order's payload too, unless method 9's
+  // twins pay (the label order has none: on the corpus it never won then).
+  if (order == PredictionOrder::kGeometry && positions.q.size() / 3 < kGradedStartBelow && method != 9) {
     PositionStats label_stats = before;
     const PredictionVisit labels_visit(corners, PredictionOrder::kLabels);
     std::vector<uint8_t> labels =
