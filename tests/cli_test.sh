@@ -148,6 +148,7 @@ check soup-encode 0 "$qmc" encode "$work/soup.off" "$work/soup.qmc" -q 16 --text
 check soup-verify 0 "$qmc" verify "$work/soup.off" "$work/soup.qmc"
 check verify-wrong-mesh 1 "$qmc" verify "$work/soup.off" "$work/torus.qmc"
 check help 0 "$qmc" --help
+contains help-version "$work/out" "format version 1.12, spec/qmc-format.md"
 check encode-help 0 "$qmc" encode --help
 contains help-default-bits "$work/out" "1/4096"
 check no-args 2 "$qmc"

@@ -3222,6 +3222,25 @@ Mesh mirror_fan(uint32_t spokes) {
   return qmc::tools::make_mirrored_across_x(m, 1e-6f);
 }
 
+// A fan of 40 triangles on integer points around the centre (10, 10, 2),
+// symmetric across x = 10: the centre lies on the plane, is the image
+// vertex of itself and of every rim vertex next to it, and has 40 corners,
+// so 14.10's bound of 16 corners bites.
+Mesh mirror_fan_on_the_plane() {
+  Mesh m;
+  m.positions = {10, 10, 2};
+  constexpr uint32_t kSpokes = 40;
+  for (uint32_t k = 0; k < kSpokes; ++k) {
+    const double angle = 2 * 3.14159265358979 * k / kSpokes;
+    m.positions.insert(m.positions.end(), {float(10 + std::lround(8 * std::cos(angle))),
+                                           float(10 + std::lround(8 * std::sin(angle))),
+                                           float(2 + std::lround(2 * std::sin(3 * angle)))});
+    m.face_sizes.push_back(3);
+    m.corners.insert(m.corners.end(), {0, 1 + k, 1 + (k + 1) % kSpokes});
+  }
+  return m;
+}
+
 // The file's POSN written again as method 9 (14.10) with `plane` (or the
 // one find_mirror_plane finds, which the file must have) and `features`,
 // the start its vertex count gives (14.5): the same integers.
@@ -3291,6 +3310,18 @@ void write_posn9_vectors(VectorWriter* w) {
   qmc::EncodeOptions indexed = options;
   indexed.connectivity = qmc::ConnectivityChoice::kIndexed;
   w->valid("valid_posn9_fan_of_40", rewritten_with_mirror(encode_with(fan, indexed, "fan"), 0), &fan);
+  const Mesh fan_on_plane = mirror_fan_on_the_plane();
+  qmc::EncodeOptions unit_indexed = indexed;
+  unit_indexed.position_step = 1;
+  const qmc::MirrorPlane fan_plane{0, 16};  // the grid's origin is the box's corner (2, 2, 0): x = 10 is q = 8
+  w->valid("valid_posn9_fan_on_the_plane",
+           rewritten_with_mirror(encode_with(fan_on_plane, unit_indexed, "fan on the plane"), 0, &fan_plane),
+           &fan_on_plane);
+  // The twist of triangles (lambda learning) beside the mirror candidate: a
+  // mirrored regular torus of triangles, features 4.
+  const Mesh twisted_torus = qmc::tools::make_mirrored_across_x(qmc::tools::triangulated(qmc::tools::make_torus(48, 32)));
+  w->valid("valid_posn9_torus_twist", rewritten_with_mirror(encode_with(twisted_torus, options, "torus"), 4),
+           &twisted_torus);
   // 15.4: an aTTR's values take no mirror candidate, whatever POSN's method.
   Mesh textured = sphere;
   qmc::tools::add_chart_texcoords(&textured);
@@ -3321,6 +3352,23 @@ void write_posn9_vectors(VectorWriter* w) {
   qmc::put_varint(&p, 2 * 4095 + 1);
   p.insert(p.end(), payload.begin() + long(grid), payload.end());
   w->invalid("invalid_posn9_sum_above_twice_top", with_posn(p), ErrorCode::kBadChunkPayload);
+  // 14.1's order: the sum's check comes before the bound of V against the stream (no stream at all here).
+  const std::vector<uint8_t> big_file = encode_posn_method(big, options, 9);
+  const ChunkReplacer with_big_posn(big_file, qmc::kChunkPositions);
+  const std::vector<uint8_t> big_payload = with_big_posn.payload();
+  std::vector<uint8_t> big_count;
+  qmc::put_varint(&big_count, big.vertex_count());
+  const size_t big_sum = big_count.size() + 4;
+  qmc::ByteReader big_after_sum(big_payload.data() + big_sum, big_payload.size() - big_sum);
+  uint64_t big_sum_value = 0;
+  big_after_sum.get_varint(&big_sum_value);
+  qmc::ByteReader big_tops(big_after_sum.cursor() + 1 + 12 + 8, size_t(big_payload.data() + big_payload.size() -
+                                                                       (big_after_sum.cursor() + 1 + 12 + 8)));
+  for (uint64_t top = 0, a = 0; a < 3; ++a) big_tops.get_varint(&top);
+  p = {big_payload.begin(), big_payload.begin() + long(big_sum)};
+  qmc::put_varint(&p, 2 * 16383 + 1);
+  p.insert(p.end(), big_after_sum.cursor(), big_tops.cursor());
+  w->invalid("invalid_posn9_sum_above_twice_top_no_stream", with_big_posn(p), ErrorCode::kBadChunkPayload);
   p = payload;
   p[count.size() + 1] = 2;
   w->invalid("invalid_posn9_start_2", with_posn(p), ErrorCode::kBadChunkPayload);

@@ -6,11 +6,12 @@
 
 #include "commands.h"
 #include "cli_common.h"
+#include "qmc/format.h"
 
 namespace {
 
+// The first line names the format version this build writes (qmc/format.h).
 const char kUsage[] =
-    "qmc - mesh compression codec (format version 1.10, spec/qmc-format.md)\n"
     "\n"
     "usage: qmc COMMAND [ARGS]\n"
     "\n"
@@ -37,7 +38,10 @@ int main(int argc, char** argv) {
   // with a half-written temporary file left behind.
   std::signal(SIGXFSZ, SIG_IGN);
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
-    std::fputs(kUsage, argc < 2 ? stderr : stdout);
+    std::FILE* out = argc < 2 ? stderr : stdout;
+    std::fprintf(out, "qmc - mesh compression codec (format version %d.%d, spec/qmc-format.md)\n", int(qmc::kFormatMajor),
+                 int(qmc::kFormatMinor));
+    std::fputs(kUsage, out);
     return argc < 2 ? qmc::cli::kExitUsage : qmc::cli::kExitOk;
   }
   const std::string command = argv[1];
