@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 
 #include "bitio/exact_arith.h"  // bit_length64
 
@@ -79,10 +80,11 @@ bool MirrorCandidates::image(const uint32_t* point, uint32_t out[3]) const {
 }
 
 bool MirrorCandidates::find(uint32_t v, const uint32_t* q, const VertexPrediction& p, int64_t out[3]) const {
-  bool found = false;
-  int64_t best = 0;
+  constexpr int64_t kNoneYet = std::numeric_limits<int64_t>::max();
+  int64_t best = kNoneYet;
   const int axis = plane_.axis;
   const int64_t sum = plane_.sum, top = top_[axis];
+  const int64_t reference[3] = {p.value[0], p.value[1], p.value[2]};
   uint32_t searched[kMirrorNeighbours];
   int neighbours = 0;
   const VertexCorners::Sides* sides = mesh_.sides(v);
@@ -91,7 +93,7 @@ bool MirrorCandidates::find(uint32_t v, const uint32_t* q, const VertexPredictio
       if (!decoded_[u] || std::find(searched, searched + neighbours, u) != searched + neighbours) continue;
       const uint32_t u_image = image_vertex_[first_[u]];
       if (u_image == GridPointTable::kNone) continue;
-      if (neighbours == kMirrorNeighbours) return found;
+      if (neighbours == kMirrorNeighbours) return best != kNoneYet;
       searched[neighbours++] = u;
       const VertexCorners::Sides* around = mesh_.sides(u_image);
       const int corners = int(std::min<ptrdiff_t>(mesh_.end(u_image) - mesh_.begin(u_image), kMirrorCorners));
@@ -101,15 +103,16 @@ bool MirrorCandidates::find(uint32_t v, const uint32_t* q, const VertexPredictio
           const uint32_t* point = &q[3 * size_t(w)];
           int64_t c[3] = {point[0], point[1], point[2]};
           c[axis] = std::clamp<int64_t>(sum - c[axis], 0, top);
-          const int64_t distance = std::abs(c[0] - p.value[0]) + std::abs(c[1] - p.value[1]) + std::abs(c[2] - p.value[2]);
-          if (found && distance >= best) continue;
-          found = true;
+          const int64_t distance =
+              std::abs(c[0] - reference[0]) + std::abs(c[1] - reference[1]) + std::abs(c[2] - reference[2]);
+          if (distance >= best) continue;  // only a smaller distance replaces the first
           best = distance;
           std::copy(c, c + 3, out);
+          if (best == 0) return true;  // nothing later can be smaller
         }
     }
   }
-  return found;
+  return best != kNoneYet;
 }
 
 void MirrorCandidates::decoded(uint32_t v, const uint32_t* q) {
