@@ -3265,6 +3265,31 @@ std::vector<uint8_t> rewritten_with_mirror(const std::vector<uint8_t>& file, uin
   return join_chunks(c);
 }
 
+// Where 14.1's fields of a method-9 POSN payload of uniform grid (grid 0)
+// start: start, features, mirror_axis, mirror_sum, grid, tops and stream;
+// and the sum's value.
+struct Posn9Fields {
+  size_t start, features, axis, sum, grid, tops, stream;
+  uint64_t sum_value;
+};
+Posn9Fields posn9_fields(const std::vector<uint8_t>& payload, size_t vertex_count) {
+  std::vector<uint8_t> count;
+  qmc::put_varint(&count, vertex_count);
+  Posn9Fields f{};
+  f.start = count.size() + 1;
+  f.features = f.start + 1;
+  f.axis = f.features + 1;
+  f.sum = f.axis + 1;
+  qmc::ByteReader in(payload.data() + f.sum, payload.size() - f.sum);
+  in.get_varint(&f.sum_value);
+  f.grid = size_t(in.cursor() - payload.data());
+  f.tops = f.grid + 1 + 12 + 8;  // the grid byte, the origin, one step
+  qmc::ByteReader tops(payload.data() + f.tops, payload.size() - f.tops);
+  for (uint64_t top = 0, a = 0; a < 3; ++a) tops.get_varint(&top);
+  f.stream = size_t(tops.cursor() - payload.data());
+  return f;
+}
+
 void write_posn9_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   qmc::EncodeOptions options;  // what `qmc encode` writes
@@ -3331,56 +3356,38 @@ void write_posn9_vectors(VectorWriter* w) {
   const std::vector<uint8_t> file = encode_posn_method(sphere, options, 9);
   const ChunkReplacer with_posn(file, qmc::kChunkPositions);
   const std::vector<uint8_t> payload = with_posn.payload();
-  std::vector<uint8_t> count;
-  qmc::put_varint(&count, sphere.vertex_count());
-  const size_t features = count.size() + 2, axis = features + 1, sum = axis + 1;
-  qmc::ByteReader after_sum(payload.data() + sum, payload.size() - sum);
-  uint64_t sum_value = 0;
-  after_sum.get_varint(&sum_value);
-  const size_t grid = size_t(after_sum.cursor() - payload.data());
+  const Posn9Fields f = posn9_fields(payload, sphere.vertex_count());
+  const auto cut = [](const std::vector<uint8_t>& bytes, size_t end) {
+    return std::vector<uint8_t>(bytes.begin(), bytes.begin() + long(end));
+  };
   std::vector<uint8_t> p = payload;
-  p[features] = 8;
+  p[f.features] = 8;
   w->invalid("invalid_posn9_features_bit_3", with_posn(p), ErrorCode::kBadChunkPayload);
   p = payload;
-  p[axis] = 3;
+  p[f.axis] = 3;
   w->invalid("invalid_posn9_axis_3", with_posn(p), ErrorCode::kBadChunkPayload);
-  w->invalid("invalid_posn9_axis_missing", with_posn({payload.begin(), payload.begin() + long(axis)}),
-             ErrorCode::kBadChunkPayload);
-  w->invalid("invalid_posn9_sum_missing", with_posn({payload.begin(), payload.begin() + long(sum)}),
-             ErrorCode::kBadChunkPayload);
-  p = {payload.begin(), payload.begin() + long(sum)};
+  w->invalid("invalid_posn9_axis_missing", with_posn(cut(payload, f.axis)), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn9_sum_missing", with_posn(cut(payload, f.sum)), ErrorCode::kBadChunkPayload);
+  p = cut(payload, f.sum);
   qmc::put_varint(&p, 2 * 4095 + 1);
-  p.insert(p.end(), payload.begin() + long(grid), payload.end());
+  p.insert(p.end(), payload.begin() + long(f.grid), payload.end());
   w->invalid("invalid_posn9_sum_above_twice_top", with_posn(p), ErrorCode::kBadChunkPayload);
   // 14.1's order: the sum's check comes before the bound of V against the stream (no stream at all here).
-  const std::vector<uint8_t> big_file = encode_posn_method(big, options, 9);
-  const ChunkReplacer with_big_posn(big_file, qmc::kChunkPositions);
+  const ChunkReplacer with_big_posn(encode_posn_method(big, options, 9), qmc::kChunkPositions);
   const std::vector<uint8_t> big_payload = with_big_posn.payload();
-  std::vector<uint8_t> big_count;
-  qmc::put_varint(&big_count, big.vertex_count());
-  const size_t big_sum = big_count.size() + 4;
-  qmc::ByteReader big_after_sum(big_payload.data() + big_sum, big_payload.size() - big_sum);
-  uint64_t big_sum_value = 0;
-  big_after_sum.get_varint(&big_sum_value);
-  qmc::ByteReader big_tops(big_after_sum.cursor() + 1 + 12 + 8, size_t(big_payload.data() + big_payload.size() -
-                                                                       (big_after_sum.cursor() + 1 + 12 + 8)));
-  for (uint64_t top = 0, a = 0; a < 3; ++a) big_tops.get_varint(&top);
-  p = {big_payload.begin(), big_payload.begin() + long(big_sum)};
+  const Posn9Fields big_f = posn9_fields(big_payload, big.vertex_count());
+  p = cut(big_payload, big_f.sum);
   qmc::put_varint(&p, 2 * 16383 + 1);
-  p.insert(p.end(), big_after_sum.cursor(), big_tops.cursor());
+  p.insert(p.end(), big_payload.begin() + long(big_f.grid), big_payload.begin() + long(big_f.stream));
   w->invalid("invalid_posn9_sum_above_twice_top_no_stream", with_big_posn(p), ErrorCode::kBadChunkPayload);
   p = payload;
-  p[count.size() + 1] = 2;
+  p[f.start] = 2;
   w->invalid("invalid_posn9_start_2", with_posn(p), ErrorCode::kBadChunkPayload);
-  w->invalid("invalid_posn9_truncated_stream", with_posn({payload.begin(), payload.end() - 8}),
-             ErrorCode::kTruncated);
+  w->invalid("invalid_posn9_truncated_stream", with_posn(cut(payload, payload.size() - 8)), ErrorCode::kTruncated);
   // The tops cut to the plane's half: the twins' values fall outside the grid.
-  qmc::ByteReader tops(payload.data() + grid + 1 + 12 + 8, payload.size() - (grid + 1 + 12 + 8));
-  for (uint64_t top = 0, a = 0; a < 3; ++a) tops.get_varint(&top);
-  p = {payload.begin(), payload.begin() + long(grid + 1 + 12 + 8)};
-  const uint64_t half = (sum_value + 1) / 2;
-  for (int a = 0; a < 3; ++a) qmc::put_varint(&p, half);
-  p.insert(p.end(), tops.cursor(), payload.data() + payload.size());
+  p = cut(payload, f.tops);
+  for (int a = 0; a < 3; ++a) qmc::put_varint(&p, (f.sum_value + 1) / 2);
+  p.insert(p.end(), payload.begin() + long(f.stream), payload.end());
   w->invalid("invalid_posn9_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
 }
 

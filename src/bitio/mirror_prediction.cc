@@ -50,14 +50,14 @@ uint32_t GridPointTable::find(const uint32_t q[3]) const {
   }
 }
 
-void GridPointTable::insert(const uint32_t q[3], uint32_t v) {
+uint32_t GridPointTable::insert(const uint32_t q[3], uint32_t v) {
   for (size_t i = slot(q);; i = (i + 1) & mask_) {
     Entry& e = entries_[i];
     if (e.vertex == kNone) {
       e = Entry{{q[0], q[1], q[2]}, v};
-      return;
+      return kNone;
     }
-    if (e.q[0] == q[0] && e.q[1] == q[1] && e.q[2] == q[2]) return;
+    if (e.q[0] == q[0] && e.q[1] == q[1] && e.q[2] == q[2]) return e.vertex;
   }
 }
 
@@ -118,12 +118,11 @@ bool MirrorCandidates::find(uint32_t v, const uint32_t* q, const VertexPredictio
 void MirrorCandidates::decoded(uint32_t v, const uint32_t* q) {
   decoded_[v] = 1;
   const uint32_t* point = &q[3 * size_t(v)];
-  const uint32_t first = first_at_.find(point);
+  const uint32_t first = first_at_.insert(point, v);
   if (first != GridPointTable::kNone) {  // a duplicate: its images are the first vertex's
     first_[v] = first;
     return;
   }
-  first_at_.insert(point, v);
   first_[v] = v;
   uint32_t m[3];
   if (!image(point, m)) return;

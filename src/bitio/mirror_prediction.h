@@ -31,8 +31,9 @@ class GridPointTable {
   explicit GridPointTable(uint32_t capacity_for);
   // The first vertex inserted at q, or kNone.
   uint32_t find(const uint32_t q[3]) const;
-  // Inserts v at q unless a vertex is there already.
-  void insert(const uint32_t q[3], uint32_t v);
+  // Inserts v at q unless a vertex is there already; returns that vertex,
+  // or kNone when v was inserted.
+  uint32_t insert(const uint32_t q[3], uint32_t v);
   static constexpr uint32_t kNone = 0xFFFFFFFFu;
 
  private:

@@ -210,19 +210,16 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
 // Section 14.10 (POSN method 9) for vertex `vertex`, the i-th visited: if it
 // has a mirror candidate, the decision whether it is used, and if it is,
 // the residuals against it (*used then true; no mask is decoded).
-Status decode_mirrored(RangeDecoder* rc, PositionResidualModel* model, const MirrorCandidates& mirrors,
-                       uint32_t vertex, uint32_t i, const uint32_t* top, VertexPrediction* p, uint32_t* q,
-                       uint32_t* activity, bool* used) {
+Status decode_mirrored(RangeDecoder* rc, PositionResidualModel* model, const PredictedGridNames& names,
+                       const MirrorCandidates& mirrors, uint32_t vertex, uint32_t i, const uint32_t* top,
+                       VertexPrediction* p, uint32_t* q, uint32_t* activity, bool* used) {
   *used = false;
   select_candidates(p, (1u << p->candidates) - 1, top);  // the reference: every candidate
   int64_t candidate[3];
   if (!mirrors.find(vertex, q, *p, candidate)) return Status::Ok();
-  const PredictedGridNames names{"POSN", "vertex", "vertices", "axis"};
-  if (!rc->code(0, &model->mirror[mirror_context(candidate, p->value)])) {
-    if (rc->overrun()) return truncated_inside(names, i);
-    return Status::Ok();
-  }
+  const int use = rc->code(0, &model->mirror[mirror_context(candidate, p->value)]);
   if (rc->overrun()) return truncated_inside(names, i);
+  if (!use) return Status::Ok();
   *used = true;
   p->kind = PredictionKind::kMirror;
   std::copy(candidate, candidate + 3, p->value);
@@ -265,7 +262,8 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
     twist_weight.apply(&p);
     bool mirrored = false;
     if (mirrors)
-      if (Status s = decode_mirrored(&rc, &model[0], *mirrors, v, i, top, &p, quantized->data(), &activity[v], &mirrored);
+      if (Status s = decode_mirrored(&rc, &model[0], names, *mirrors, v, i, top, &p, quantized->data(),
+                                     &activity[v], &mirrored);
           !s.ok())
         return s;
     if (!mirrored) {

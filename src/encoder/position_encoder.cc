@@ -280,10 +280,12 @@ bool code_mirror_choice(MeteredRangeEncoder* rc, PositionResidualModel* model, c
   int64_t candidate[3];
   const bool has_candidate = mirrors.find(v, q.data(), *p, candidate);
   const int mirror = has_candidate ? mirror_context(candidate, p->value) : 0;
-  VertexPrediction mirrored = *p;
   const int context = mask_context(*model, *p);
   *mask = best_candidates(&q[3 * size_t(v)], top, model, choice, context, p);
   if (!has_candidate) return false;
+  // best_candidates changed only what the mirror candidate replaces (value,
+  // mean, kind); the bucket's inputs (activity, scale) are v's.
+  VertexPrediction mirrored = *p;
   mirrored.kind = PredictionKind::kMirror;
   std::copy(candidate, candidate + 3, mirrored.value);
   CostMeter use, plain;
@@ -602,6 +604,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   int method = twisted ? 5 : order == PredictionOrder::kGeometry ? 4 : start == ClassStart::kGraded ? 3 : 1;
   if (contexts) method += 2;
   if (triangles_twisted) method = 8;
+  const int method_without_mirror = method;
   if (mirrored) method = 9;
   const uint32_t twins = stats->vertices_by_kind[int(PredictionKind::kMirror)] -
                          before.vertices_by_kind[int(PredictionKind::kMirror)];
@@ -616,7 +619,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     if (!plain.empty() && plain.size() <= best.size()) {
       best = std::move(plain);
       *stats = plain_stats;
-      method = triangles_twisted ? 8 : (twisted ? 5 : 4) + (contexts ? 2 : 0);
+      method = method_without_mirror;
     }
   }
   // Under 1,000 vertices the label order's payload too, unless method 9's
