@@ -64,7 +64,6 @@ uint32_t GridPointTable::insert(const uint32_t q[3], uint32_t v) {
 MirrorCandidates::MirrorCandidates(const VertexCorners& mesh, MirrorPlane plane, const uint32_t top[3])
     : mesh_(mesh),
       plane_(plane),
-      decoded_(mesh.vertex_count(), 0),
       first_at_(mesh.vertex_count()),
       first_(mesh.vertex_count(), GridPointTable::kNone),
       image_vertex_(mesh.vertex_count(), GridPointTable::kNone) {
@@ -90,7 +89,7 @@ bool MirrorCandidates::find(uint32_t v, const uint32_t* q, const VertexPredictio
   const VertexCorners::Sides* sides = mesh_.sides(v);
   for (const uint32_t* corner = mesh_.begin(v); corner != mesh_.end(v); ++corner, ++sides) {
     for (const uint32_t u : {sides->previous, sides->next}) {
-      if (!decoded_[u] || std::find(searched, searched + neighbours, u) != searched + neighbours) continue;
+      if (!is_decoded(u) || std::find(searched, searched + neighbours, u) != searched + neighbours) continue;
       const uint32_t u_image = image_vertex_[first_[u]];
       if (u_image == GridPointTable::kNone) continue;
       if (neighbours == kMirrorNeighbours) return best != kNoneYet;
@@ -99,7 +98,7 @@ bool MirrorCandidates::find(uint32_t v, const uint32_t* q, const VertexPredictio
       const int corners = int(std::min<ptrdiff_t>(mesh_.end(u_image) - mesh_.begin(u_image), kMirrorCorners));
       for (int k = 0; k < corners; ++k)
         for (const uint32_t w : {around[k].previous, around[k].next}) {
-          if (!decoded_[w]) continue;
+          if (!is_decoded(w)) continue;
           const uint32_t* point = &q[3 * size_t(w)];
           int64_t c[3] = {point[0], point[1], point[2]};
           c[axis] = std::clamp<int64_t>(sum - c[axis], 0, top);
@@ -116,7 +115,6 @@ bool MirrorCandidates::find(uint32_t v, const uint32_t* q, const VertexPredictio
 }
 
 void MirrorCandidates::decoded(uint32_t v, const uint32_t* q) {
-  decoded_[v] = 1;
   const uint32_t* point = &q[3 * size_t(v)];
   const uint32_t first = first_at_.insert(point, v);
   if (first != GridPointTable::kNone) {  // a duplicate: its images are the first vertex's

@@ -60,16 +60,16 @@ class MirrorCandidates {
   void decoded(uint32_t v, const uint32_t* q);
 
  private:
+  bool is_decoded(uint32_t u) const { return first_[u] != GridPointTable::kNone; }
   // M(point) into out; false if it leaves the grid.
   bool image(const uint32_t* point, uint32_t out[3]) const;
   const VertexCorners& mesh_;
   MirrorPlane plane_;
   uint32_t top_[3];
-  std::vector<uint8_t> decoded_;
   GridPointTable first_at_;
-  // Per decoded vertex: the first vertex decoded at its point (itself, or
-  // one it duplicates), and for such a first vertex its image vertex once
-  // one is decoded (kNone before). Kept as vertices are decoded, so that a
+  // Per vertex: the first vertex decoded at its point (itself, or one it
+  // duplicates; kNone while it is not decoded), and for such a first vertex
+  // its image vertex once one is decoded (kNone before). Kept as vertices are decoded, so that a
   // search looks up no grid point: each image vertex is found once.
   std::vector<uint32_t> first_, image_vertex_;
 };
