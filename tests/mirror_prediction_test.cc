@@ -122,6 +122,37 @@ TEST(MirrorCandidate, EncoderWritesMethodNineOnMirroredMeshes) {
   EXPECT_LT(dc.quantization.method, 9);
 }
 
+// Points paired across x = 1500 / 2 (sum 1500) and a third as many unpaired
+// beyond the pairs up to x = 4095, so the plane is far from the middle of
+// the box (sum 4095): the search finds it from the pairs' sums, with every
+// column looked at (300 vertices) and with a sample of them (40,000).
+QuantizedPositions lopsided_mirror_grid(uint32_t pairs) {
+  QuantizedPositions grid;
+  grid.top = {4095, 4095, 4095};
+  uint64_t state = 12345;
+  const auto next = [&](uint32_t bound) {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return uint32_t((state >> 33) % bound);
+  };
+  for (uint32_t i = 0; i < pairs; ++i) {
+    const uint32_t x = next(700), y = next(4096), z = next(4096);
+    grid.q.insert(grid.q.end(), {x, y, z, 1500 - x, y, z});
+    if (i % 3 == 0) grid.q.insert(grid.q.end(), {1501 + next(2595), next(4096), next(4096)});
+  }
+  grid.q.insert(grid.q.end(), {4095, 0, 0});
+  return grid;
+}
+
+TEST(MirrorCandidate, SearchFindsAPlaneAwayFromTheMiddleOfTheBox) {
+  for (const uint32_t pairs : {129u, 17143u}) {
+    const QuantizedPositions grid = lopsided_mirror_grid(pairs);
+    MirrorPlane plane;
+    ASSERT_TRUE(find_mirror_plane(grid, &plane)) << pairs << " pairs";
+    EXPECT_EQ(plane.axis, 0);
+    EXPECT_EQ(plane.sum, 1500u);
+  }
+}
+
 // Any plane, those whose images leave the grid included, and any features:
 // what the encoder writes decodes to its integers.
 TEST(MirrorCandidate, RoundTripsEveryPlane) {

@@ -402,15 +402,70 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
       encode_visit(positions.q, positions.top.data(), visit, stats, choice, start, mask_contexts, mirror));
 }
 
-namespace {
-
-}  // namespace
-
 // find_mirror_plane's screen: every plane tried on about kMirrorScreen
 // vertices, those that map 1/16 of them onto vertices on about
-// kMirrorSample, the best of those on all (1/8 needed). A mesh without a
-// plane costs the table of its points and 15 x kMirrorScreen look-ups.
+// kMirrorSample, the best of those on all (1/8 needed, 1/16 below
+// kGradedStartBelow vertices). A mesh without a plane costs a table of its
+// points, one of (a sample of) its columns per axis, and 18 x kMirrorScreen
+// look-ups.
 constexpr uint32_t kMirrorScreen = 128, kMirrorSample = 1024, kMirroredShareDivisor = 8;
+
+namespace {
+
+// The sum q[axis] + q'[axis] most pairs of vertices make that are equal on
+// the other two axes (each vertex paired with the first one there): a
+// plane away from the middle of the bounding box, where a part on one side
+// of it sticks out further than its image (penguin_control_mesh's wings).
+// Above kPairedColumns vertices, only the columns (points of the other two
+// axes) of one hash class in n / kPairedColumns are looked at: a pair shares
+// its column, so the sample keeps whole pairs. False if no two vertices pair.
+constexpr uint32_t kPairedColumns = 4096;
+
+bool most_paired_sum(const QuantizedPositions& positions, int axis, uint32_t* sum) {
+  const uint32_t n = uint32_t(positions.q.size() / 3);
+  const uint32_t classes = std::max<uint32_t>(1, n / kPairedColumns);
+  const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+  std::vector<uint32_t> sampled;
+  for (uint32_t v = 0; v < n; ++v) {
+    const uint32_t* q = &positions.q[3 * size_t(v)];
+    if ((uint32_t(q[u] * 0x9E3779B1u ^ q[w] * 0x85EBCA77u) >> 16) % classes == 0) sampled.push_back(v);
+  }
+  GridPointTable columns(uint32_t(sampled.size()));
+  std::vector<uint32_t> sums;
+  for (const uint32_t v : sampled) {
+    const uint32_t* q = &positions.q[3 * size_t(v)];
+    uint32_t column[3] = {q[0], q[1], q[2]};
+    column[axis] = 0;
+    const uint32_t first = columns.insert(column, v);
+    if (first != GridPointTable::kNone) sums.push_back(positions.q[3 * size_t(first) + size_t(axis)] + q[axis]);
+  }
+  if (sums.empty()) return false;
+  std::sort(sums.begin(), sums.end());
+  size_t best = 0;
+  for (size_t i = 0, run = 0; i < sums.size(); i += run) {
+    run = size_t(std::upper_bound(sums.begin() + i, sums.end(), sums[i]) - (sums.begin() + i));
+    if (run > best) {
+      best = run;
+      *sum = sums[i];
+    }
+  }
+  return true;
+}
+
+// The planes find_mirror_plane screens on one axis: sums top - 2 .. top + 2
+// (a plane through the middle of the bounding box, rounded either way) and
+// the sum most pairs of vertices make.
+std::vector<uint32_t> candidate_sums(const QuantizedPositions& positions, int axis) {
+  const int64_t top = positions.top[size_t(axis)];
+  std::vector<uint32_t> sums;
+  for (int64_t sum = std::max<int64_t>(0, top - 2); sum <= top + 2; ++sum) sums.push_back(uint32_t(sum));
+  uint32_t paired = 0;
+  if (most_paired_sum(positions, axis, &paired) && std::find(sums.begin(), sums.end(), paired) == sums.end())
+    sums.push_back(paired);
+  return sums;
+}
+
+}  // namespace
 
 bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
@@ -435,9 +490,8 @@ bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane) 
   const uint32_t sample_stride = std::max<uint32_t>(1, n / kMirrorSample);
   uint32_t best = 0;
   for (int axis = 0; axis < 3; ++axis) {
-    const int64_t top = positions.top[size_t(axis)];
-    for (int64_t sum = std::max<int64_t>(0, top - 2); sum <= top + 2; ++sum) {
-      const MirrorPlane candidate{axis, uint32_t(sum)};
+    for (const uint32_t sum : candidate_sums(positions, axis)) {
+      const MirrorPlane candidate{axis, sum};
       if (hits(candidate, screen_stride) * 16 < screened) continue;
       const uint32_t count = hits(candidate, sample_stride);
       if (count > best) {
@@ -446,7 +500,10 @@ bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane) 
       }
     }
   }
-  return best > 0 && hits(*plane, 1) >= n / kMirroredShareDivisor;
+  // Under kGradedStartBelow vertices the encoder codes the positions without
+  // the plane too where it has few twins, so a plane of fewer is tried.
+  const uint32_t divisor = n < kGradedStartBelow ? 2 * kMirroredShareDivisor : kMirroredShareDivisor;
+  return best > 0 && hits(*plane, 1) >= n / divisor;
 }
 
 namespace {
