@@ -9,13 +9,12 @@
 #include <cstring>
 #include <vector>
 
+#include "attribute_checks.h"
 #include "conn_prefix.h"
 #include "decoder/attribute_decoder.h"
 #include "encoder/attribute_encoder.h"
 
 namespace {
-
-constexpr uint64_t kOutputLimit = uint64_t(64) << 20;
 
 bool same_corner_values(const qmc::MeshAttribute& a, const qmc::MeshAttribute& b) {
   if (a.corner_values.size() != b.corner_values.size() || a.components != b.components) return false;
@@ -38,20 +37,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   // Positions for coding 3's predictions (15.7): a fixed scatter of integers.
   std::vector<uint32_t> quantized(3 * size_t(vertex_count));
   for (size_t i = 0; i < quantized.size(); ++i) quantized[i] = uint32_t((i * 2654435761u) >> 7) & 0xFFFFF;
-  qmc::OutputBudget budget(kOutputLimit);
   qmc::MeshAttribute attribute;
   qmc::AttributeCoding coding;
-  bool skipped = false;
-  if (!qmc::decode_attribute(payload, length, mesh, vertex_count, quantized, {}, &budget, &attribute, &coding,
-                             &skipped)
-           .ok() ||
-      skipped)
+  if (!qmc::fuzz::decode_attribute_payload(payload, length, mesh, vertex_count, quantized, &attribute, &coding))
     return 0;
-  const size_t values = attribute.value_count();
-  if (attribute.values.size() != values * attribute.components) __builtin_trap();
-  if (attribute.corner_values.size() != mesh.corners.size()) __builtin_trap();
-  for (uint32_t m : attribute.corner_values)
-    if (m >= values) __builtin_trap();
+  if (!qmc::fuzz::well_formed(attribute, mesh)) __builtin_trap();
   if (coding.mapping == 0 && attribute.corner_values != mesh.corners) __builtin_trap();
 
   // Coded again, exactly, over the same faces.
@@ -65,12 +55,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::vector<uint32_t> file_vertex(vertex_count);  // the decoded mesh is its own input
   for (uint32_t v = 0; v < vertex_count; ++v) file_vertex[v] = v;
   if (!qmc::encode_attribute(attribute, mesh, file_vertex, {}, source, options, &again, &stats).ok()) __builtin_trap();
-  qmc::OutputBudget second_budget(kOutputLimit);
   qmc::MeshAttribute round_trip;
-  if (!qmc::decode_attribute(again.data(), again.size(), mesh, vertex_count, quantized, {}, &second_budget,
-                             &round_trip, &coding, &skipped)
-           .ok() ||
-      skipped || !same_corner_values(attribute, round_trip))
+  if (!qmc::fuzz::decode_attribute_payload(again.data(), again.size(), mesh, vertex_count, quantized, &round_trip,
+                                          &coding) ||
+      !same_corner_values(attribute, round_trip))
     __builtin_trap();
   return 0;
 }

@@ -163,7 +163,7 @@ int main(int argc, char** argv) {
   for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "polygon_connectivity", "polygon_coding7", "positions",
                         "predicted_positions", "geometry_order",
                         "huffman", "roundtrip", "order", "loop_levels", "gim_file", "gim_plane", "attributes", "face_labels",
-                        "predicted_mapping"})
+                        "predicted_mapping", "attribute_twins"})
     fs::create_directories(out / t);
   write_predicted_mapping_seeds(out / "predicted_mapping");
   int n = 0;
@@ -234,6 +234,7 @@ int main(int argc, char** argv) {
         seed.insert(seed.end(), conn.begin(), conn.end());
         seed.insert(seed.end(), payload, payload + length);
         write(out / "attributes" / (name + "_" + std::to_string(pos)), seed.data(), seed.size());
+        write(out / "attribute_twins" / (name + "_" + std::to_string(pos)), seed.data(), seed.size());
       }
       if (type == qmc::kChunkFaceLabels && length <= 0xFFFF) {  // face_labels input: u16le F, the payload
         qmc::ByteReader r(payload, length);

@@ -400,8 +400,13 @@ awk '/^v /{print; print "vt", $3, $4; next} /^f /{printf "f"; for (i = 2; i <= N
      print ""; next} {print}' "$work/t160.obj" >"$work/t160uv.obj"
 check encode-graded-start 0 "$qmc" encode "$work/t160uv.obj" "$work/t160uv.qmc"
 contains encode-graded-start-report "$work/out" "160 values, one per vertex, grid step [0-9.e-]*, graded start (spec 15.10)"
+contains encode-twins-report "$work/out" "graded start (spec 15.10), twins across the mirror plane (spec 15.14)"
 check info-graded-start 0 "$qmc" info "$work/t160uv.qmc"
-contains info-graded-start-coding "$work/out" "160 values, one per vertex, predicted on a grid, graded start;"
+# The torus is mirrored across x = 0: its values take 15.14's twins too (coding 9), which --format 1.11 leaves out.
+contains info-graded-start-coding "$work/out" "160 values, one per vertex, predicted on a grid, graded start, twins across the plane axis 0 sum 4095;"
+check encode-graded-start-1.11 0 "$qmc" encode --format 1.11 "$work/t160uv.obj" "$work/t160uv11.qmc"
+check info-graded-start-1.11 0 "$qmc" info "$work/t160uv11.qmc"
+contains info-graded-start-coding-1.11 "$work/out" "160 values, one per vertex, predicted on a grid, graded start;"
 check verify-graded-start 0 "$qmc" verify "$work/t160uv.obj" "$work/t160uv.qmc"
 check encode-graded-start-1.7 0 "$qmc" encode "$work/t160uv.obj" "$work/t160uv17.qmc" --format 1.7
 contains encode-graded-start-1.7-flat "$work/out" "160 values, one per vertex, grid step [0-9.e-]*; "

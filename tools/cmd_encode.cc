@@ -244,7 +244,8 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
 int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   EncodeOptions& o = args->options;
   if (args->newest_minor >= 12) return -1;
-  o.mirror_symmetry = false;  // POSN method 9 (14.10) came with 1.12
+  o.mirror_symmetry = false;  // POSN method 9 (14.10) came with 1.12,
+  o.attribute_twins = false;  // and aTTR coding 9 (15.14) after it
   if (args->newest_minor >= 11) return -1;
   o.triangle_twist = false;  // POSN method 8 (14.9) came with 1.11
   if (args->newest_minor >= 10) return -1;
@@ -477,7 +478,8 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
                                : ("grid step " + shortest_number(a.step) +
                                   (a.guided ? ", guided by the positions (spec 15.12)" : "") +
                                   (a.geometry_order ? ", geometry order (spec 15.9)" : "") +
-                                  (a.graded_start ? ", graded start (spec 15.10)" : ""))
+                                  (a.graded_start ? ", graded start (spec 15.10)" : "") +
+                                  (a.twins ? ", twins across the mirror plane (spec 15.14)" : ""))
                                      .c_str(),
                 static_cast<unsigned long long>(a.chunk_bytes), static_cast<unsigned long long>(a.mapping_bytes),
                 static_cast<unsigned long long>(a.value_bytes),

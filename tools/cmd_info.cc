@@ -80,6 +80,24 @@ void print_predicted_positions(const DecodedFile& f, bool decoded) {
   std::printf("\n");
 }
 
+
+// How an aTTR's values are coded (spec 15.4 - 15.14), in words.
+std::string attribute_coding_text(const AttributeCoding& c) {
+  if (c.coding == 1) return "exact binary32";
+  if (c.coding == 3) return "unit normals, octahedral";
+  if (c.coding == 8) return "unit normals, octahedral, faces weighted by angle";
+  const bool guided = c.coding == 7 || (c.coding == 9 && (c.options & 4));
+  const bool geometry = c.coding == 4 || c.coding == 6 || ((c.coding == 7 || c.coding == 9) && (c.options & 1));
+  const bool graded = c.coding == 5 || c.coding == 6 || ((c.coding == 7 || c.coding == 9) && (c.options & 2));
+  std::string text = "predicted on a grid";
+  if (guided) text += ", guided by the positions";
+  if (geometry) text += ", geometry order";
+  if (graded) text += ", graded start";
+  if (c.coding == 9)
+    text += ", twins across the plane axis " + std::to_string(c.mirror_axis) + " sum " + std::to_string(c.mirror_sum);
+  return text;
+}
+
 void print_text(const std::string& path, const DecodedFile& f, uint64_t size, const Status& status) {
   const double v = f.mesh.vertex_count() ? double(f.mesh.vertex_count()) : 1.0;
   std::printf("file         %s, %llu bytes, format %u.%u\n", path.c_str(), static_cast<unsigned long long>(size),
@@ -126,18 +144,7 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
                 a.components, a.value_count(), c.mapping == 0   ? "one per vertex"
                 : c.mapping == 3 ? "per corner, predicted from the faces"
                                  : "per corner",
-                c.coding == 0   ? "predicted on a grid"
-                : c.coding == 4 ? "predicted on a grid, geometry order"
-                : c.coding == 5 ? "predicted on a grid, graded start"
-                : c.coding == 6 ? "predicted on a grid, geometry order, graded start"
-                : c.coding == 3 ? "unit normals, octahedral"
-                : c.coding == 8 ? "unit normals, octahedral, faces weighted by angle"
-                : c.coding == 7 ? (c.options == 0   ? "predicted on a grid, guided by the positions"
-                                   : c.options == 1 ? "predicted on a grid, guided by the positions, geometry order"
-                                   : c.options == 2 ? "predicted on a grid, guided by the positions, graded start"
-                                                    : "predicted on a grid, guided by the positions, geometry order, "
-                                                      "graded start")
-                                : "exact binary32",
+                attribute_coding_text(c).c_str(),
                 static_cast<unsigned long long>(c.chunk_bytes),
                 a.value_count() ? 8.0 * double(c.chunk_bytes) / double(a.value_count()) : 0.0);
   }

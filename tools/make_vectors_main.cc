@@ -57,6 +57,7 @@ qmc::EncodeOptions format_1_6_options() {
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
+  options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   options.graded_class_start = false;
   options.geometry_order = false;
   options.quad_twist = false;
@@ -64,7 +65,6 @@ qmc::EncodeOptions format_1_6_options() {
   options.attribute_graded_start = false;
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
   options.attribute_guided = false;             // and coding 7 (15.12)
-  options.angle_weighted_normals = false;       // and coding 8 (15.13)
   options.angle_weighted_normals = false;       // and coding 8 (15.13)
   return options;
 }
@@ -2556,6 +2556,7 @@ std::vector<uint8_t> encode_posn_as_written(const Mesh& mesh, int method, int bi
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
+  options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   options.position_bits = bits;
   options.position_grid = grid;
   options.position_method = qmc::PositionMethod::kPredicted;
@@ -2704,6 +2705,7 @@ void write_posn4_vectors(VectorWriter* w) {
   keep.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   keep.triangle_twist = false;  // and method 8 (14.9)
   keep.mirror_symmetry = false;  // and method 9 (14.10)
+  keep.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   keep.keep_order = true;
   w->valid("valid_ordr_posn4_scrambled", encode_with(scrambled, keep, "scrambled method-4 sphere"), &scrambled);
   // 12.2: a progressive file's base mesh in method 4.
@@ -2760,6 +2762,7 @@ std::vector<uint8_t> encode_posn5(const Mesh& mesh, int bits) {
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
+  options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   options.position_bits = bits;
   options.position_method = qmc::PositionMethod::kPredicted;
   options.candidate_choice = qmc::CandidateChoice::kFewestBits;
@@ -2922,6 +2925,7 @@ void write_posn5_vectors(VectorWriter* w) {
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
+  options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   options.position_bits = 12;
   w->valid("valid_posn5_mixed_polygons", rewritten_as_method_5(encode_with(mixed, options, "mixed polygons")), &mixed);
   // 14.7's example, its labels kept by indexed connectivity.
@@ -2930,6 +2934,7 @@ void write_posn5_vectors(VectorWriter* w) {
   indexed.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   indexed.triangle_twist = false;  // and method 8 (14.9)
   indexed.mirror_symmetry = false;  // and method 9 (14.10)
+  indexed.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   indexed.position_bits = 4;
   indexed.connectivity = qmc::ConnectivityChoice::kIndexed;
   w->valid("valid_posn5_example", rewritten_as_method_5(encode_with(example, indexed, "14.7's example")), &example);
@@ -2954,6 +2959,7 @@ void write_posn5_vectors(VectorWriter* w) {
   attributes.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   attributes.triangle_twist = false;  // and method 8 (14.9)
   attributes.mirror_symmetry = false;  // and method 9 (14.10)
+  attributes.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   attributes.position_bits = 12;
   w->valid("valid_posn5_with_texcoords", encode_posn_method(textured, attributes, 5), &textured);
 
@@ -3006,6 +3012,7 @@ void write_posn6_vectors(VectorWriter* w) {
   qmc::EncodeOptions options;  // what `qmc encode` writes
   options.triangle_twist = false;  // but POSN method 8 (14.9) came after these vectors
   options.mirror_symmetry = false;  // and method 9 (14.10)
+  options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   options.position_bits = 16;
   // What the encoder writes where the contexts pay: terraces, where the
   // parallelograms across a cliff are far off and the others agree.
@@ -3108,6 +3115,7 @@ void write_posn8_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   qmc::EncodeOptions options;  // what `qmc encode` wrote before method 9 (14.10)
   options.mirror_symmetry = false;
+  options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   // Spec 14.9's example, written as method 8 with the twist of triangles.
   const Mesh hexagon = twist_hexagon();
   qmc::EncodeOptions unit = options;
@@ -3133,6 +3141,7 @@ void write_posn8_vectors(VectorWriter* w) {
   qmc::EncodeOptions no_twist = options;
   no_twist.triangle_twist = false;
   no_twist.mirror_symmetry = false;  // and method 9 (14.10)
+  no_twist.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   const std::vector<uint8_t> small_file = encode_with(small, no_twist, "small sphere");
   {
     Chunks c = split_chunks(small_file);
@@ -3292,7 +3301,8 @@ Posn9Fields posn9_fields(const std::vector<uint8_t>& payload, size_t vertex_coun
 
 void write_posn9_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
-  qmc::EncodeOptions options;  // what `qmc encode` writes
+  qmc::EncodeOptions options;  // what `qmc encode` wrote
+  options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   // Spec 14.10's example, on the integers as given.
   const Mesh kite = mirror_kite();
   qmc::EncodeOptions unit = options;
@@ -3398,6 +3408,7 @@ std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, 
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
+  options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   options.geometry_order = posn_geometry_order;
   options.attribute_graded_start = false;  // codings 5 and 6 came after these vectors
   options.attribute_predicted_mapping = false;  // and mapping 3 (15.11)
@@ -3496,6 +3507,7 @@ void write_attribute_coding56_vectors(VectorWriter* w) {
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
+  options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
   options.attribute_guided = false;             // and coding 7 (15.12)
   options.angle_weighted_normals = false;       // and coding 8 (15.13)
@@ -3578,19 +3590,25 @@ class AttributeChunk {
   size_t at_;
 };
 
-// Section 15.12: aTTR coding 7, what `qmc encode` writes where guiding by the
-// positions is the smaller; the generator fails on another coding or options.
-std::vector<uint8_t> encode_coding7(const Mesh& mesh, const qmc::EncodeOptions& options, uint8_t expected_options,
-                                    const char* what) {
-  const std::vector<uint8_t> out = encode_attribute_coding(mesh, options, 7, what);
+// Sections 15.12 and 15.14: aTTR coding 7 or 9, what `qmc encode` writes
+// where guiding by the positions, or twins, are the smaller; the generator
+// fails on another coding or options.
+std::vector<uint8_t> encode_coding_with_options(const Mesh& mesh, const qmc::EncodeOptions& options, uint8_t coding,
+                                                uint8_t expected_options, const char* what) {
+  const std::vector<uint8_t> out = encode_attribute_coding(mesh, options, coding, what);
   qmc::DecodedFile file;
   (void)qmc::decode(out.data(), out.size(), &file);
   if (file.attribute_codings[0].options != expected_options) {
-    std::fprintf(stderr, "qmc-make-vectors: %s: coding 7 with options %u, not %u\n", what,
+    std::fprintf(stderr, "qmc-make-vectors: %s: coding %u with options %u, not %u\n", what, unsigned(coding),
                  unsigned(file.attribute_codings[0].options), unsigned(expected_options));
     std::exit(3);
   }
   return out;
+}
+
+std::vector<uint8_t> encode_coding7(const Mesh& mesh, const qmc::EncodeOptions& options, uint8_t expected_options,
+                                    const char* what) {
+  return encode_coding_with_options(mesh, options, 7, expected_options, what);
 }
 
 // A bumpy grid of nx x ny quads (or their triangles) whose vertices are moved in the plane by up
@@ -3684,6 +3702,7 @@ std::vector<uint8_t> coding7_over_soup() {
   o.repeated_corners = false;
   qmc::EncodeOptions options;
   options.mirror_symmetry = false;  // the positions as the vector was first made (method 3)
+  options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   const std::vector<uint8_t> plain = encode_with(qmc::tools::make_random_soup(13, o), options, "soup");
   qmc::DecodedFile d;
   (void)qmc::decode(plain.data(), plain.size(), &d);
@@ -3724,6 +3743,7 @@ void write_attribute_coding7_vectors(VectorWriter* w) {
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
+  options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   const std::vector<uint8_t> both = encode_coding7(textured, options, 1, "coding 7 texcoords");
   w->valid("valid_attr_coding7_texcoords", both, &textured);
   qmc::EncodeOptions labels = options;
@@ -3768,6 +3788,154 @@ void write_attribute_coding7_vectors(VectorWriter* w) {
   std::vector<uint8_t> three = payload;
   three[attr_field_offsets(payload).components] = 3;
   w->invalid("invalid_attr_coding7_three_components", chunk.with(three), ErrorCode::kBadChunkPayload);
+}
+
+// Section 15.14: aTTR coding 9 written by hand over a file's CONN and POSN
+// (mapping 0, C = 2 on a grid of step 1 from the origin): the options, the
+// plane and the values' integers q (3 per vertex) as given.
+std::vector<uint8_t> coding9_by_hand(const std::vector<uint8_t>& plain, uint8_t options, qmc::MirrorPlane plane,
+                                     const std::vector<uint32_t>& q, const uint32_t top[3]) {
+  qmc::DecodedFile d;
+  if (qmc::Status s = qmc::decode(plain.data(), plain.size(), &d); !s.ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: coding 9 by hand: %s\n", s.to_string().c_str());
+    std::exit(3);
+  }
+  const uint32_t n = uint32_t(d.mesh.vertex_count());
+  const qmc::AttributeTwins twins{plane, &d.mesh, d.quantized.data(), n};
+  qmc::PositionGuide guide;
+  guide.vertex_of_corner = d.mesh.corners.data();
+  guide.positions = d.quantized.data();
+  const std::vector<uint8_t> stream = qmc::encode_predicted_grid(
+      q, top, d.mesh, nullptr, qmc::CandidateChoice::kFewestBits,
+      options & 2 ? qmc::ClassStart::kGraded : qmc::ClassStart::kFlat,
+      options & 1 ? qmc::PredictionOrder::kGeometry : qmc::PredictionOrder::kLabels, options & 4 ? &guide : nullptr,
+      false, false, false, &twins);
+  AttrFields f;  // "uv", a texture coordinate of 2 components
+  f.vertices = f.values = n;
+  f.corners = d.mesh.corners.size();
+  f.mapping = 0;
+  f.coding = 9;
+  qmc::put_u8(&f.rest, options);
+  qmc::put_u8(&f.rest, uint8_t(plane.axis));
+  qmc::put_varint(&f.rest, plane.sum);
+  qmc::put_u8(&f.rest, 0);  // grid 0
+  qmc::put_f32le(&f.rest, 0.0f);
+  qmc::put_f32le(&f.rest, 0.0f);
+  qmc::put_f64le(&f.rest, 1.0);
+  qmc::put_varint(&f.rest, top[0]);
+  qmc::put_varint(&f.rest, top[1]);
+  f.rest.insert(f.rest.end(), stream.begin(), stream.end());
+  return with_chunk_before(plain, qmc::kChunkEnd, qmc::kChunkAttribute, attr_payload(f));
+}
+
+// The fan of 15.14's example, positions on integers (step 1 from (0, 0, 0)),
+// written with its faces and labels as given; vertex 4 at (4, 1, dz).
+std::vector<uint8_t> twins_example_file(uint32_t dz) {
+  Mesh fan;
+  fan.positions = {2, 0, 0, 1, 3, 0, 0, 1, 0, 3, 3, 0, 4, 1, float(dz)};
+  fan.face_sizes = {3, 3, 3};
+  fan.corners = {0, 1, 2, 0, 3, 1, 0, 4, 3};
+  qmc::EncodeOptions unit = format_1_6_options();
+  unit.connectivity = qmc::ConnectivityChoice::kIndexed;
+  unit.position_step = 1;
+  const std::vector<uint8_t> file = encode_with(fan, unit, "twins example");
+  qmc::DecodedFile d;
+  (void)qmc::decode(file.data(), file.size(), &d);
+  const std::vector<uint32_t> expected = {2, 0, 0, 1, 3, 0, 0, 1, 0, 3, 3, 0, 4, 1, dz};
+  if (d.quantized != expected || d.mesh.corners != fan.corners) {
+    std::fprintf(stderr, "qmc-make-vectors: the twins example's labels or integers moved\n");
+    std::exit(3);
+  }
+  return file;
+}
+
+std::vector<uint8_t> encode_coding9(const Mesh& mesh, const qmc::EncodeOptions& options, uint8_t expected_options,
+                                    const char* what) {
+  return encode_coding_with_options(mesh, options, 9, expected_options, what);
+}
+
+// One attribute per vertex of `components` numbers on a mirrored mesh:
+// (x, y, z)'s first components with x as |x| (a copy across the plane, not
+// a flip), kind colour for 3.
+Mesh with_vertex_attribute(Mesh mesh, uint32_t components) {
+  MeshAttribute a{components == 3 ? "colour" : "weight",
+                  components == 3 ? qmc::AttributeKind::kColour : qmc::AttributeKind::kGeneric, components, {}, {}};
+  for (size_t v = 0; v < mesh.vertex_count(); ++v)
+    for (uint32_t j = 0; j < components; ++j)
+      a.values.push_back(j == 0 ? std::fabs(mesh.positions[3 * v]) : mesh.positions[3 * v + j]);
+  a.corner_values = mesh.corners;
+  mesh.attributes.push_back(std::move(a));
+  return mesh;
+}
+
+void write_attribute_coding9_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  using namespace qmc::tools;
+  // Spec 15.14's example, its twin one step from the image, and a plane without twins.
+  const uint32_t top[3] = {15, 6, 0};
+  const std::vector<uint32_t> q = {10, 0, 0, 8, 6, 0, 5, 2, 0, 12, 6, 0, 15, 2, 0};
+  w->valid("valid_attr_coding9_example", coding9_by_hand(twins_example_file(0), 0, {0, 4}, q, top), nullptr);
+  w->valid("valid_attr_coding9_twin_a_step_away", coding9_by_hand(twins_example_file(1), 0, {0, 4}, q, top),
+           nullptr);
+  w->valid("valid_attr_coding9_no_twins", coding9_by_hand(twins_example_file(0), 0, {1, 40}, q, top), nullptr);
+  w->valid("valid_attr_coding9_options_7", coding9_by_hand(twins_example_file(0), 7, {0, 4}, q, top), nullptr);
+  // What the encoder writes: mirrored texture coordinates with seams on a
+  // sphere of triangles and a torus of quads; over POSN method 0; a colour
+  // and a one-component value per vertex.
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  Mesh sphere = make_mirrored_across_x(triangulated(make_refined_sphere(3)));
+  add_mirrored_texcoords(&sphere, 16, 5);
+  const std::vector<uint8_t> texcoords = encode_coding9(sphere, options, 0, "coding 9 texcoords");
+  w->valid("valid_attr_coding9_texcoords", texcoords, &sphere);
+  Mesh small = make_mirrored_across_x(triangulated(make_refined_sphere(2)));
+  add_mirrored_texcoords(&small, 8, 7);
+  w->valid("valid_attr_coding9_small", encode_coding9(small, options, 4, "coding 9, a small table"), &small);
+  Mesh quads = make_mirrored_across_x(make_torus(16, 8));
+  add_mirrored_texcoords(&quads, 12, 6);
+  w->valid("valid_attr_coding9_quads", encode_coding9(quads, options, 6, "coding 9 on quads"), &quads);
+  qmc::EncodeOptions over_posn0 = options;
+  over_posn0.position_method = qmc::PositionMethod::kDeltas;
+  over_posn0.position_grid = qmc::PositionGrid::kPerAxis;
+  w->valid("valid_attr_coding9_over_posn0", encode_coding9(sphere, over_posn0, 0, "coding 9 over method 0"), &sphere);
+  const Mesh colours = with_vertex_attribute(make_mirrored_across_x(triangulated(make_refined_sphere(2))), 3);
+  const std::vector<uint8_t> coloured = encode_coding9(colours, options, 3, "coding 9 colours");
+  w->valid("valid_attr_coding9_colours", coloured, &colours);
+  const Mesh weights = with_vertex_attribute(make_mirrored_across_x(triangulated(make_refined_sphere(2))), 1);
+  w->valid("valid_attr_coding9_one_component", encode_coding9(weights, options, 3, "coding 9 weights"), &weights);
+
+  // 15.14's rules, on the texture coordinates' chunk: options, plane, then 15.4's.
+  const AttributeChunk chunk(texcoords);
+  const std::vector<uint8_t>& payload = chunk.payload();
+  const size_t at = values_offset(payload);  // options, axis, sum
+  std::vector<uint8_t> bit_3 = payload;
+  bit_3[at] |= 8;
+  w->invalid("invalid_attr_coding9_option_bit_3", chunk.with(bit_3), ErrorCode::kBadChunkPayload);
+  std::vector<uint8_t> guided_three = payload;
+  guided_three[at] |= 4;
+  guided_three[attr_field_offsets(payload).components] = 3;
+  w->invalid("invalid_attr_coding9_guided_three_components", chunk.with(guided_three), ErrorCode::kBadChunkPayload);
+  std::vector<uint8_t> axis_3 = payload;
+  axis_3[at + 1] = 3;
+  w->invalid("invalid_attr_coding9_axis_3", chunk.with(axis_3), ErrorCode::kBadChunkPayload);
+  qmc::ByteReader sum_reader(payload.data() + at + 2, payload.size() - at - 2);
+  uint64_t sum = 0;
+  sum_reader.get_varint(&sum);
+  const size_t after_sum = at + 2 + sum_reader.position();
+  std::vector<uint8_t> big_sum(payload.begin(), payload.begin() + std::ptrdiff_t(at + 2));
+  qmc::put_varint(&big_sum, uint64_t(1) << 31);
+  big_sum.insert(big_sum.end(), payload.begin() + std::ptrdiff_t(after_sum), payload.end());
+  w->invalid("invalid_attr_coding9_sum_2_31", chunk.with(big_sum), ErrorCode::kBadChunkPayload);
+  // The colours' chunk, whose values are few enough for 15.1 check 8 with an options byte alone.
+  const AttributeChunk colour_chunk(coloured);
+  const std::vector<uint8_t>& colour_payload = colour_chunk.payload();
+  const size_t colour_at = values_offset(colour_payload);
+  w->invalid("invalid_attr_coding9_no_plane",
+             colour_chunk.with({colour_payload.begin(), colour_payload.begin() + std::ptrdiff_t(colour_at + 1)}),
+             ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_attr_coding9_truncated", chunk.with({payload.begin(), payload.end() - 8}),
+             ErrorCode::kTruncated);
+  w->invalid("invalid_attr_coding9_value_outside_grid", chunk.with(with_tops_of_one(payload, after_sum - at)),
+             ErrorCode::kBadSymbol);
 }
 
 // Unit normals weighting each face by its angle at the vertex (15.13's
@@ -3821,6 +3989,7 @@ void write_attribute_coding8_vectors(VectorWriter* w) {
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
+  options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   // A bumpy grid of irregular triangles, and of quads, and the triangles with a crease.
   Mesh triangles = jittered_textured_grid(12, 12, 99, true);
   triangles.attributes.clear();
@@ -3910,6 +4079,7 @@ void write_attribute_mapping3_vectors(VectorWriter* w) {
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
+  options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
   options.attribute_guided = false;  // coding 7 (15.12) came after these vectors
   options.angle_weighted_normals = false;  // and coding 8 (15.13)
   options.quad_twist = false;              // and POSN method 5 (14.7)
@@ -4005,6 +4175,7 @@ int main(int argc, char** argv) {
   write_attribute_mapping3_vectors(&w);
   write_attribute_coding7_vectors(&w);
   write_attribute_coding8_vectors(&w);
+  write_attribute_coding9_vectors(&w);
   write_posn5_vectors(&w);
   write_posn6_vectors(&w);
   write_posn8_vectors(&w);

@@ -93,14 +93,18 @@ struct AttributeCoding {
   uint8_t mapping = 0;  // 0 per vertex, 1 per corner (15.3), 3 per corner predicted from the faces (15.11)
   uint8_t coding = 0;   // 0 predicted on a grid (15.4), 1 exact binary32 (15.5), 3 octahedral normals (15.7),
                         // 4 as 0 in the geometry order (15.9), 5 and 6 as 0 and 4 with a graded start (15.10),
-                        // 7 guided by the positions (15.12), 8 as 3 with angle weights (15.13)
-  uint8_t options = 0;  // coding 7: bit 0 the geometry order, bit 1 the graded start (15.12)
-  std::array<float, 3> origin{};   // codings 0 and 4 - 7: value = origin + q x step, per component
+                        // 7 guided by the positions (15.12), 8 as 3 with angle weights (15.13),
+                        // 9 with twins across a mirror plane (15.14)
+  uint8_t options = 0;  // codings 7 and 9: bit 0 the geometry order, bit 1 the graded start (15.12);
+                        // coding 9: bit 2 the guided rule (15.14)
+  int mirror_axis = -1;    // coding 9: the plane of the positions' grid (15.14); -1 otherwise
+  uint32_t mirror_sum = 0;
+  std::array<float, 3> origin{};   // codings 0, 4 - 7 and 9: value = origin + q x step, per component
   std::array<double, 3> step{};
   std::array<uint32_t, 3> top{};   // coding 3: 2^B - 1 twice, then 0
   uint64_t chunk_bytes = 0;  // the aTTR chunk, header and CRC included
-  // Codings 0 and 4 - 7: values on the grid of origin, step and top.
-  bool on_grid() const { return coding == 0 || (coding >= 4 && coding <= 7); }
+  // Codings 0, 4 - 7 and 9: values on the grid of origin, step and top.
+  bool on_grid() const { return coding == 0 || (coding >= 4 && coding <= 7) || coding == 9; }
   // Codings 3 and 8: unit normals on the octahedral grid of top[0] + 1 points a side.
   bool octahedral() const { return coding == 3 || coding == 8; }
 };

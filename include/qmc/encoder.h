@@ -160,6 +160,14 @@ struct EncodeOptions {
   // normals ~15 % smaller. Decoders of the revisions before it skip such an
   // attribute; false keeps coding 3.
   bool angle_weighted_normals = true;
+  // Values on a grid may take aTTR coding 9 (spec 15.14: a value whose
+  // vertex has a mirror twin across a plane of the positions predicted by
+  // the twin's value, flipped where the values around the two say so)
+  // where that is smaller: the texture coordinates of meshes modelled with
+  // a mirror. The plane is POSN method 9's, else one found as for it.
+  // Decoders of the revisions before it skip such an attribute; false keeps
+  // codings 0 and 4 - 7.
+  bool attribute_twins = true;
   std::vector<std::string> texts;            // written as teXt chunks ("key=value")
   // Write an oRDR chunk (section 4.5) so that the decoder restores the
   // input's order of vertices, faces and corners exactly; nothing is
@@ -274,7 +282,8 @@ struct AttributeStats {
   bool angle_weighted = false;   // coding 8: predicted with the faces weighted by angle (15.13)
   bool geometry_order = false;   // coding 4 or 6, or 7 with option 1: the values in 14.6's order (15.9)
   bool graded_start = false;     // coding 5 or 6, or 7 with option 2: the class probabilities start as 14.4.1
-  bool guided = false;           // coding 7: guided by the positions (15.12)
+  bool guided = false;           // coding 7, or 9 with option 4: guided by the positions (15.12)
+  bool twins = false;            // coding 9: twin candidates across a mirror plane (15.14)
   uint32_t value_count = 0;
   double step = 0;               // the grid's step (codings 0, 4, 5, 6); coding 3: 2 / (2^B - 1)
   uint64_t mapping_bytes = 0, value_bytes = 0;  // the mapping stream; the values (grid fields included)

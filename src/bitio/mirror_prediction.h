@@ -47,17 +47,27 @@ class GridPointTable {
   uint64_t key_ = 0;
 };
 
+// Where a vertex (or value) may take one candidate besides 14.3's, decided
+// by 14.10's "the mirror candidate is used": POSN method 9's (14.10,
+// MirrorCandidates) or aTTR coding 9's (15.14, ValueTwins).
+class MirrorSource {
+ public:
+  virtual ~MirrorSource() = default;
+  // The candidate of item v (its prediction p selected with every
+  // candidate, so that p.value is the reference), clamped to the grid, in
+  // out; false if v has none. q: 3 integers per item, those of the items
+  // decoded() so far meaningful.
+  virtual bool find(uint32_t v, const uint32_t* q, const VertexPrediction& p, int64_t out[3]) const = 0;
+  // After v's integers q[3 v ..] are known.
+  virtual void decoded(uint32_t v, const uint32_t* q) = 0;
+};
+
 // 14.10's search, shared by the encoder and the decoder.
-class MirrorCandidates {
+class MirrorCandidates final : public MirrorSource {
  public:
   MirrorCandidates(const VertexCorners& mesh, MirrorPlane plane, const uint32_t top[3]);
-  // The mirror candidate of vertex v (its prediction p selected with every
-  // candidate, so that p.value is 14.10's reference), clamped to the grid,
-  // in out; false if v has none. q: 3 integers per vertex, those of the
-  // vertices decoded() so far meaningful.
-  bool find(uint32_t v, const uint32_t* q, const VertexPrediction& p, int64_t out[3]) const;
-  // After v's integers q[3 v ..] are known.
-  void decoded(uint32_t v, const uint32_t* q);
+  bool find(uint32_t v, const uint32_t* q, const VertexPrediction& p, int64_t out[3]) const override;
+  void decoded(uint32_t v, const uint32_t* q) override;
 
  private:
   bool is_decoded(uint32_t u) const { return first_[u] != GridPointTable::kNone; }

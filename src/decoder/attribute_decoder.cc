@@ -27,8 +27,11 @@ constexpr uint8_t kCodingExact = 1, kCodingOctahedral = 3, kCodingGeometryOrder 
 constexpr uint8_t kCodingGridGraded = 5, kCodingGeometryOrderGraded = 6;  // 15.10
 constexpr uint8_t kCodingGuided = 7;                                       // 15.12
 constexpr uint8_t kCodingAngleWeighted = 8;                                // 15.13
+constexpr uint8_t kCodingTwins = 9;                                        // 15.14
 // 15.12's options: the geometry order, the graded start; other bits are 0.
+// 15.14's add the guided rule.
 constexpr uint8_t kGuidedGeometryOrder = 1, kGuidedGradedStart = 2, kGuidedOptionBits = 3;
+constexpr uint8_t kTwinsGuided = 4, kTwinsOptionBits = 7;
 // 15.1: coding 2 stays unassigned (the vector valid_attr_unknown_coding_skipped uses it).
 constexpr uint8_t kCodingUnassigned = 2;
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
@@ -81,7 +84,7 @@ Status read_sizes(ByteReader* in, uint32_t vertex_count, Header* h, bool* skippe
     return bad(*h, "value_count " + std::to_string(h->value_count) + " is not V = " + std::to_string(vertex_count) +
                        " with mapping 0");
   if (!in->get_u8(&h->coding)) return bad(*h, "coding missing");
-  if (h->coding > kCodingAngleWeighted || h->coding == kCodingUnassigned) {  // 15.1 check 6
+  if (h->coding > kCodingTwins || h->coding == kCodingUnassigned) {  // 15.1 check 6
     *skipped = true;
     return Status::Ok();
   }
@@ -176,11 +179,28 @@ Status read_grid(ByteReader* in, const Header& h, float origin[3], double step[3
   return Status::Ok();
 }
 
-// Sections 15.4, 15.9, 15.10 and 15.12: the values predicted over the
+// Section 15.14: coding 9's options and mirror plane (before the grid).
+Status read_twin_fields(ByteReader* in, const Header& h, uint8_t* options, MirrorPlane* plane) {
+  if (!in->get_u8(options) || *options > kTwinsOptionBits)
+    return bad(h, "options missing or with a bit of 3..7 set", "15.14");
+  if ((*options & kTwinsGuided) && h.components != 2)
+    return bad(h, "option bit 2 (the guided rule) with " + std::to_string(h.components) + " components, not 2",
+               "15.14");
+  uint8_t axis = 0;
+  uint64_t sum = 0;
+  if (!in->get_u8(&axis) || axis > 2) return bad(h, "mirror axis missing or above 2", "15.14");
+  if (!in->get_varint(&sum) || sum > (uint64_t(1) << 31) - 1)
+    return bad(h, "mirror sum missing, malformed or above 2^31 - 1", "15.14");
+  *plane = MirrorPlane{axis, uint32_t(sum)};
+  return Status::Ok();
+}
+
+// Sections 15.4, 15.9, 15.10, 15.12 and 15.14: the values predicted over the
 // attribute mesh, in label order (codings 0 and 5) or 14.6's geometry order
 // (codings 4 and 6), the class probabilities starting at 1024 (0, 4) or as
 // 14.4.1 (5, 6); coding 7 says both in its options and is guided by the
-// positions (q by CONN label, as 15.7 takes them).
+// positions (q by CONN label, as 15.7 takes them); coding 9 says all three
+// and adds the twin candidate.
 Status decode_grid_values(ByteReader* in, const Header& h, const Mesh& faces, const std::vector<uint32_t>& m,
                           const std::vector<uint32_t>& positions, AttributeCoding* coding, std::vector<float>* values) {
   float* origin = coding->origin.data();
@@ -189,24 +209,35 @@ Status decode_grid_values(ByteReader* in, const Header& h, const Mesh& faces, co
   uint8_t options = 0;
   if (h.coding == kCodingGuided && (!in->get_u8(&options) || options > kGuidedOptionBits))
     return bad(h, "options missing or with a bit of 2..7 set", "15.12");
+  AttributeTwins twins;
+  if (h.coding == kCodingTwins)
+    if (Status s = read_twin_fields(in, h, &options, &twins.plane); !s.ok()) return s;
   coding->options = options;
+  coding->mirror_axis = h.coding == kCodingTwins ? twins.plane.axis : -1;
+  coding->mirror_sum = twins.plane.sum;
   if (Status s = read_grid(in, h, origin, step, top); !s.ok()) return s;
   Mesh attribute_mesh;
   attribute_mesh.face_sizes = faces.face_sizes;
   attribute_mesh.corners = m;
   std::vector<uint32_t> q;
   const PredictedGridNames names{h.label, "value", "values", "component"};
+  // Codings 7 and 9 share the options' bits 0 and 1.
   const bool geometry = h.coding == kCodingGeometryOrder || h.coding == kCodingGeometryOrderGraded ||
                         (options & kGuidedGeometryOrder);
   const bool graded = h.coding == kCodingGridGraded || h.coding == kCodingGeometryOrderGraded ||
                       (options & kGuidedGradedStart);
+  const bool guided = h.coding == kCodingGuided || (h.coding == kCodingTwins && (options & kTwinsGuided));
   PositionGuide guide;
   guide.vertex_of_corner = faces.corners.data();
   guide.positions = positions.data();
+  twins.faces = &faces;
+  twins.positions = positions.data();
+  twins.vertex_count = uint32_t(positions.size() / 3);  // POSN's integers of CONN's V vertices (4.2: POSN came first)
   if (Status s = decode_predicted_grid(in->cursor(), in->remaining(), attribute_mesh, uint32_t(h.value_count), top,
                                        names, &q, graded ? ClassStart::kGraded : ClassStart::kFlat,
                                        geometry ? PredictionOrder::kGeometry : PredictionOrder::kLabels,
-                                       h.coding == kCodingGuided ? &guide : nullptr);
+                                       guided ? &guide : nullptr, false, false, false, nullptr,
+                                       h.coding == kCodingTwins ? &twins : nullptr);
       !s.ok())
     return s;
   const size_t c = h.components;

@@ -211,7 +211,7 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
 // has a mirror candidate, the decision whether it is used, and if it is,
 // the residuals against it (*used then true; no mask is decoded).
 Status decode_mirrored(RangeDecoder* rc, PositionResidualModel* model, const PredictedGridNames& names,
-                       const MirrorCandidates& mirrors, uint32_t vertex, uint32_t i, const uint32_t* top,
+                       const MirrorSource& mirrors, uint32_t vertex, uint32_t i, const uint32_t* top,
                        VertexPrediction* p, uint32_t* q, uint32_t* activity, bool* used) {
   *used = false;
   select_candidates(p, (1u << p->candidates) - 1, top);  // the reference: every candidate
@@ -234,7 +234,8 @@ Status decode_mirrored(RangeDecoder* rc, PositionResidualModel* model, const Pre
 Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& faces, uint32_t count,
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
                              ClassStart start, PredictionOrder order, const PositionGuide* guide, bool quad_twist,
-                             bool mask_contexts, bool triangle_twist, const MirrorPlane* mirror) {
+                             bool mask_contexts, bool triangle_twist, const MirrorPlane* mirror,
+                             const AttributeTwins* twins) {
   if (!range_stream_justifies(count, size))  // section 14.1, before anything is reserved
     return Status(ErrorCode::kLimitExceeded, names.chunk + ": " + std::to_string(count) + " " + names.items +
                                                  " for " + std::to_string(size) +
@@ -253,8 +254,9 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   if (rc.bad_start())
     return Status(ErrorCode::kBadChunkPayload,
                   names.chunk + ": the range coder's first four bytes are 0xFFFFFFFF (section 13.5.2)");
-  std::unique_ptr<MirrorCandidates> mirrors;
+  std::unique_ptr<MirrorSource> mirrors;
   if (mirror) mirrors = std::make_unique<MirrorCandidates>(corners, *mirror, top);
+  if (twins) mirrors = std::make_unique<ValueTwins>(corners, *twins, top);
   VertexPrediction p;
   for (uint32_t i = 0; i < count; ++i) {
     const uint32_t v = visit.item(i);

@@ -9,6 +9,7 @@
 #include "bitio/position_coding.h"
 #include "bitio/geometry_order.h"
 #include "bitio/mirror_prediction.h"
+#include "bitio/value_twins.h"
 #include "qmc/decoder.h"
 #include "qmc/status.h"
 
@@ -36,13 +37,14 @@ struct PredictedGridNames {
 // (geometry order only), POSN method 5's twist of quads (14.7); with
 // mask_contexts, methods 6 and 7's contexts of the candidate decisions (14.8);
 // with triangle_twist (geometry order only), method 8's triangle twist (14.9);
-// with a mirror plane (geometry order only), method 9's mirror candidate (14.10).
+// with a mirror plane (geometry order only), method 9's mirror candidate (14.10);
+// with twins, aTTR coding 9's twin candidate (15.14).
 Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& faces, uint32_t count,
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
                              ClassStart start = ClassStart::kFlat, PredictionOrder order = PredictionOrder::kLabels,
                              const PositionGuide* guide = nullptr, bool quad_twist = false,
                              bool mask_contexts = false, bool triangle_twist = false,
-                             const MirrorPlane* mirror = nullptr);
+                             const MirrorPlane* mirror = nullptr, const AttributeTwins* twins = nullptr);
 
 // Sections 6.4 and 14.1: per axis, the binary64 min and step of x = min + q * step.
 void dequantization_steps(const QuantizationInfo& info, double lo[3], double step[3]);

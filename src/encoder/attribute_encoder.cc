@@ -24,7 +24,9 @@ constexpr uint8_t kCodingGrid = 0, kCodingExact = 1, kCodingOctahedral = 3, kCod
 constexpr uint8_t kCodingGridGraded = 5, kCodingGeometryOrderGraded = 6;  // 15.10
 constexpr uint8_t kCodingGuided = 7;                                       // 15.12
 constexpr uint8_t kCodingAngleWeighted = 8;                                // 15.13
+constexpr uint8_t kCodingTwins = 9;                                        // 15.14
 constexpr uint8_t kGuidedGeometryOrder = 1, kGuidedGradedStart = 2;        // 15.12's options
+constexpr uint8_t kTwinsGuided = 4;                                        // 15.14's third option
 // 15.8: normals within this of unit length take coding 3.
 constexpr double kUnitTolerance = 1e-3;
 constexpr uint32_t kNone = UINT32_MAX;
@@ -122,10 +124,13 @@ std::vector<uint8_t> encode_predicted_mapping(const std::vector<uint32_t>& m, co
 // order (coding 4, 15.9), under kGradedStartBelow values 14.4.1's start
 // (codings 5 and 6, 15.10; from there on the winner's graded start alone),
 // and with a guide the same guided by the positions (coding 7, 15.12, its
-// options byte counted), the lowest coding on a tie; *coding says which.
+// options byte counted), the lowest coding on a tie; with twins, the
+// winner's order, start and guide with 15.14's twin candidates too (coding
+// 9, its options and plane counted), where smaller; *coding says which.
 std::vector<uint8_t> encode_grid_values(const std::vector<float>& table, uint32_t c, int bits, const Mesh& mesh,
                                         bool geometry_order_allowed, bool graded_start_allowed,
-                                        const PositionGuide* guide, double* step_out, uint8_t* coding) {
+                                        const PositionGuide* guide, const AttributeTwins* twins, double* step_out,
+                                        uint8_t* coding) {
   const size_t n = table.size() / c;
   float lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
   for (uint32_t a = 0; a < c; ++a) {
@@ -194,6 +199,26 @@ std::vector<uint8_t> encode_grid_values(const std::vector<float>& table, uint32_
       keep_if_smaller(kCodingGeometryOrderGraded, ClassStart::kGraded, PredictionOrder::kGeometry, nullptr);
     else
       keep_if_smaller(kCodingGridGraded, ClassStart::kGraded, PredictionOrder::kLabels, nullptr);
+  }
+  if (twins) {
+    const bool guided = *coding == kCodingGuided;
+    const bool geometry = guided ? (options & kGuidedGeometryOrder) != 0
+                                 : *coding == kCodingGeometryOrder || *coding == kCodingGeometryOrderGraded;
+    const bool graded = guided ? (options & kGuidedGradedStart) != 0
+                               : *coding == kCodingGridGraded || *coding == kCodingGeometryOrderGraded;
+    std::vector<uint8_t> twinned = encode_predicted_grid(
+        q, top, mesh, nullptr, CandidateChoice::kFewestBits, graded ? ClassStart::kGraded : ClassStart::kFlat,
+        geometry ? PredictionOrder::kGeometry : PredictionOrder::kLabels, guided ? guide : nullptr, false, false,
+        false, twins);
+    std::vector<uint8_t> fields = {
+        uint8_t((geometry ? kGuidedGeometryOrder : 0) | (graded ? kGuidedGradedStart : 0) | (guided ? kTwinsGuided : 0)),
+        uint8_t(twins->plane.axis)};
+    put_varint(&fields, twins->plane.sum);
+    if (fields.size() + twinned.size() < stream.size() + (guided ? 1 : 0)) {
+      stream = std::move(twinned);
+      *coding = kCodingTwins;
+      out.insert(out.begin(), fields.begin(), fields.end());
+    }
   }
   if (!range_stream_justifies(n, stream.size())) return {};
   if (*coding == kCodingGuided) out.insert(out.begin(), options);
@@ -304,7 +329,8 @@ std::string attribute_problem(const Mesh& mesh, size_t i, bool exact) {
 
 Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, const std::vector<uint32_t>& file_vertex,
                         const std::vector<uint32_t>& quantized, const std::vector<uint64_t>& corner_source,
-                        const EncodeOptions& options, std::vector<uint8_t>* payload, AttributeStats* stats) {
+                        const EncodeOptions& options, std::vector<uint8_t>* payload, AttributeStats* stats,
+                        const MirrorPlane* plane) {
   const uint32_t c = attribute.components;
   const size_t value_count = attribute.value_count(), vertex_count = file_vertex.size();
   std::vector<uint32_t> corner_values(corner_source.size());
@@ -357,9 +383,12 @@ Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, c
     guide.vertex_of_corner = file_mesh.corners.data();
     guide.positions = quantized.data();
     const bool guided = options.attribute_guided && c == 2 && quantized.size() == 3 * vertex_count;
+    AttributeTwins twins;  // 15.14: over CONN's faces and the positions' integers
+    if (plane) twins = AttributeTwins{*plane, &file_mesh, quantized.data(), uint32_t(vertex_count)};
+    const bool twinned = plane && options.attribute_twins && quantized.size() == 3 * vertex_count;
     values = encode_grid_values(table, c, bits_for(attribute.kind, options), attribute_mesh,
                                 options.attribute_geometry_order, options.attribute_graded_start,
-                                guided ? &guide : nullptr, &stats->step, &coding);
+                                guided ? &guide : nullptr, twinned ? &twins : nullptr, &stats->step, &coding);
   }
   stats->exact = values.empty();
   if (stats->exact) {
@@ -368,8 +397,9 @@ Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, c
   }
   stats->octahedral = coding == kCodingOctahedral || coding == kCodingAngleWeighted;
   stats->angle_weighted = coding == kCodingAngleWeighted;
-  const uint8_t guided_options = coding == kCodingGuided ? values[0] : 0;
-  stats->guided = coding == kCodingGuided;
+  const uint8_t guided_options = coding == kCodingGuided || coding == kCodingTwins ? values[0] : 0;
+  stats->guided = coding == kCodingGuided || (coding == kCodingTwins && (guided_options & kTwinsGuided) != 0);
+  stats->twins = coding == kCodingTwins;
   stats->geometry_order = coding == kCodingGeometryOrder || coding == kCodingGeometryOrderGraded ||
                           (guided_options & kGuidedGeometryOrder);
   stats->graded_start = coding == kCodingGridGraded || coding == kCodingGeometryOrderGraded ||

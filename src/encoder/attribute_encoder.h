@@ -7,6 +7,7 @@
 
 #include "qmc/encoder.h"
 #include "qmc/mesh.h"
+#include "bitio/mirror_prediction.h"
 #include "qmc/status.h"
 
 namespace qmc {
@@ -17,9 +18,12 @@ namespace qmc {
 // vertex); corner_source[k] is the input corner that file corner k is.
 // quantized holds the POSN integers in file order (3 per vertex), from which
 // unit normals are predicted (coding 3, 15.7); empty leaves them on a grid.
+// With a plane (a mirror plane of those integers), values on a grid may
+// take twin candidates (coding 9, 15.14).
 Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, const std::vector<uint32_t>& file_vertex,
                         const std::vector<uint32_t>& quantized, const std::vector<uint64_t>& corner_source,
-                        const EncodeOptions& options, std::vector<uint8_t>* payload, AttributeStats* stats);
+                        const EncodeOptions& options, std::vector<uint8_t>* payload, AttributeStats* stats,
+                        const MirrorPlane* plane = nullptr);
 
 // Every problem that keeps attribute i of `mesh` out of the format, or "".
 std::string attribute_problem(const Mesh& mesh, size_t i, bool exact);

@@ -259,6 +259,19 @@ Status corner_sources(const Mesh& mesh, const FileConnectivity& conn, std::vecto
   return Status::Ok();
 }
 
+// 15.14's plane for twin candidates: POSN method 9's, else one
+// find_mirror_plane finds on the positions' integers.
+bool twin_plane(const QuantizationInfo& info, const std::vector<uint32_t>& quantized, MirrorPlane* plane) {
+  if (info.mirror_axis >= 0) {
+    *plane = MirrorPlane{info.mirror_axis, info.mirror_sum};
+    return true;
+  }
+  QuantizedPositions grid;
+  grid.top = info.top;
+  grid.q = quantized;
+  return find_mirror_plane(grid, plane);
+}
+
 // Section 15: an aTTR chunk per attribute, right after POSN. Normals are
 // predicted from the integers the decoder gets from `positions` (15.7),
 // decoded here: the POSN payload may hold another grid than the one asked
@@ -271,7 +284,8 @@ Status add_attributes(const Mesh& mesh, const EncodeOptions& options, const File
   QuantizationInfo info;
   std::vector<uint32_t> quantized;
   std::vector<float> decoded;
-  bool predicted_from_positions = false;  // normals (15.7, 15.13), two-component values (15.12)
+  // Normals (15.7, 15.13), two-component values (15.12), twins (15.14).
+  bool predicted_from_positions = options.attribute_twins;
   for (const MeshAttribute& a : mesh.attributes)
     predicted_from_positions = predicted_from_positions || a.kind == AttributeKind::kNormal ||
                                (options.attribute_guided && a.components == 2);
@@ -281,11 +295,13 @@ Status add_attributes(const Mesh& mesh, const EncodeOptions& options, const File
                                           : Status::Ok();
       !s.ok())
     return Status(ErrorCode::kInvalidArgument, "internal: the encoder's POSN does not decode: " + s.to_string());
+  MirrorPlane plane;
+  const bool mirrored = options.attribute_twins && twin_plane(info, quantized, &plane);
   for (const MeshAttribute& attribute : mesh.attributes) {
     std::vector<uint8_t> payload;
     AttributeStats stats;
     if (Status s = encode_attribute(attribute, conn.mesh, conn.file_vertex, quantized, source, options, &payload,
-                                    &stats);
+                                    &stats, mirrored ? &plane : nullptr);
         !s.ok())
       return s;
     add_chunk(out, st, kChunkAttribute, payload);

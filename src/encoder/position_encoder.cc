@@ -273,7 +273,7 @@ uint32_t code_residuals(Coder* coder, PositionResidualModel* model, const Vertex
 // mirror candidate (if it has one) is used, priced against the mask
 // best_candidates chooses (p is left selected with that mask, *mask set);
 // the decision is coded, and when true p predicts by the candidate.
-bool code_mirror_choice(MeteredRangeEncoder* rc, PositionResidualModel* model, const MirrorCandidates& mirrors,
+bool code_mirror_choice(MeteredRangeEncoder* rc, PositionResidualModel* model, const MirrorSource& mirrors,
                         uint32_t v, const std::vector<uint32_t>& q, const uint32_t top[3], CandidateChoice choice,
                         VertexPrediction* p, unsigned* mask) {
   select_candidates(p, (1u << p->candidates) - 1, top);  // the reference: every candidate
@@ -302,10 +302,11 @@ bool code_mirror_choice(MeteredRangeEncoder* rc, PositionResidualModel* model, c
 
 // 14.2 - 14.4 over a visit built for q's vertices (its order, guide and
 // twist set), with 14.8's mask contexts or not, with 14.10's mirror
-// candidate where a plane is given.
+// candidate where a plane is given, with 15.14's twin candidate where twins are.
 std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t top[3], const PredictionVisit& visit,
                                   PositionStats* stats, CandidateChoice choice, ClassStart start,
-                                  bool mask_contexts = false, const MirrorPlane* mirror = nullptr) {
+                                  bool mask_contexts = false, const MirrorPlane* mirror = nullptr,
+                                  const AttributeTwins* twins = nullptr) {
   const uint32_t n = uint32_t(q.size() / 3);
   std::vector<uint32_t> activity(n);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start, mask_contexts));
@@ -314,8 +315,9 @@ std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t
   PositionStats& st = stats ? *stats : local;
   VertexPrediction p;
   TriangleTwistWeight twist_weight;  // 14.9: no correction without the triangle twist
-  std::unique_ptr<MirrorCandidates> mirrors;
+  std::unique_ptr<MirrorSource> mirrors;
   if (mirror) mirrors = std::make_unique<MirrorCandidates>(visit.mesh(), *mirror, top);
+  if (twins) mirrors = std::make_unique<ValueTwins>(visit.mesh(), *twins, top);
   for (uint32_t i = 0; i < n; ++i) {
     const uint32_t v = visit.item(i);
     visit.predict(i, q.data(), activity.data(), top, &p);
@@ -375,14 +377,14 @@ std::vector<uint8_t> predicted_payload(const QuantizedPositions& positions, Clas
 std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const uint32_t top[3], const Mesh& faces,
                                            PositionStats* stats, CandidateChoice choice, ClassStart start,
                                            PredictionOrder order, const PositionGuide* guide, bool quad_twist,
-                                           bool mask_contexts, bool triangle_twist) {
+                                           bool mask_contexts, bool triangle_twist, const AttributeTwins* twins) {
   VertexCorners corners;
   corners.build(uint32_t(q.size() / 3), faces.face_sizes, faces.corners);
   PredictionVisit visit(corners, order);
   visit.guide_by(guide);
   visit.twist_quads(quad_twist);
   visit.twist_triangles(triangle_twist);
-  return encode_visit(q, top, visit, stats, choice, start, mask_contexts);
+  return encode_visit(q, top, visit, stats, choice, start, mask_contexts, nullptr, twins);
 }
 
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,

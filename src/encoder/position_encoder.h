@@ -11,6 +11,7 @@
 
 #include "bitio/geometry_order.h"
 #include "bitio/mirror_prediction.h"
+#include "bitio/value_twins.h"
 #include "bitio/position_coding.h"
 #include "qmc/encoder.h"
 #include "qmc/mesh.h"
@@ -63,7 +64,8 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
                                            ClassStart start = ClassStart::kFlat,
                                            PredictionOrder order = PredictionOrder::kLabels,
                                            const PositionGuide* guide = nullptr, bool quad_twist = false,
-                                           bool mask_contexts = false, bool triangle_twist = false);
+                                           bool mask_contexts = false, bool triangle_twist = false,
+                                           const AttributeTwins* twins = nullptr);
 
 // Method 1, or 3 with the graded start (section 14), or 4 in the geometry
 // order (5 with quad_twist, 6 or 7 with mask_contexts too, 8 with

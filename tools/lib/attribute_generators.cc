@@ -6,13 +6,21 @@
 #include "splitmix64.h"
 
 namespace qmc::tools {
+namespace {
 
-void add_chart_texcoords(Mesh* mesh) {
-  const size_t v_count = mesh->vertex_count();
+MeshAttribute empty_texcoords() {
   MeshAttribute a;
   a.name = "texcoord";
   a.kind = AttributeKind::kTextureCoordinate;
   a.components = 2;
+  return a;
+}
+
+}  // namespace
+
+void add_chart_texcoords(Mesh* mesh) {
+  const size_t v_count = mesh->vertex_count();
+  MeshAttribute a = empty_texcoords();
   std::vector<uint32_t> value_of(2 * v_count, UINT32_MAX);
   size_t k0 = 0;
   for (uint32_t degree : mesh->face_sizes) {
@@ -27,6 +35,37 @@ void add_chart_texcoords(Mesh* mesh) {
         a.values.push_back(mesh->positions[3 * size_t(v) + 1] + 3.0f * float(chart));
         a.values.push_back(mesh->positions[3 * size_t(v) + 2]);
       }
+      a.corner_values.push_back(value);
+    }
+    k0 += degree;
+  }
+  mesh->attributes.push_back(std::move(a));
+}
+
+void add_mirrored_texcoords(Mesh* mesh, uint32_t seam_one_in, uint64_t seed) {
+  SplitMix64 random(seed);
+  const size_t n = mesh->vertex_count();
+  MeshAttribute a = empty_texcoords();
+  std::vector<uint32_t> value_of(2 * n, UINT32_MAX);
+  const auto add_value = [&](uint32_t v, int chart) {
+    a.values.push_back(mesh->positions[3 * size_t(v)] + float(chart));
+    a.values.push_back(mesh->positions[3 * size_t(v) + 1]);
+    return uint32_t(a.value_count() - 1);
+  };
+  size_t k0 = 0;
+  for (uint32_t degree : mesh->face_sizes) {
+    double centroid = 0;
+    for (uint32_t i = 0; i < degree; ++i) centroid += mesh->positions[3 * size_t(mesh->corners[k0 + i])];
+    const int chart = centroid < 0 ? 0 : 1;
+    const bool own = random.next() % seam_one_in == 0;
+    for (uint32_t i = 0; i < degree; ++i) {
+      const uint32_t v = mesh->corners[k0 + i];
+      uint32_t& value = value_of[size_t(chart) * n + v];
+      if (own) {
+        a.corner_values.push_back(add_value(v, chart));
+        continue;
+      }
+      if (value == UINT32_MAX) value = add_value(v, chart);
       a.corner_values.push_back(value);
     }
     k0 += degree;

@@ -14,6 +14,13 @@ namespace qmc::tools {
 // vertex's (y, z) shifted by 3 in u on the second chart.
 void add_chart_texcoords(Mesh* mesh);
 
+// "texcoord" for a mesh mirrored across x = 0 (make_mirrored_across_x):
+// the faces on each side a chart, (u, v) = (x, y) where the face's
+// centroid has x < 0 and (x + 1, y) on the other side, so that a twin's u
+// is 1 - u (a texture mirrored as 15.14 expects); about one face in
+// seam_one_in gets values of its own (a seam around it).
+void add_mirrored_texcoords(Mesh* mesh, uint32_t seam_one_in, uint64_t seed);
+
 // "normal": one value per vertex, the normalized sum of its faces'
 // (Newell) normals; (0, 0, 1) for a vertex without faces.
 void add_vertex_normals(Mesh* mesh);
