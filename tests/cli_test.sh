@@ -48,7 +48,7 @@ check compare-missing 3 "$qmc" compare "$work/torus.obj" "$work/nope.obj"
 check info 0 "$qmc" info "$work/torus.qmc"
 contains info-chunks "$work/out" "CONN"
 contains info-method "$work/out" "polygon coder (spec 5.4)"
-contains info-predicted "$work/out" "predicted (spec 14, method 9: geometry order, quads' twist, mirror images: graded start), uniform grid"
+contains info-predicted "$work/out" "predicted (spec 14, method 10: geometry order, quads' twist, mirror images a step away: graded start), uniform grid"
 check info-json 0 "$qmc" info --json "$work/torus.qmc"
 contains info-json-valid "$work/out" '"connectivity":"polygon"'
 # Spec 14.1's grids as a user states them.
@@ -92,7 +92,7 @@ if [ "$(stat -c %s "$work/f111.qmc")" -lt "$(stat -c %s "$work/f110t.qmc")" ]; t
   failed=$((failed + 1)); echo "FAIL format-1.11-smaller: method 8's file is not smaller than method 4's"; fi
 # Method 9 (14.10): the torus is symmetric across x, and every vertex whose mirror image was decoded
 # before it may be predicted by that image.
-check format-1.12 0 "$qmc" encode "$work/tritorus.obj" "$work/f112.qmc" -q 12 --quiet
+check format-1.12 0 "$qmc" encode "$work/tritorus.obj" "$work/f112.qmc" -q 12 --quiet --format 1.12
 check format-1.12-info 0 "$qmc" info "$work/f112.qmc"
 contains format-1.12-written "$work/out" "format 1.12"
 contains format-1.12-method-9 "$work/out" "predicted (spec 14, method 9: geometry order, triangles' twist, mirror images)"
@@ -100,6 +100,15 @@ check format-1.12-info-json 0 "$qmc" info --json "$work/f112.qmc"
 contains format-1.12-plane "$work/out" '"position_method":9,"position_features":4,"position_mirror_axis":[0-2],'
 if [ "$(stat -c %s "$work/f112.qmc")" -lt "$(stat -c %s "$work/f111.qmc")" ]; then passed=$((passed + 1)); else
   failed=$((failed + 1)); echo "FAIL format-1.12-smaller: method 9's file is not smaller than method 8's"; fi
+# Method 10 (14.11), what encode writes by default: the torus at 14 bits, whose halves are a step apart
+# where the plane falls between grid points.
+check format-1.13 0 "$qmc" encode "$work/tritorus.obj" "$work/f113.qmc" -q 14 --quiet
+check format-1.13-info 0 "$qmc" info "$work/f113.qmc"
+contains format-1.13-written "$work/out" "format 1.13"
+contains format-1.13-method-10 "$work/out" "predicted (spec 14, method 10: geometry order, triangles' twist, mirror images a step away)"
+check format-1.12-14-bits 0 "$qmc" encode "$work/tritorus.obj" "$work/f112b.qmc" -q 14 --quiet --format 1.12
+check format-1.12-14-bits-info 0 "$qmc" info "$work/f112b.qmc"
+contains format-1.12-14-bits-written "$work/out" "format 1.12"
 # info describes a file that fails as far as it decodes, names the fault and exits 3: every invalid vector.
 info_crashed=""
 for vector in "$vectors"/invalid_*.qmc; do
@@ -109,7 +118,7 @@ for vector in "$vectors"/invalid_*.qmc; do
 done
 if [ -z "$info_crashed" ]; then passed=$((passed + 1)); else
   failed=$((failed + 1)); echo "FAIL info-invalid-vectors:$info_crashed"; fi
-check format-1.13-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f113.qmc" --format 1.13
+check format-1.14-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f114.qmc" --format 1.14
 check format-1.010-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f112.qmc" --format 1.010
 "$meshgen" torus 40 30 "$work/torus1200.obj" >/dev/null  # 1,200 vertices of quads: method 4 or 5, never 1 (14.5)
 check format-1.9 0 "$qmc" encode "$work/torus1200.obj" "$work/f19.qmc" --quiet --format 1.11
@@ -148,7 +157,7 @@ check soup-encode 0 "$qmc" encode "$work/soup.off" "$work/soup.qmc" -q 16 --text
 check soup-verify 0 "$qmc" verify "$work/soup.off" "$work/soup.qmc"
 check verify-wrong-mesh 1 "$qmc" verify "$work/soup.off" "$work/torus.qmc"
 check help 0 "$qmc" --help
-contains help-version "$work/out" "format version 1.12, spec/qmc-format.md"
+contains help-version "$work/out" "format version 1.13, spec/qmc-format.md"
 check encode-help 0 "$qmc" encode --help
 contains help-default-bits "$work/out" "1/4096"
 check no-args 2 "$qmc"
@@ -328,7 +337,7 @@ check decode-groups-off-refused 3 "$qmc" decode "$work/groups.qmc" "$work/groups
 { echo "v 0 0 0 1 0 0"; echo "v 1 0 0 0 1 0"; echo "v 0 1 0 0 0 1 1"; echo "f 1 2 3"; echo "l 1 2"; } >"$work/colours.obj"
 check encode-colours-refused 3 "$qmc" encode "$work/colours.obj" "$work/colours.qmc"
 contains encode-colours-refused-names-flag "$work/err" "pass --drop-unsupported"
-contains encode-colours-refused-names-format "$work/err" "holds what format 1.12 cannot carry yet"
+contains encode-colours-refused-names-format "$work/err" "holds what format 1.13 cannot carry yet"
 contains encode-colours-refused-colours "$work/err" "  ignored per-vertex colours on v lines of 7 numbers: 1"
 contains encode-colours-refused-partial "$work/err" "  ignored per-vertex colours on v lines: only 2 of 3 vertices have one"
 check encode-colours-refused-no-output 0 test ! -e "$work/colours.qmc"

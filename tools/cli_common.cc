@@ -167,6 +167,7 @@ std::string position_method_traits(int method, int features) {
   if (features & kTriangleTwistFeature) traits += ", triangles' twist";
   if (features & kMaskContextsFeature) traits += ", candidate contexts";
   if (method == 9) traits += ", mirror images";
+  if (method == 10) traits += ", mirror images a step away";
   return traits;
 }
 

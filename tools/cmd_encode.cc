@@ -131,7 +131,7 @@ const char kHelp[] =
 // predicted positions (method 1) and LEVL code 2 but not polygon coding 7,
 // 1.6 decoders that but not POSN method 3, 1.7 decoders not method 4, 1.8
 // decoders not method 5, 1.9 decoders not methods 6 and 7 (spec 11).
-constexpr int kNewestMinor = 12, kOldestTargetMinor = 4;
+constexpr int kNewestMinor = kFormatMinor, kOldestTargetMinor = 4;
 
 struct EncodeArgs {
   std::string input, output;
@@ -243,9 +243,11 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
 // error naming the option that needs a newer version.
 int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   EncodeOptions& o = args->options;
+  if (args->newest_minor >= 13) return -1;
+  o.near_mirror = false;      // POSN method 10 (14.11) came with 1.13,
+  o.attribute_twins = false;  // and aTTR coding 9 (15.14) with it
   if (args->newest_minor >= 12) return -1;
-  o.mirror_symmetry = false;  // POSN method 9 (14.10) came with 1.12,
-  o.attribute_twins = false;  // and aTTR coding 9 (15.14) after it
+  o.mirror_symmetry = false;  // POSN method 9 (14.10) came with 1.12
   if (args->newest_minor >= 11) return -1;
   o.triangle_twist = false;  // POSN method 8 (14.9) came with 1.11
   if (args->newest_minor >= 10) return -1;

@@ -58,6 +58,7 @@ qmc::EncodeOptions format_1_6_options() {
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
   options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  options.near_mirror = false;  // and POSN method 10 (14.11)
   options.graded_class_start = false;
   options.geometry_order = false;
   options.quad_twist = false;
@@ -2557,6 +2558,7 @@ std::vector<uint8_t> encode_posn_as_written(const Mesh& mesh, int method, int bi
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
   options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  options.near_mirror = false;  // and POSN method 10 (14.11)
   options.position_bits = bits;
   options.position_grid = grid;
   options.position_method = qmc::PositionMethod::kPredicted;
@@ -2706,6 +2708,7 @@ void write_posn4_vectors(VectorWriter* w) {
   keep.triangle_twist = false;  // and method 8 (14.9)
   keep.mirror_symmetry = false;  // and method 9 (14.10)
   keep.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  keep.near_mirror = false;  // and POSN method 10 (14.11)
   keep.keep_order = true;
   w->valid("valid_ordr_posn4_scrambled", encode_with(scrambled, keep, "scrambled method-4 sphere"), &scrambled);
   // 12.2: a progressive file's base mesh in method 4.
@@ -2763,6 +2766,7 @@ std::vector<uint8_t> encode_posn5(const Mesh& mesh, int bits) {
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
   options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  options.near_mirror = false;  // and POSN method 10 (14.11)
   options.position_bits = bits;
   options.position_method = qmc::PositionMethod::kPredicted;
   options.candidate_choice = qmc::CandidateChoice::kFewestBits;
@@ -2926,6 +2930,7 @@ void write_posn5_vectors(VectorWriter* w) {
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
   options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  options.near_mirror = false;  // and POSN method 10 (14.11)
   options.position_bits = 12;
   w->valid("valid_posn5_mixed_polygons", rewritten_as_method_5(encode_with(mixed, options, "mixed polygons")), &mixed);
   // 14.7's example, its labels kept by indexed connectivity.
@@ -2935,6 +2940,7 @@ void write_posn5_vectors(VectorWriter* w) {
   indexed.triangle_twist = false;  // and method 8 (14.9)
   indexed.mirror_symmetry = false;  // and method 9 (14.10)
   indexed.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  indexed.near_mirror = false;  // and POSN method 10 (14.11)
   indexed.position_bits = 4;
   indexed.connectivity = qmc::ConnectivityChoice::kIndexed;
   w->valid("valid_posn5_example", rewritten_as_method_5(encode_with(example, indexed, "14.7's example")), &example);
@@ -2960,6 +2966,7 @@ void write_posn5_vectors(VectorWriter* w) {
   attributes.triangle_twist = false;  // and method 8 (14.9)
   attributes.mirror_symmetry = false;  // and method 9 (14.10)
   attributes.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  attributes.near_mirror = false;  // and POSN method 10 (14.11)
   attributes.position_bits = 12;
   w->valid("valid_posn5_with_texcoords", encode_posn_method(textured, attributes, 5), &textured);
 
@@ -3013,6 +3020,7 @@ void write_posn6_vectors(VectorWriter* w) {
   options.triangle_twist = false;  // but POSN method 8 (14.9) came after these vectors
   options.mirror_symmetry = false;  // and method 9 (14.10)
   options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  options.near_mirror = false;  // and POSN method 10 (14.11)
   options.position_bits = 16;
   // What the encoder writes where the contexts pay: terraces, where the
   // parallelograms across a cliff are far off and the others agree.
@@ -3116,6 +3124,7 @@ void write_posn8_vectors(VectorWriter* w) {
   qmc::EncodeOptions options;  // what `qmc encode` wrote before method 9 (14.10)
   options.mirror_symmetry = false;
   options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  options.near_mirror = false;  // and POSN method 10 (14.11)
   // Spec 14.9's example, written as method 8 with the twist of triangles.
   const Mesh hexagon = twist_hexagon();
   qmc::EncodeOptions unit = options;
@@ -3142,6 +3151,7 @@ void write_posn8_vectors(VectorWriter* w) {
   no_twist.triangle_twist = false;
   no_twist.mirror_symmetry = false;  // and method 9 (14.10)
   no_twist.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  no_twist.near_mirror = false;  // and POSN method 10 (14.11)
   const std::vector<uint8_t> small_file = encode_with(small, no_twist, "small sphere");
   {
     Chunks c = split_chunks(small_file);
@@ -3260,7 +3270,7 @@ std::vector<uint8_t> rewritten_with_mirror(const std::vector<uint8_t>& file, uin
   qmc::QuantizedPositions grid;
   decode_grid(c, &faces, &grid);
   qmc::MirrorPlane found;
-  if (!plane && !qmc::find_mirror_plane(grid, &found)) {
+  if (!plane && !qmc::find_mirror_plane(grid, &found, false)) {
     std::fprintf(stderr, "qmc-make-vectors: a file to rewrite as method 9 has no mirror plane\n");
     std::exit(3);
   }
@@ -3270,7 +3280,7 @@ std::vector<uint8_t> rewritten_with_mirror(const std::vector<uint8_t>& file, uin
       grid, faces, nullptr, qmc::CandidateChoice::kFewestBits, start, qmc::PredictionOrder::kGeometry,
       features & qmc::kQuadTwistFeature, features & qmc::kMaskContextsFeature,
       features & qmc::kTriangleTwistFeature, plane ? plane : &found);
-  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, 12};
+  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, uint8_t(plane && plane->near_images ? 13 : 12)};
   return join_chunks(c);
 }
 
@@ -3303,6 +3313,7 @@ void write_posn9_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   qmc::EncodeOptions options;  // what `qmc encode` wrote
   options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  options.near_mirror = false;  // and POSN method 10 (14.11)
   // Spec 14.10's example, on the integers as given.
   const Mesh kite = mirror_kite();
   qmc::EncodeOptions unit = options;
@@ -3401,6 +3412,62 @@ void write_posn9_vectors(VectorWriter* w) {
   w->invalid("invalid_posn9_value_outside_grid", with_posn(p), ErrorCode::kBadSymbol);
 }
 
+// A lumpy sphere (its lumps break the planes across y and z) mirrored across
+// x, its box reaching further on one side (one more vertex at x = 1.37):
+// the plane falls between grid points and the halves are a step apart where
+// they round apart (14.11).
+Mesh lumpy_mirrored_sphere(int levels) {
+  Mesh lumpy = qmc::tools::triangulated(qmc::tools::make_refined_sphere(levels));
+  for (size_t v = 0; v < lumpy.vertex_count(); ++v) {
+    float* p = &lumpy.positions[3 * v];
+    p[1] += 0.1f * std::sin(3 * p[0] + 2 * p[2]);
+    p[2] += 0.1f * std::cos(2 * p[1] + p[0]);
+  }
+  Mesh sphere = qmc::tools::make_mirrored_across_x(lumpy);
+  sphere.positions.insert(sphere.positions.end(), {1.37f, 0.f, 0.f});
+  return sphere;
+}
+
+void write_posn10_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  // Spec 14.11's example: 14.10's kite with vertex 3 a step from vertex 2's image.
+  Mesh kite = mirror_kite();
+  kite.positions[3 * 3 + 2] = 2;
+  qmc::EncodeOptions unit = options;
+  unit.connectivity = qmc::ConnectivityChoice::kIndexed;
+  unit.position_step = 1;
+  const qmc::MirrorPlane kite_plane{0, 12, true};
+  w->valid("valid_posn10_kite", rewritten_with_mirror(encode_with(kite, unit, "kite"), 0, &kite_plane), &kite);
+  // What the encoder writes where the halves are a step apart: triangles at
+  // 14 and 16 bits, with the triangle twist's features and mirrored texture
+  // coordinates (aTTR coding 9 over method 10's positions).
+  const Mesh sphere = lumpy_mirrored_sphere(3);
+  options.position_bits = 14;
+  const std::vector<uint8_t> file = encode_posn_method(sphere, options, 10);
+  w->valid("valid_posn10_sphere_14_bits", file, &sphere);
+  qmc::EncodeOptions sixteen = options;
+  sixteen.position_bits = 16;
+  w->valid("valid_posn10_sphere_16_bits", encode_posn_method(sphere, sixteen, 10), &sphere);
+  Mesh textured = sphere;
+  qmc::tools::add_mirrored_texcoords(&textured, 16, 9);
+  w->valid("valid_posn10_with_texcoords", encode_posn_method(textured, options, 10), &textured);
+
+  // 14.1's checks of the plane on method 10's path, and 14.4's.
+  const ChunkReplacer with_posn(file, qmc::kChunkPositions);
+  const std::vector<uint8_t> payload = with_posn.payload();
+  const Posn9Fields f = posn9_fields(payload, sphere.vertex_count());
+  std::vector<uint8_t> p = payload;
+  p[f.axis] = 3;
+  w->invalid("invalid_posn10_axis_3", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = std::vector<uint8_t>(payload.begin(), payload.begin() + long(f.sum));
+  qmc::put_varint(&p, 2 * 16383 + 1);
+  p.insert(p.end(), payload.begin() + long(f.grid), payload.end());
+  w->invalid("invalid_posn10_sum_above_twice_top", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn10_truncated_stream",
+             with_posn(std::vector<uint8_t>(payload.begin(), payload.end() - 64)), ErrorCode::kTruncated);
+}
+
 // Section 15.9: aTTR coding 4, what `qmc encode` writes when it is the
 // smaller; the generator fails if the encoder kept coding 0 instead.
 std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, const char* what) {
@@ -3409,6 +3476,7 @@ std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, 
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
   options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  options.near_mirror = false;  // and POSN method 10 (14.11)
   options.geometry_order = posn_geometry_order;
   options.attribute_graded_start = false;  // codings 5 and 6 came after these vectors
   options.attribute_predicted_mapping = false;  // and mapping 3 (15.11)
@@ -3508,6 +3576,7 @@ void write_attribute_coding56_vectors(VectorWriter* w) {
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
   options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  options.near_mirror = false;  // and POSN method 10 (14.11)
   options.attribute_predicted_mapping = false;  // mapping 3 (15.11) came after these vectors
   options.attribute_guided = false;             // and coding 7 (15.12)
   options.angle_weighted_normals = false;       // and coding 8 (15.13)
@@ -3703,6 +3772,7 @@ std::vector<uint8_t> coding7_over_soup() {
   qmc::EncodeOptions options;
   options.mirror_symmetry = false;  // the positions as the vector was first made (method 3)
   options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  options.near_mirror = false;  // and POSN method 10 (14.11)
   const std::vector<uint8_t> plain = encode_with(qmc::tools::make_random_soup(13, o), options, "soup");
   qmc::DecodedFile d;
   (void)qmc::decode(plain.data(), plain.size(), &d);
@@ -3744,6 +3814,7 @@ void write_attribute_coding7_vectors(VectorWriter* w) {
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
   options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  options.near_mirror = false;  // and POSN method 10 (14.11)
   const std::vector<uint8_t> both = encode_coding7(textured, options, 1, "coding 7 texcoords");
   w->valid("valid_attr_coding7_texcoords", both, &textured);
   qmc::EncodeOptions labels = options;
@@ -3882,7 +3953,8 @@ void write_attribute_coding9_vectors(VectorWriter* w) {
   // What the encoder writes: mirrored texture coordinates with seams on a
   // sphere of triangles and a torus of quads; over POSN method 0; a colour
   // and a one-component value per vertex.
-  qmc::EncodeOptions options;  // what `qmc encode` writes
+  qmc::EncodeOptions options;  // what `qmc encode` wrote before POSN method 10
+  options.near_mirror = false;  // (14.11), which came after these vectors
   Mesh sphere = make_mirrored_across_x(triangulated(make_refined_sphere(3)));
   add_mirrored_texcoords(&sphere, 16, 5);
   const std::vector<uint8_t> texcoords = encode_coding9(sphere, options, 0, "coding 9 texcoords");
@@ -3990,6 +4062,7 @@ void write_attribute_coding8_vectors(VectorWriter* w) {
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
   options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  options.near_mirror = false;  // and POSN method 10 (14.11)
   // A bumpy grid of irregular triangles, and of quads, and the triangles with a crease.
   Mesh triangles = jittered_textured_grid(12, 12, 99, true);
   triangles.attributes.clear();
@@ -4080,6 +4153,7 @@ void write_attribute_mapping3_vectors(VectorWriter* w) {
   options.triangle_twist = false;  // and method 8 (14.9)
   options.mirror_symmetry = false;  // and method 9 (14.10)
   options.attribute_twins = false;  // aTTR coding 9 (15.14) came after these vectors
+  options.near_mirror = false;  // and POSN method 10 (14.11)
   options.attribute_guided = false;  // coding 7 (15.12) came after these vectors
   options.angle_weighted_normals = false;  // and coding 8 (15.13)
   options.quad_twist = false;              // and POSN method 5 (14.7)
@@ -4180,6 +4254,7 @@ int main(int argc, char** argv) {
   write_posn6_vectors(&w);
   write_posn8_vectors(&w);
   write_posn9_vectors(&w);
+  write_posn10_vectors(&w);
   w.finish();
   return 0;
 }

@@ -36,7 +36,7 @@ struct QuantizationInfo {
   std::array<double, 3> step{};   // x = min + q x step (6.4, 14.1), per axis
   std::array<uint32_t, 3> top{};  // the largest q per axis
   int features = 0;               // methods 4 - 9: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
-  int mirror_axis = -1;           // method 9: 14.10's plane, q[axis] -> mirror_sum - q[axis]; -1 in the others
+  int mirror_axis = -1;           // methods 9, 10: 14.10's plane, q[axis] -> mirror_sum - q[axis]; -1 in the others
   uint32_t mirror_sum = 0;
 };
 

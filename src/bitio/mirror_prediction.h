@@ -21,7 +21,16 @@ namespace qmc {
 struct MirrorPlane {
   int axis = 0;       // 0, 1 or 2
   uint32_t sum = 0;   // 0 .. 2 top[axis]
+  bool near_images = false;  // 14.11 (POSN method 10): image vertices also a step from the image
 };
+
+// 14.11: the points around a mirror image searched for a vertex when none is
+// at the image itself (the halves of a mirrored mesh, quantized, are often a
+// step apart: the plane falls between grid points, the input's digits
+// differ), nearest first (L1), in order of (x, y, z) among equals. POSN
+// method 10's image vertices and aTTR coding 9's twins (15.14) use them.
+inline constexpr int kNearPoints = 26;
+extern const int8_t kNearPointOffsets[kNearPoints][3];
 
 // The first vertex decoded at each grid point: an open-addressing table
 // whose hash is keyed per table, so that no file can make its probes long
@@ -31,6 +40,8 @@ class GridPointTable {
   explicit GridPointTable(uint32_t capacity_for);
   // The first vertex inserted at q, or kNone.
   uint32_t find(const uint32_t q[3]) const;
+  // The same at q, else at q plus the first of kNearPointOffsets that has one (14.11).
+  uint32_t find_near(const uint32_t q[3]) const;
   // Inserts v at q unless a vertex is there already; returns that vertex,
   // or kNone when v was inserted.
   uint32_t insert(const uint32_t q[3], uint32_t v);
@@ -62,7 +73,8 @@ class MirrorSource {
   virtual void decoded(uint32_t v, const uint32_t* q) = 0;
 };
 
-// 14.10's search, shared by the encoder and the decoder.
+// 14.10's search, shared by the encoder and the decoder; with the plane's
+// near_images, POSN method 10's (14.11).
 class MirrorCandidates final : public MirrorSource {
  public:
   MirrorCandidates(const VertexCorners& mesh, MirrorPlane plane, const uint32_t top[3]);

@@ -22,26 +22,6 @@ int twin_sign(int64_t step, int64_t twin_step, int carried) {
   return same_error < flipped_error ? 1 : flipped_error < same_error ? -1 : carried;
 }
 
-// 15.14: the points around an image searched for a twin when no vertex is
-// at the image itself (the halves of a mirrored mesh, quantized, are often a
-// step apart: the plane falls between grid points, the input's digits
-// differ), nearest first (L1), in order of (x, y, z) among equals.
-constexpr int8_t kNearPoints[26][3] = {
-    {-1, 0, 0},  {0, -1, 0},  {0, 0, -1}, {0, 0, 1},  {0, 1, 0},   {1, 0, 0},   {-1, -1, 0}, {-1, 0, -1}, {-1, 0, 1},
-    {-1, 1, 0},  {0, -1, -1}, {0, -1, 1}, {0, 1, -1}, {0, 1, 1},   {1, -1, 0},  {1, 0, -1},  {1, 0, 1},   {1, 1, 0},
-    {-1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}, {-1, 1, 1}, {1, -1, -1}, {1, -1, 1}, {1, 1, -1}, {1, 1, 1}};
-
-// The first vertex at `image`, else at the nearest point around it that has one; kNone if none has.
-uint32_t nearest_vertex(const GridPointTable& first_at, const uint32_t image[3]) {
-  uint32_t vertex = first_at.find(image);
-  for (int i = 0; i < 26 && vertex == kNone; ++i) {
-    uint32_t point[3];
-    for (int j = 0; j < 3; ++j) point[j] = uint32_t(int64_t(image[j]) + kNearPoints[i][j]);
-    vertex = first_at.find(point);
-  }
-  return vertex;
-}
-
 }  // namespace
 
 ValueTwins::ValueTwins(const VertexCorners& values, const AttributeTwins& twins, const uint32_t top[3])
@@ -56,7 +36,7 @@ ValueTwins::ValueTwins(const VertexCorners& values, const AttributeTwins& twins,
     std::copy(&twins.positions[3 * size_t(x)], &twins.positions[3 * size_t(x)] + 3, image);
     if (image[axis] > twins.plane.sum) continue;  // the image's coordinate would be below 0
     image[axis] = twins.plane.sum - image[axis];
-    twin_[x] = nearest_vertex(first_at, image);
+    twin_[x] = first_at.find_near(image);  // 15.14: 14.11's points around the image too
   }
 }
 

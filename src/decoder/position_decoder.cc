@@ -25,11 +25,11 @@ Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadCh
 
 // Section 14.1: the byte after vertex_count selects the method.
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (14.1)
-// Methods 4 - 9 (14.1, 14.6 - 14.10), 0x84 .. 0x89, all with the start byte;
-// methods 8 and 9 with the features byte of 14.9 after it, method 9 with
-// 14.10's plane after that.
-constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x89;
-constexpr uint8_t kFeaturesSelector = 0x88, kMirrorSelector = 0x89;
+// Methods 4 - 10 (14.1, 14.6 - 14.11), 0x84 .. 0x8A, all with the start
+// byte; methods 8 - 10 with the features byte of 14.9 after it, methods 9
+// and 10 with 14.10's plane after that.
+constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x8A;
+constexpr uint8_t kFeaturesSelector = 0x88, kMirrorSelector = 0x89, kNearMirrorSelector = 0x8A;
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
   for (int a = 0; a < 3; ++a)
@@ -72,14 +72,15 @@ Status read_grid(ByteReader* in, QuantizationInfo* info) {
   return Status::Ok();
 }
 
-// Section 14.10: method 9's plane, its axis byte and sum (checked against
-// the grid's top once read_grid has it).
+// Section 14.10: the plane of methods 9 and 10, its axis byte and sum
+// (checked against the grid's top once read_grid has it).
 Status read_mirror_plane(ByteReader* in, QuantizationInfo* info) {
+  const std::string method = "method " + std::to_string(info->method);
   uint8_t axis = 0;
   uint64_t sum = 0;
-  if (!in->get_u8(&axis)) return bad_payload("method 9's mirror axis missing (section 14.10)");
+  if (!in->get_u8(&axis)) return bad_payload(method + "'s mirror axis missing (section 14.10)");
   if (axis > 2) return bad_payload("mirror axis " + std::to_string(axis) + " is not 0, 1 or 2 (section 14.10)");
-  if (!in->get_varint(&sum)) return bad_payload("method 9's mirror sum missing or malformed (section 14.10)");
+  if (!in->get_varint(&sum)) return bad_payload(method + "'s mirror sum missing or malformed (section 14.10)");
   if (sum >= (uint64_t(1) << 31)) return bad_payload("mirror sum " + std::to_string(sum) + " above 2^31 - 1 (section 14.10)");
   info->mirror_axis = axis;
   info->mirror_sum = uint32_t(sum);
@@ -104,7 +105,8 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
       if (start > 1) return bad_payload("start " + std::to_string(start) + " is neither 0 nor 1 (section 14.1)");
       info->graded_start = start == 1;
     }
-    if (selector == kFeaturesSelector || selector == kMirrorSelector) {
+    const bool mirrored = selector == kMirrorSelector || selector == kNearMirrorSelector;
+    if (selector == kFeaturesSelector || mirrored) {
       const std::string method = "method " + std::to_string(info->method);
       uint8_t features = 0;
       if (!in->get_u8(&features)) return bad_payload(method + "'s features byte missing (section 14.9)");
@@ -112,7 +114,7 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
         return bad_payload(method + "'s features " + std::to_string(features) +
                            " has a bit above bit 2 set (section 14.9)");
       info->features = features;
-      if (selector == kMirrorSelector)
+      if (mirrored)
         if (Status s = read_mirror_plane(in, info); !s.ok()) return s;
     } else {
       info->features = position_features(info->method == 5 || info->method == 7, info->method >= 6, false);
@@ -126,7 +128,7 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
   if (selector >= 0x80)
     return Status(ErrorCode::kUnsupportedFeature,
                   "POSN: method " + std::to_string(selector - 0x80) +
-                      " is not defined (section 14.1 knows 0, 1 and 3 - 9)");
+                      " is not defined (section 14.1 knows 0, 1 and 3 - 10)");
   if (selector < 1 || selector > 30) return bad_payload("quantization bits " + std::to_string(selector) + " outside 1..30");
   info->method = 0;
   info->bits = selector;
@@ -207,7 +209,7 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
   return decode_residuals(rc, model, names, v, top, p, q, activity);
 }
 
-// Section 14.10 (POSN method 9) for vertex `vertex`, the i-th visited: if it
+// Section 14.10 (POSN methods 9 and 10) for vertex `vertex`, the i-th visited: if it
 // has a mirror candidate, the decision whether it is used, and if it is,
 // the residuals against it (*used then true; no mask is decoded).
 Status decode_mirrored(RangeDecoder* rc, PositionResidualModel* model, const PredictedGridNames& names,
@@ -299,7 +301,7 @@ Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, 
     const PredictedGridNames names{"POSN", "vertex", "vertices", "axis"};
     const ClassStart start = info->graded_start ? ClassStart::kGraded : ClassStart::kFlat;
     const PredictionOrder order = info->method >= 4 ? PredictionOrder::kGeometry : PredictionOrder::kLabels;
-    const MirrorPlane plane{info->mirror_axis, info->mirror_sum};
+    const MirrorPlane plane{info->mirror_axis, info->mirror_sum, info->method == 10};
     if (Status s = decode_predicted_grid(in.cursor(), in.remaining(), faces, vertex_count, info->top.data(), names,
                                          quantized, start, order, nullptr, info->features & kQuadTwistFeature,
                                          info->features & kMaskContextsFeature, info->features & kTriangleTwistFeature,

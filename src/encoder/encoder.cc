@@ -231,7 +231,8 @@ Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileC
 }
 
 uint8_t minor_version_for(const FileConnectivity& conn, int position_method) {
-  if (position_method >= 9) return 12;
+  if (position_method >= 10) return 13;
+  if (position_method == 9) return 12;
   if (position_method == 8) return 11;
   if (position_method >= 6) return 10;
   if (position_method == 5) return 9;
@@ -269,7 +270,7 @@ bool twin_plane(const QuantizationInfo& info, const std::vector<uint32_t>& quant
   QuantizedPositions grid;
   grid.top = info.top;
   grid.q = quantized;
-  return find_mirror_plane(grid, plane);
+  return find_mirror_plane(grid, plane, false);
 }
 
 // Section 15: an aTTR chunk per attribute, right after POSN. Normals are
@@ -326,7 +327,7 @@ Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_
   const std::vector<uint8_t> positions =
       encode_positions(quantized, conn.mesh, options.position_method, options.candidate_choice, class_start(options),
                        prediction_order(options), options.quad_twist, options.mask_contexts,
-                       options.triangle_twist, options.mirror_symmetry, &st.positions);
+                       options.triangle_twist, options.mirror_symmetry, options.near_mirror, &st.positions);
 
   out->clear();
   write_signature(out);

@@ -29,6 +29,7 @@ constexpr uint8_t kQuadTwistSelector = 0x85;                             // meth
 constexpr uint8_t kMaskContextSelectors[2] = {0x86, 0x87};               // methods 6 and 7 (14.1, 14.8)
 constexpr uint8_t kFeaturesSelector = 0x88;                              // method 8 (14.1, 14.9)
 constexpr uint8_t kMirrorSelector = 0x89;                                // method 9 (14.1, 14.10)
+constexpr uint8_t kNearMirrorSelector = 0x8A;                            // method 10 (14.1, 14.11)
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
 
 void bounding_box(const std::vector<float>& positions, QuantizedPositions* out) {
@@ -346,7 +347,7 @@ std::vector<uint8_t> predicted_payload(const QuantizedPositions& positions, Clas
   std::vector<uint8_t> payload;
   put_varint(&payload, n);
   if (order == PredictionOrder::kGeometry && (triangle_twist || mirror)) {
-    put_u8(&payload, mirror ? kMirrorSelector : kFeaturesSelector);
+    put_u8(&payload, !mirror ? kFeaturesSelector : mirror->near_images ? kNearMirrorSelector : kMirrorSelector);
     put_u8(&payload, start == ClassStart::kGraded ? 1 : 0);
     put_u8(&payload, position_features(quad_twist, mask_contexts, triangle_twist));
     if (mirror) {
@@ -407,9 +408,10 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
 // find_mirror_plane's screen: every plane tried on about kMirrorScreen
 // vertices, those that map 1/16 of them onto vertices on about
 // kMirrorSample, the best of those on all (1/8 needed, 1/16 below
-// kGradedStartBelow vertices). A mesh without a plane costs a table of its
-// points, one of (a sample of) its columns per axis, and 18 x kMirrorScreen
-// look-ups.
+// kGradedStartBelow vertices), then with method 10 counting the points
+// within a step too. A mesh without a plane costs a table of its points,
+// one of (a sample of) its columns per axis, and 18 x kMirrorScreen
+// look-ups, 27 times as many with method 10.
 constexpr uint32_t kMirrorScreen = 128, kMirrorSample = 1024, kMirroredShareDivisor = 8;
 
 namespace {
@@ -469,11 +471,12 @@ std::vector<uint32_t> candidate_sums(const QuantizedPositions& positions, int ax
 
 }  // namespace
 
-bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane) {
+bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, bool near) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
   if (n < 16) return false;
   GridPointTable points(n);
   for (uint32_t v = 0; v < n; ++v) points.insert(&positions.q[3 * size_t(v)], v);
+  bool near_hits = false;  // 14.11: a vertex within a step of the image counts too
   // Of every stride-th vertex, the share (in 1/count) whose image is a vertex.
   const auto hits = [&](MirrorPlane candidate, uint32_t stride) {
     uint32_t count = 0;
@@ -483,29 +486,34 @@ bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane) 
       const int64_t m = int64_t(candidate.sum) - int64_t(image[candidate.axis]);
       if (m < 0 || m > int64_t(positions.top[size_t(candidate.axis)])) continue;
       image[candidate.axis] = uint32_t(m);
-      count += points.find(image) != GridPointTable::kNone;
+      count += (near_hits ? points.find_near(image) : points.find(image)) != GridPointTable::kNone;
     }
     return count;
   };
   const uint32_t screen_stride = std::max<uint32_t>(1, n / kMirrorScreen);
   const uint32_t screened = (n + screen_stride - 1) / screen_stride;
   const uint32_t sample_stride = std::max<uint32_t>(1, n / kMirrorSample);
-  uint32_t best = 0;
-  for (int axis = 0; axis < 3; ++axis) {
-    for (const uint32_t sum : candidate_sums(positions, axis)) {
-      const MirrorPlane candidate{axis, sum};
-      if (hits(candidate, screen_stride) * 16 < screened) continue;
-      const uint32_t count = hits(candidate, sample_stride);
-      if (count > best) {
-        best = count;
-        *plane = candidate;
-      }
-    }
-  }
   // Under kGradedStartBelow vertices the encoder codes the positions without
   // the plane too where it has few twins, so a plane of fewer is tried.
   const uint32_t divisor = n < kGradedStartBelow ? 2 * kMirroredShareDivisor : kMirroredShareDivisor;
-  return best > 0 && hits(*plane, 1) >= n / divisor;
+  for (int pass = 0; pass < (near ? 2 : 1); ++pass) {
+    near_hits = pass == 1;
+    uint32_t best = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      for (const uint32_t sum : candidate_sums(positions, axis)) {
+        const MirrorPlane candidate{axis, sum};
+        if (hits(candidate, screen_stride) * 16 < screened) continue;
+        const uint32_t count = hits(candidate, sample_stride);
+        if (count > best) {
+          best = count;
+          *plane = candidate;
+        }
+      }
+    }
+    plane->near_images = near;
+    if (best > 0 && hits(*plane, 1) >= n / divisor) return true;
+  }
+  return false;
 }
 
 namespace {
@@ -639,7 +647,7 @@ bool triangle_twist_pays(const QuantizedPositions& positions, PredictionVisit* v
 std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions, const Mesh& faces,
                                              CandidateChoice choice, ClassStart start, PredictionOrder order,
                                              bool quad_twist, bool mask_contexts, bool triangle_twist,
-                                             bool mirror, PositionStats* stats) {
+                                             bool mirror, bool near_mirror, PositionStats* stats) {
   const PositionStats before = *stats;  // the coder adds its counts to stats
   // The corners, and 14.6's order, built once for every payload tried.
   VertexCorners corners;
@@ -655,7 +663,8 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   const bool contexts =
       mask_contexts && order == PredictionOrder::kGeometry && positions.q.size() / 3 >= kMaskContextsFrom;
   MirrorPlane plane;
-  const bool mirrored = order == PredictionOrder::kGeometry && mirror && find_mirror_plane(positions, &plane);
+  const bool mirrored =
+      order == PredictionOrder::kGeometry && mirror && find_mirror_plane(positions, &plane, near_mirror);
   std::vector<uint8_t> best =
       predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, mirrored ? &plane : nullptr,
                         encode_visit(positions.q, top, visit, stats, choice, start, contexts,
@@ -664,7 +673,23 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   if (contexts) method += 2;
   if (triangles_twisted) method = 8;
   const int method_without_mirror = method;
-  if (mirrored) method = 9;
+  if (mirrored) method = plane.near_images ? 10 : 9;
+  if (method == 10 && positions.q.size() / 3 < kGradedStartBelow) {
+    // Under 1,000 vertices method 9's payload too, the smaller kept (9 on a
+    // tie): a near image vertex may be a worse twin than none
+    // (fish_control_mesh at 12 bits: 364 bytes with method 9, 366 with 10).
+    PositionStats exact_stats = before;
+    MirrorPlane exact = plane;
+    exact.near_images = false;
+    std::vector<uint8_t> exact_payload =
+        predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, &exact,
+                          encode_visit(positions.q, top, visit, &exact_stats, choice, start, contexts, &exact));
+    if (!exact_payload.empty() && exact_payload.size() <= best.size()) {
+      best = std::move(exact_payload);
+      *stats = exact_stats;
+      method = 9;
+    }
+  }
   const uint32_t twins = stats->vertices_by_kind[int(PredictionKind::kMirror)] -
                          before.vertices_by_kind[int(PredictionKind::kMirror)];
   if (mirrored && positions.q.size() / 3 < kGradedStartBelow && twins < positions.q.size() / 3 / 8) {
@@ -681,9 +706,9 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
       method = method_without_mirror;
     }
   }
-  // Under 1,000 vertices the label order's payload too, unless method 9's
+  // Under 1,000 vertices the label order's payload too, unless method 9's or 10's
   // twins pay (the label order has none: on the corpus it never won then).
-  if (order == PredictionOrder::kGeometry && positions.q.size() / 3 < kGradedStartBelow && method != 9) {
+  if (order == PredictionOrder::kGeometry && positions.q.size() / 3 < kGradedStartBelow && method < 9) {
     PositionStats label_stats = before;
     const PredictionVisit labels_visit(corners, PredictionOrder::kLabels);
     std::vector<uint8_t> labels =
@@ -704,7 +729,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces, PositionMethod method,
                                       CandidateChoice choice, ClassStart start, PredictionOrder order,
                                       bool quad_twist, bool mask_contexts, bool triangle_twist, bool mirror,
-                                      PositionStats* stats) {
+                                      bool near_mirror, PositionStats* stats) {
   *stats = PositionStats{};
   stats->step = positions.step;
   stats->top = positions.top;
@@ -717,7 +742,7 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const
   PositionStats predicted_stats = *stats;
   std::vector<uint8_t> predicted =
       encode_predicted_choice(positions, faces, choice, start, order, quad_twist, mask_contexts, triangle_twist,
-                              mirror, &predicted_stats);
+                              mirror, near_mirror, &predicted_stats);
   if (predicted.empty()) {
     // Only vertices that all coincide cost so little (section 14.1); on
     // one point method 0's per-axis grid gives the same positions.

@@ -82,10 +82,13 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
                                                 bool triangle_twist = false, const MirrorPlane* mirror = nullptr);
 
 // 14.10's plane for POSN method 9, if the vertices have one: of the planes
-// halfway across the grid on each axis (sum top - 2 .. top + 2), the one
-// whose reflection puts the most of a sample of the vertices exactly onto
-// vertices; taken if it does so for 1/8 of all of them.
-bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane);
+// halfway across the grid on each axis (sum top - 2 .. top + 2) and the
+// plane most pairs of vertices make, the one whose reflection puts the most
+// of a sample of the vertices exactly onto vertices; taken if it does so
+// for 1/8 of all of them (1/16 under 1,000). With near (method 10), if none
+// is taken, the same counting a vertex within a step of the image too
+// (14.11); plane->near_images says whether near was allowed.
+bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, bool near);
 
 // 14.4.1's start when the options ask for POSN method 3.
 inline ClassStart class_start(const EncodeOptions& options) {
@@ -102,11 +105,13 @@ inline PredictionOrder prediction_order(const EncodeOptions& options) {
 // either as 6 or 7 where mask_contexts allows it and that is smaller, as
 // 8 where triangle_twist allows it and a pass of predictions says it pays,
 // either as 9 where mirror allows it and the vertices have a mirror plane
-// (14.10), else 3 with `start` graded under 1,000 vertices, or 1), method 0,
-// or the smaller of the two when both can carry the grid. Fills stats.
+// (14.10), as 10 where near_mirror allows it too (14.11; under 1,000
+// vertices the smaller of 9 and 10), else 3 with `start` graded under
+// 1,000 vertices, or 1), method 0, or the smaller of the two when both can
+// carry the grid. Fills stats.
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces,
                                       PositionMethod method, CandidateChoice choice, ClassStart start,
                                       PredictionOrder order, bool quad_twist, bool mask_contexts,
-                                      bool triangle_twist, bool mirror, PositionStats* stats);
+                                      bool triangle_twist, bool mirror, bool near_mirror, PositionStats* stats);
 
 }  // namespace qmc
