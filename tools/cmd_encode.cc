@@ -94,7 +94,10 @@ const char kHelp[] =
     "  --gim-store-blank   also code the samples of blank pixels (smooth planes\n"
     "                      for image tools, at some cost in bytes)\n"
     "  --format 1.N        write nothing that decoders older than 1.N cannot read:\n"
-    "                      1.11 predicts no vertex by its mirror image (POSN\n"
+    "                      1.12 takes no mirror image a step away (POSN\n"
+    "                      method 9, not 10) and no attribute twins (aTTR\n"
+    "                      coding 9), 1.11 predicts no vertex by its mirror\n"
+    "                      image (POSN\n"
     "                      methods 4 - 8, not 9), 1.10 predicts triangles\n"
     "                      without their neighbours'\n"
     "                      twist (POSN methods 4 - 7, not 8), 1.9 selects\n"
@@ -106,7 +109,7 @@ const char kHelp[] =
     "                      (method 1 or 3, not 4) and attribute values with\n"
     "                      coding 0 (not 4), 1.6 as method 1 only, 1.5\n"
     "                      also leaves out polygon coding 7, 1.4 also predicted\n"
-    "                      positions (deltas on the per-axis grid); default 1.12\n"
+    "                      positions (deltas on the per-axis grid); default 1.13\n"
     "  --uv-bits N         texture coordinates (spec 15) on a grid of 2^N - 1 steps\n"
     "                      over their range (default 12: 1/4 texel of a 1024\n"
     "                      texture)\n"
@@ -324,7 +327,7 @@ int parse(int argc, char** argv, EncodeArgs* args) {
       long minor = 0;
       if (value.compare(0, 2, "1.") != 0 || !parse_int(value.substr(2), kOldestTargetMinor, kNewestMinor, &minor) ||
           value.substr(2) != std::to_string(minor))
-        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 1.10, 1.11 or 1.12, got '" + value + "'");
+        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 1.10, 1.11, 1.12 or 1.13, got '" + value + "'");
       args->newest_minor = int(minor);
       continue;
     }
