@@ -67,13 +67,24 @@ void expect_example_candidates(const Example& e) {
 
 TEST(ValueTwins, ExampleOfTheSpec) { expect_example_candidates(Example()); }
 
-// Without a vertex at the image, the nearest point around it that has one:
-// vertex 4 at (4, 1, 1) is vertex 2's twin through the offset (0, 0, 1),
-// and vertex 2 vertex 4's through (0, 0, -1); the candidates are the same.
+// Without a vertex at the image, the points a step beside it along the
+// axis, down first: vertex 4 at (3, 1, 0) is vertex 2's twin (the image of
+// (0, 1, 0) is (4, 1, 0)), and vertex 2 at (0, 1, 0) vertex 4's (its image
+// is (1, 1, 0)); the candidates are the same. At (4, 1, 1), off the axis,
+// vertex 4 is no twin.
 TEST(ValueTwins, ATwinOneStepFromTheImage) {
   Example e;
-  e.positions[3 * 4 + 2] = 1;
+  e.positions[3 * 4] = 3;
   expect_example_candidates(e);
+  e.positions[3 * 4] = 4;
+  e.positions[3 * 4 + 2] = 1;
+  VertexCorners values;
+  values.build(5, e.faces.face_sizes, e.faces.corners);
+  ValueTwins twins(values, e.twins(), e.top);
+  for (uint32_t v = 0; v < 4; ++v) twins.decoded(v, e.q.data());
+  VertexPrediction p;
+  int64_t c[3];
+  EXPECT_FALSE(twins.find(4, e.q.data(), p, c));  // corner 7's vertex 4 has no twin
 }
 
 DecodedFile encoded_and_decoded(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* file) {

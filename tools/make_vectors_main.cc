@@ -3431,9 +3431,9 @@ Mesh lumpy_mirrored_sphere(int levels) {
 void write_posn10_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   qmc::EncodeOptions options;  // what `qmc encode` writes
-  // Spec 14.11's example: 14.10's kite with vertex 3 a step from vertex 2's image.
+  // Spec 14.11's example: 14.10's kite with vertex 3 a step beside vertex 2's image.
   Mesh kite = mirror_kite();
-  kite.positions[3 * 3 + 2] = 2;
+  kite.positions[3 * 3] = 11;
   qmc::EncodeOptions unit = options;
   unit.connectivity = qmc::ConnectivityChoice::kIndexed;
   unit.position_step = 1;
@@ -3900,10 +3900,10 @@ std::vector<uint8_t> coding9_by_hand(const std::vector<uint8_t>& plain, uint8_t 
 }
 
 // The fan of 15.14's example, positions on integers (step 1 from (0, 0, 0)),
-// written with its faces and labels as given; vertex 4 at (4, 1, dz).
-std::vector<uint8_t> twins_example_file(uint32_t dz) {
+// written with its faces and labels as given; vertex 4 at (x4, 1, 0).
+std::vector<uint8_t> twins_example_file(uint32_t x4) {
   Mesh fan;
-  fan.positions = {2, 0, 0, 1, 3, 0, 0, 1, 0, 3, 3, 0, 4, 1, float(dz)};
+  fan.positions = {2, 0, 0, 1, 3, 0, 0, 1, 0, 3, 3, 0, float(x4), 1, 0};
   fan.face_sizes = {3, 3, 3};
   fan.corners = {0, 1, 2, 0, 3, 1, 0, 4, 3};
   qmc::EncodeOptions unit = format_1_6_options();
@@ -3912,7 +3912,7 @@ std::vector<uint8_t> twins_example_file(uint32_t dz) {
   const std::vector<uint8_t> file = encode_with(fan, unit, "twins example");
   qmc::DecodedFile d;
   (void)qmc::decode(file.data(), file.size(), &d);
-  const std::vector<uint32_t> expected = {2, 0, 0, 1, 3, 0, 0, 1, 0, 3, 3, 0, 4, 1, dz};
+  const std::vector<uint32_t> expected = {2, 0, 0, 1, 3, 0, 0, 1, 0, 3, 3, 0, x4, 1, 0};
   if (d.quantized != expected || d.mesh.corners != fan.corners) {
     std::fprintf(stderr, "qmc-make-vectors: the twins example's labels or integers moved\n");
     std::exit(3);
@@ -3945,11 +3945,11 @@ void write_attribute_coding9_vectors(VectorWriter* w) {
   // Spec 15.14's example, its twin one step from the image, and a plane without twins.
   const uint32_t top[3] = {15, 6, 0};
   const std::vector<uint32_t> q = {10, 0, 0, 8, 6, 0, 5, 2, 0, 12, 6, 0, 15, 2, 0};
-  w->valid("valid_attr_coding9_example", coding9_by_hand(twins_example_file(0), 0, {0, 4}, q, top), nullptr);
-  w->valid("valid_attr_coding9_twin_a_step_away", coding9_by_hand(twins_example_file(1), 0, {0, 4}, q, top),
+  w->valid("valid_attr_coding9_example", coding9_by_hand(twins_example_file(4), 0, {0, 4}, q, top), nullptr);
+  w->valid("valid_attr_coding9_twin_a_step_away", coding9_by_hand(twins_example_file(3), 0, {0, 4}, q, top),
            nullptr);
-  w->valid("valid_attr_coding9_no_twins", coding9_by_hand(twins_example_file(0), 0, {1, 40}, q, top), nullptr);
-  w->valid("valid_attr_coding9_options_7", coding9_by_hand(twins_example_file(0), 7, {0, 4}, q, top), nullptr);
+  w->valid("valid_attr_coding9_no_twins", coding9_by_hand(twins_example_file(4), 0, {1, 40}, q, top), nullptr);
+  w->valid("valid_attr_coding9_options_7", coding9_by_hand(twins_example_file(4), 7, {0, 4}, q, top), nullptr);
   // What the encoder writes: mirrored texture coordinates with seams on a
   // sphere of triangles and a torus of quads; over POSN method 0; a colour
   // and a one-component value per vertex.

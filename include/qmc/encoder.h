@@ -128,12 +128,12 @@ struct EncodeOptions {
   // before it may be predicted by it, POSN method 9 (format 1.12, spec
   // 14.10). false keeps methods 4 - 8, which 1.11 decoders read.
   bool mirror_symmetry = true;
-  // With mirror_symmetry: image vertices also one step from the mirror
-  // image, where the halves of a mirrored mesh differ by a step once
-  // quantized, POSN method 10 (format 1.13, spec 14.11): face's positions
-  // 6 % smaller at 14 bits, camelhead's 6 % at 14 and 16 bits (where no
-  // plane maps 1/8 of the vertices exactly, one that maps them within a
-  // step is taken). false keeps method 9, which 1.12 decoders read.
+  // With mirror_symmetry: image vertices also a step beside the mirror
+  // image along its axis, where the halves of a mirrored mesh round apart
+  // once quantized, POSN method 10 (format 1.13, spec 14.11): face's
+  // positions 6 % smaller at 14 bits, camelhead's 6 % at 14 and 16 bits
+  // (where no plane maps 1/8 of the vertices exactly, one that maps them
+  // within that step is taken). false keeps method 9, which 1.12 decoders read.
   bool near_mirror = true;
   // Attribute values on a grid may take aTTR coding 4 (spec 15.9, 14.6's
   // order over the attribute mesh) where it is smaller than coding 0: 2-7 %

@@ -42,16 +42,12 @@ size_t GridPointTable::slot(const uint32_t q[3]) const {
   return size_t(h) & mask_;
 }
 
-const int8_t kNearPointOffsets[kNearPoints][3] = {
-    {-1, 0, 0},  {0, -1, 0},  {0, 0, -1}, {0, 0, 1},  {0, 1, 0},   {1, 0, 0},   {-1, -1, 0}, {-1, 0, -1}, {-1, 0, 1},
-    {-1, 1, 0},  {0, -1, -1}, {0, -1, 1}, {0, 1, -1}, {0, 1, 1},   {1, -1, 0},  {1, 0, -1},  {1, 0, 1},   {1, 1, 0},
-    {-1, -1, -1}, {-1, -1, 1}, {-1, 1, -1}, {-1, 1, 1}, {1, -1, -1}, {1, -1, 1}, {1, 1, -1}, {1, 1, 1}};
-
-uint32_t GridPointTable::find_near(const uint32_t q[3]) const {
+uint32_t GridPointTable::find_beside(const uint32_t q[3], int axis) const {
   uint32_t vertex = find(q);
-  for (int i = 0; i < kNearPoints && vertex == kNone; ++i) {
-    uint32_t point[3];  // a coordinate below 0 wraps above 2^31: no vertex is there
-    for (int j = 0; j < 3; ++j) point[j] = uint32_t(int64_t(q[j]) + kNearPointOffsets[i][j]);
+  for (const int step : {-1, 1}) {
+    if (vertex != kNone) break;
+    uint32_t point[3] = {q[0], q[1], q[2]};  // below 0 wraps above 2^31: no vertex is there
+    point[axis] = uint32_t(int64_t(point[axis]) + step);
     vertex = find(point);
   }
   return vertex;
@@ -140,8 +136,8 @@ void MirrorCandidates::decoded(uint32_t v, const uint32_t* q) {
   uint32_t m[3];
   if (!image(point, m)) return;
   // v itself when v lies on the plane; in method 10 (14.11) else the first
-  // vertex decoded at the first point around the image that has one.
-  const uint32_t twin = plane_.near_images ? first_at_.find_near(m) : first_at_.find(m);
+  // vertex decoded a step beside the image along the axis.
+  const uint32_t twin = plane_.near_images ? first_at_.find_beside(m, plane_.axis) : first_at_.find(m);
   if (twin == GridPointTable::kNone) return;
   image_vertex_[v] = twin;
   // v is the first vertex at twin's image point: twin's image vertex.

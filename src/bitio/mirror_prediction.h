@@ -24,13 +24,6 @@ struct MirrorPlane {
   bool near_images = false;  // 14.11 (POSN method 10): image vertices also a step from the image
 };
 
-// 14.11: the points around a mirror image searched for a vertex when none is
-// at the image itself (the halves of a mirrored mesh, quantized, are often a
-// step apart: the plane falls between grid points, the input's digits
-// differ), nearest first (L1), in order of (x, y, z) among equals. POSN
-// method 10's image vertices and aTTR coding 9's twins (15.14) use them.
-inline constexpr int kNearPoints = 26;
-extern const int8_t kNearPointOffsets[kNearPoints][3];
 
 // The first vertex decoded at each grid point: an open-addressing table
 // whose hash is keyed per table, so that no file can make its probes long
@@ -40,8 +33,11 @@ class GridPointTable {
   explicit GridPointTable(uint32_t capacity_for);
   // The first vertex inserted at q, or kNone.
   uint32_t find(const uint32_t q[3]) const;
-  // The same at q, else at q plus the first of kNearPointOffsets that has one (14.11).
-  uint32_t find_near(const uint32_t q[3]) const;
+  // 14.11: the same at q, else at q a step down the axis, else a step up:
+  // where a mirror image falls when the quantized halves round apart (the
+  // plane between grid points). POSN method 10's image vertices and aTTR
+  // coding 9's twins (15.14) look there.
+  uint32_t find_beside(const uint32_t q[3], int axis) const;
   // Inserts v at q unless a vertex is there already; returns that vertex,
   // or kNone when v was inserted.
   uint32_t insert(const uint32_t q[3], uint32_t v);

@@ -36,7 +36,7 @@ ValueTwins::ValueTwins(const VertexCorners& values, const AttributeTwins& twins,
     std::copy(&twins.positions[3 * size_t(x)], &twins.positions[3 * size_t(x)] + 3, image);
     if (image[axis] > twins.plane.sum) continue;  // the image's coordinate would be below 0
     image[axis] = twins.plane.sum - image[axis];
-    twin_[x] = first_at.find_near(image);  // 15.14: 14.11's points around the image too
+    twin_[x] = first_at.find_beside(image, axis);  // 15.14: 14.11's points beside the image too
   }
 }
 

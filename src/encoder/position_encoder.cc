@@ -408,10 +408,10 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
 // find_mirror_plane's screen: every plane tried on about kMirrorScreen
 // vertices, those that map 1/16 of them onto vertices on about
 // kMirrorSample, the best of those on all (1/8 needed, 1/16 below
-// kGradedStartBelow vertices), then with method 10 counting the points
-// within a step too. A mesh without a plane costs a table of its points,
-// one of (a sample of) its columns per axis, and 18 x kMirrorScreen
-// look-ups, 27 times as many with method 10.
+// kGradedStartBelow vertices), then with method 10 from kGradedStartBelow
+// vertices on counting the points within a step too. A mesh without a plane
+// costs a table of its points, one of (a sample of) its columns per axis,
+// and 18 x kMirrorScreen look-ups, 27 times as many more in that pass.
 constexpr uint32_t kMirrorScreen = 128, kMirrorSample = 1024, kMirroredShareDivisor = 8;
 
 namespace {
@@ -471,12 +471,30 @@ std::vector<uint32_t> candidate_sums(const QuantizedPositions& positions, int ax
 
 }  // namespace
 
+namespace {
+
+// For the plane search's second pass: a vertex at `image` or at any of the
+// 26 points around it (the halves of a scanned mesh, quantized, are often a
+// step apart on any axis; method 10's twins then are the ones a step
+// beside the image along the axis, 14.11).
+uint32_t near_vertex(const GridPointTable& points, const uint32_t image[3]) {
+  uint32_t vertex = points.find(image);
+  for (int i = 0; i < 27 && vertex == GridPointTable::kNone; ++i) {
+    uint32_t point[3];  // below 0 wraps above 2^31: no vertex is there
+    for (int j = 0; j < 3; ++j) point[j] = uint32_t(int64_t(image[j]) + (j == 0 ? i / 9 : j == 1 ? i / 3 % 3 : i % 3) - 1);
+    vertex = points.find(point);
+  }
+  return vertex;
+}
+
+}  // namespace
+
 bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, bool near) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
   if (n < 16) return false;
   GridPointTable points(n);
   for (uint32_t v = 0; v < n; ++v) points.insert(&positions.q[3 * size_t(v)], v);
-  bool near_hits = false;  // 14.11: a vertex within a step of the image counts too
+  bool near_hits = false;  // the second pass: a vertex within a step of the image counts too
   // Of every stride-th vertex, the share (in 1/count) whose image is a vertex.
   const auto hits = [&](MirrorPlane candidate, uint32_t stride) {
     uint32_t count = 0;
@@ -486,7 +504,7 @@ bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, 
       const int64_t m = int64_t(candidate.sum) - int64_t(image[candidate.axis]);
       if (m < 0 || m > int64_t(positions.top[size_t(candidate.axis)])) continue;
       image[candidate.axis] = uint32_t(m);
-      count += (near_hits ? points.find_near(image) : points.find(image)) != GridPointTable::kNone;
+      count += (near_hits ? near_vertex(points, image) : points.find(image)) != GridPointTable::kNone;
     }
     return count;
   };
@@ -496,7 +514,10 @@ bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, 
   // Under kGradedStartBelow vertices the encoder codes the positions without
   // the plane too where it has few twins, so a plane of fewer is tried.
   const uint32_t divisor = n < kGradedStartBelow ? 2 * kMirroredShareDivisor : kMirroredShareDivisor;
-  for (int pass = 0; pass < (near ? 2 : 1); ++pass) {
+  // The second pass (method 10) from kGradedStartBelow vertices on: it
+  // finds the planes of scanned halves (camelhead at 16 bits), which small
+  // meshes, modelled, rarely have, and costs 27 look-ups a vertex screened.
+  for (int pass = 0; pass < (near && n >= kGradedStartBelow ? 2 : 1); ++pass) {
     near_hits = pass == 1;
     uint32_t best = 0;
     for (int axis = 0; axis < 3; ++axis) {

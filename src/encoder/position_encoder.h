@@ -86,8 +86,8 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
 // plane most pairs of vertices make, the one whose reflection puts the most
 // of a sample of the vertices exactly onto vertices; taken if it does so
 // for 1/8 of all of them (1/16 under 1,000). With near (method 10), if none
-// is taken, the same counting a vertex within a step of the image too
-// (14.11); plane->near_images says whether near was allowed.
+// is taken, from 1,000 vertices on the same counting a vertex within a step
+// of the image too; plane->near_images says whether near was allowed.
 bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, bool near);
 
 // 14.4.1's start when the options ask for POSN method 3.
