@@ -266,9 +266,9 @@ struct GimEncodeStats {
 
 // Sections 6 and 14: how the positions were coded.
 struct PositionStats {
-  int method = 0;                  // POSN method: 0 deltas, 1 or 3 - 9 predicted
-  int features = 0;                // methods 4 - 9: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
-  bool graded_start = false;       // methods 3 - 9: 14.4.1's start
+  int method = 0;                  // POSN method: 0 deltas, 1 or 3 - 10 predicted
+  int features = 0;                // methods 4 - 10: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
+  bool graded_start = false;       // methods 3 - 10: 14.4.1's start
   std::array<double, 3> step{};    // the grid's step per axis
   std::array<uint32_t, 3> top{};   // the largest grid coordinate per axis
   double error_bound = 0;          // Euclidean bound of the rounding: |step| / 2
@@ -277,6 +277,9 @@ struct PositionStats {
   // and 4 the mirror candidate of 14.10).
   std::array<uint32_t, 5> vertices_by_kind{};
   std::array<double, 5> bits_by_kind{};
+  // Method 10: the vertices paired with a partner beside the image (14.11),
+  // not at it; with none, its payload is method 9's but for the selector.
+  uint32_t pairs_beside = 0;
 };
 
 // Section 15: how one attribute was coded.

@@ -137,7 +137,11 @@ void MirrorCandidates::decoded(uint32_t v, const uint32_t* q) {
   if (!image(point, m)) return;
   // v itself when v lies on the plane; in method 10 (14.11) else the first
   // vertex decoded a step beside the image along the axis.
-  const uint32_t twin = plane_.near_images ? first_at_.find_beside(m, plane_.axis) : first_at_.find(m);
+  uint32_t twin = first_at_.find(m);
+  if (twin == GridPointTable::kNone && plane_.near_images) {
+    twin = first_at_.find_beside(m, plane_.axis);
+    pairs_beside_ += twin != GridPointTable::kNone;
+  }
   if (twin == GridPointTable::kNone) return;
   image_vertex_[v] = twin;
   // v is the first vertex at twin's image point: twin's image vertex.

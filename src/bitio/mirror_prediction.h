@@ -76,6 +76,8 @@ class MirrorCandidates final : public MirrorSource {
   MirrorCandidates(const VertexCorners& mesh, MirrorPlane plane, const uint32_t top[3]);
   bool find(uint32_t v, const uint32_t* q, const VertexPrediction& p, int64_t out[3]) const override;
   void decoded(uint32_t v, const uint32_t* q) override;
+  // Method 10: how many vertices have paired with a partner beside their image (14.11).
+  uint32_t pairs_beside() const { return pairs_beside_; }
 
  private:
   bool is_decoded(uint32_t u) const { return first_[u] != GridPointTable::kNone; }
@@ -90,6 +92,7 @@ class MirrorCandidates final : public MirrorSource {
   // its image vertex once one is decoded (kNone before). Kept as vertices are decoded, so that a
   // search looks up no grid point: each image vertex is found once.
   std::vector<uint32_t> first_, image_vertex_;
+  uint32_t pairs_beside_ = 0;
 };
 
 inline constexpr int kMirrorContexts = 12;

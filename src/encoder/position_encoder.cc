@@ -317,7 +317,8 @@ std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t
   VertexPrediction p;
   TriangleTwistWeight twist_weight;  // 14.9: no correction without the triangle twist
   std::unique_ptr<MirrorSource> mirrors;
-  if (mirror) mirrors = std::make_unique<MirrorCandidates>(visit.mesh(), *mirror, top);
+  MirrorCandidates* images = nullptr;
+  if (mirror) mirrors.reset(images = new MirrorCandidates(visit.mesh(), *mirror, top));
   if (twins) mirrors = std::make_unique<ValueTwins>(visit.mesh(), *twins, top);
   for (uint32_t i = 0; i < n; ++i) {
     const uint32_t v = visit.item(i);
@@ -334,7 +335,15 @@ std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t
     ++st.vertices_by_kind[int(p.kind)];
     st.bits_by_kind[int(p.kind)] += rc.meter.bits - before;
   }
+  if (images) st.pairs_beside += images->pairs_beside();
   return rc.rc.finish();
+}
+
+// 14.1: where the selector is in a predicted POSN payload (after vertex_count).
+size_t selector_offset(const QuantizedPositions& positions) {
+  std::vector<uint8_t> count;
+  put_varint(&count, positions.q.size() / 3);
+  return count.size();
 }
 
 // 14.1: the payload of a predicted POSN, its header and the stream; empty
@@ -698,7 +707,12 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   if (triangles_twisted) method = 8;
   const int method_without_mirror = method;
   if (mirrored) method = plane.near_images ? 10 : 9;
-  if (method == 10 && positions.q.size() / 3 < kGradedStartBelow) {
+  if (method == 10 && stats->pairs_beside == before.pairs_beside && !best.empty()) {
+    // No vertex paired beside its image: every decision is method 9's, and
+    // only the selector differs (14.11); a file 1.12 decoders read.
+    best[selector_offset(positions)] = kMirrorSelector;
+    method = 9;
+  } else if (method == 10 && positions.q.size() / 3 < kGradedStartBelow) {
     // Under 1,000 vertices method 9's payload too, the smaller kept (9 on a
     // tie): a near image vertex may be a worse twin than none
     // (fish_control_mesh at 12 bits: 364 bytes with method 9, 366 with 10).
