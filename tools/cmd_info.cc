@@ -184,7 +184,7 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
               f.quad_coding, f.quantization.bits, f.quantization.method);
   // Spec 14.9's features (methods 5 - 7 say theirs without the byte): 1 quad twist, 2 contexts, 4 triangle twist.
   std::printf("\"position_features\":%d,", f.quantization.features);
-  // Spec 14.10's plane (method 9): the axis, or -1, and the sum.
+  // Spec 14.10's plane (methods 9 and 10): the axis, or -1, and the sum.
   std::printf("\"position_mirror_axis\":%d,\"position_mirror_sum\":%u,", f.quantization.mirror_axis,
               f.quantization.mirror_sum);
   std::printf("\"order_restored\":%s,\"order_flags\":%u,", f.order_restored ? "true" : "false", f.order_flags);

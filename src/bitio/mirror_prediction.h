@@ -1,4 +1,4 @@
-// Section 14.10 of spec/qmc-format.md (POSN method 9): the mirror
+// Sections 14.10 and 14.11 of spec/qmc-format.md (POSN methods 9, 10): the mirror
 // candidate. A mesh modelled with a mirror (most characters, animals,
 // vehicles and heads are) has a vertex v' for nearly every vertex v with
 // q[v'] = M(q[v]), M a reflection across a plane of the grid. When v' was

@@ -17,7 +17,7 @@ namespace qmc {
 
 inline constexpr int kPositionBuckets = 16;
 // 14.4: the class contexts' groups: previous vertex, neighbours, candidates;
-// and 14.10's mirror candidate (POSN method 9).
+// and 14.10's mirror candidate (POSN methods 9 and 10; aTTR coding 9's twin, 15.14).
 inline constexpr int kPositionGroups = 4;
 inline constexpr int kPositionMaxClass = 30;  // |r| <= top <= 2^30 - 1
 

@@ -153,7 +153,7 @@ enum class PredictionKind : uint8_t {
   kNeighbours = 1,  // the mean of decoded neighbours
   kSingle = 2,      // one parallelogram, polygon or strip rule
   kSeveral = 3,     // the weighted mean of two or more
-  kMirror = 4,      // 14.10: the mirror candidate (POSN method 9)
+  kMirror = 4,      // 14.10: the mirror candidate (POSN methods 9, 10; 15.14's twin)
 };
 inline constexpr int kPredictionKinds = 5;
 

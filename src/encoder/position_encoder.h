@@ -81,7 +81,7 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
                                                 bool quad_twist = false, bool mask_contexts = false,
                                                 bool triangle_twist = false, const MirrorPlane* mirror = nullptr);
 
-// 14.10's plane for POSN method 9, if the vertices have one: of the planes
+// 14.10's plane for POSN methods 9 and 10, if the vertices have one: of the planes
 // halfway across the grid on each axis (sum top - 2 .. top + 2) and the
 // plane most pairs of vertices make, the one whose reflection puts the most
 // of a sample of the vertices exactly onto vertices; taken if it does so
