@@ -1438,6 +1438,15 @@ void write_hardening_vectors(VectorWriter* w) {
 }
 
 // Encodes with `options`, which must give the POSN method `method`.
+// The options with the faces listed as given (indexed) and the positions on
+// the grid of step 1 from their box's corner: the spec's examples, whose
+// labels and integers the file must keep.
+qmc::EncodeOptions on_unit_grid(qmc::EncodeOptions options) {
+  options.connectivity = qmc::ConnectivityChoice::kIndexed;
+  options.position_step = 1;
+  return options;
+}
+
 std::vector<uint8_t> encode_posn_method(const Mesh& mesh, const qmc::EncodeOptions& options, int method) {
   std::vector<uint8_t> out;
   qmc::EncodeStats stats;
@@ -3127,9 +3136,7 @@ void write_posn8_vectors(VectorWriter* w) {
   options.near_mirror = false;  // and POSN method 10 (14.11)
   // Spec 14.9's example, written as method 8 with the twist of triangles.
   const Mesh hexagon = twist_hexagon();
-  qmc::EncodeOptions unit = options;
-  unit.connectivity = qmc::ConnectivityChoice::kIndexed;
-  unit.position_step = 1;
+  const qmc::EncodeOptions unit = on_unit_grid(options);
   w->valid("valid_posn8_hexagon", rewritten_with_triangle_twist(encode_with(hexagon, unit, "hexagon"), false, false),
            &hexagon);
   // What the encoder writes where the twist pays: a regular torus of
@@ -3316,9 +3323,7 @@ void write_posn9_vectors(VectorWriter* w) {
   options.near_mirror = false;  // and POSN method 10 (14.11)
   // Spec 14.10's example, on the integers as given.
   const Mesh kite = mirror_kite();
-  qmc::EncodeOptions unit = options;
-  unit.connectivity = qmc::ConnectivityChoice::kIndexed;
-  unit.position_step = 1;
+  const qmc::EncodeOptions unit = on_unit_grid(options);
   const qmc::MirrorPlane kite_plane{0, 12};
   w->valid("valid_posn9_kite", rewritten_with_mirror(encode_with(kite, unit, "kite"), 0, &kite_plane), &kite);
   // What the encoder writes on mirrored meshes: a sphere of triangles (with
@@ -3434,9 +3439,7 @@ void write_posn10_vectors(VectorWriter* w) {
   // Spec 14.11's example: 14.10's kite with vertex 3 a step beside vertex 2's image.
   Mesh kite = mirror_kite();
   kite.positions[3 * 3] = 11;
-  qmc::EncodeOptions unit = options;
-  unit.connectivity = qmc::ConnectivityChoice::kIndexed;
-  unit.position_step = 1;
+  const qmc::EncodeOptions unit = on_unit_grid(options);
   const qmc::MirrorPlane kite_plane{0, 12, true};
   w->valid("valid_posn10_kite", rewritten_with_mirror(encode_with(kite, unit, "kite"), 0, &kite_plane), &kite);
   // What the encoder writes where the halves are a step apart: triangles at
@@ -3906,9 +3909,7 @@ std::vector<uint8_t> twins_example_file(uint32_t x4) {
   fan.positions = {2, 0, 0, 1, 3, 0, 0, 1, 0, 3, 3, 0, float(x4), 1, 0};
   fan.face_sizes = {3, 3, 3};
   fan.corners = {0, 1, 2, 0, 3, 1, 0, 4, 3};
-  qmc::EncodeOptions unit = format_1_6_options();
-  unit.connectivity = qmc::ConnectivityChoice::kIndexed;
-  unit.position_step = 1;
+  const qmc::EncodeOptions unit = on_unit_grid(format_1_6_options());
   const std::vector<uint8_t> file = encode_with(fan, unit, "twins example");
   qmc::DecodedFile d;
   (void)qmc::decode(file.data(), file.size(), &d);

@@ -24,7 +24,6 @@ struct MirrorPlane {
   bool near_images = false;  // 14.11 (POSN method 10): image vertices also a step from the image
 };
 
-
 // The first vertex decoded at each grid point: an open-addressing table
 // whose hash is keyed per table, so that no file can make its probes long
 // (the vertices it returns do not depend on the key).

@@ -65,7 +65,8 @@ bool ValueTwins::find(uint32_t v, const uint32_t* q, const VertexPrediction&, in
     const bool steps = is_decoded(b) && is_decoded(twin_b);  // else the flips carried
     for (int j = 0; j < 3; ++j) {
       const int64_t qa = q[3 * size_t(a) + j], ta = q[3 * size_t(twin_a) + j];
-      if (steps) sign_[j] = twin_sign(int64_t(q[3 * size_t(b) + j]) - qa, int64_t(q[3 * size_t(twin_b) + j]) - ta, sign_[j]);
+      if (steps)
+        sign_[j] = twin_sign(int64_t(q[3 * size_t(b) + j]) - qa, int64_t(q[3 * size_t(twin_b) + j]) - ta, sign_[j]);
       out[j] = std::clamp<int64_t>(qa + sign_[j] * (int64_t(q[3 * size_t(twin) + j]) - ta), 0, top_[j]);
     }
     return true;

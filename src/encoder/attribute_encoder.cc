@@ -160,7 +160,7 @@ std::vector<uint8_t> encode_grid_values(const std::vector<float>& table, uint32_
   for (uint32_t a = 0; a < c; ++a) put_varint(&out, top[a]);
   std::vector<uint8_t> stream = encode_predicted_grid(q, top, mesh, nullptr, CandidateChoice::kFewestBits);
   *coding = kCodingGrid;
-  uint8_t options = 0;  // coding 7's
+  uint8_t options = 0;  // coding 7's and 9's: the order and start of the coding kept
   const auto keep_if_smaller = [&](uint8_t candidate, ClassStart start, PredictionOrder order, const PositionGuide* g) {
     std::vector<uint8_t> other =
         encode_predicted_grid(q, top, mesh, nullptr, CandidateChoice::kFewestBits, start, order, g);
@@ -200,19 +200,14 @@ std::vector<uint8_t> encode_grid_values(const std::vector<float>& table, uint32_
     else
       keep_if_smaller(kCodingGridGraded, ClassStart::kGraded, PredictionOrder::kLabels, nullptr);
   }
-  if (twins) {
+  if (twins) {  // `options` holds the winner's order and start, whatever its coding
     const bool guided = *coding == kCodingGuided;
-    const bool geometry = guided ? (options & kGuidedGeometryOrder) != 0
-                                 : *coding == kCodingGeometryOrder || *coding == kCodingGeometryOrderGraded;
-    const bool graded = guided ? (options & kGuidedGradedStart) != 0
-                               : *coding == kCodingGridGraded || *coding == kCodingGeometryOrderGraded;
     std::vector<uint8_t> twinned = encode_predicted_grid(
-        q, top, mesh, nullptr, CandidateChoice::kFewestBits, graded ? ClassStart::kGraded : ClassStart::kFlat,
-        geometry ? PredictionOrder::kGeometry : PredictionOrder::kLabels, guided ? guide : nullptr, false, false,
-        false, twins);
-    std::vector<uint8_t> fields = {
-        uint8_t((geometry ? kGuidedGeometryOrder : 0) | (graded ? kGuidedGradedStart : 0) | (guided ? kTwinsGuided : 0)),
-        uint8_t(twins->plane.axis)};
+        q, top, mesh, nullptr, CandidateChoice::kFewestBits,
+        options & kGuidedGradedStart ? ClassStart::kGraded : ClassStart::kFlat,
+        options & kGuidedGeometryOrder ? PredictionOrder::kGeometry : PredictionOrder::kLabels,
+        guided ? guide : nullptr, false, false, false, twins);
+    std::vector<uint8_t> fields = {uint8_t(options | (guided ? kTwinsGuided : 0)), uint8_t(twins->plane.axis)};
     put_varint(&fields, twins->plane.sum);
     if (fields.size() + twinned.size() < stream.size() + (guided ? 1 : 0)) {
       stream = std::move(twinned);
@@ -383,9 +378,9 @@ Status encode_attribute(const MeshAttribute& attribute, const Mesh& file_mesh, c
     guide.vertex_of_corner = file_mesh.corners.data();
     guide.positions = quantized.data();
     const bool guided = options.attribute_guided && c == 2 && quantized.size() == 3 * vertex_count;
+    const bool twinned = plane && quantized.size() == 3 * vertex_count;
     AttributeTwins twins;  // 15.14: over CONN's faces and the positions' integers
-    if (plane) twins = AttributeTwins{*plane, &file_mesh, quantized.data(), uint32_t(vertex_count)};
-    const bool twinned = plane && options.attribute_twins && quantized.size() == 3 * vertex_count;
+    if (twinned) twins = AttributeTwins{*plane, &file_mesh, quantized.data(), uint32_t(vertex_count)};
     values = encode_grid_values(table, c, bits_for(attribute.kind, options), attribute_mesh,
                                 options.attribute_geometry_order, options.attribute_graded_start,
                                 guided ? &guide : nullptr, twinned ? &twins : nullptr, &stats->step, &coding);

@@ -478,21 +478,20 @@ std::vector<uint32_t> candidate_sums(const QuantizedPositions& positions, int ax
   return sums;
 }
 
-}  // namespace
-
-namespace {
-
 // For the plane search's second pass: a vertex at `image` or at any of the
 // 26 points around it (the halves of a scanned mesh, quantized, are often a
 // step apart on any axis; method 10's twins then are the ones a step
 // beside the image along the axis, 14.11).
 uint32_t near_vertex(const GridPointTable& points, const uint32_t image[3]) {
   uint32_t vertex = points.find(image);
-  for (int i = 0; i < 27 && vertex == GridPointTable::kNone; ++i) {
-    uint32_t point[3];  // below 0 wraps above 2^31: no vertex is there
-    for (int j = 0; j < 3; ++j) point[j] = uint32_t(int64_t(image[j]) + (j == 0 ? i / 9 : j == 1 ? i / 3 % 3 : i % 3) - 1);
-    vertex = points.find(point);
-  }
+  for (int dx = -1; dx <= 1 && vertex == GridPointTable::kNone; ++dx)
+    for (int dy = -1; dy <= 1 && vertex == GridPointTable::kNone; ++dy)
+      for (int dz = -1; dz <= 1 && vertex == GridPointTable::kNone; ++dz) {
+        // below 0 wraps above 2^31: no vertex is there
+        const uint32_t point[3] = {uint32_t(int64_t(image[0]) + dx), uint32_t(int64_t(image[1]) + dy),
+                                   uint32_t(int64_t(image[2]) + dz)};
+        vertex = points.find(point);
+      }
   return vertex;
 }
 
