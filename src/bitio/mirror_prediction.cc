@@ -43,12 +43,16 @@ size_t GridPointTable::slot(const uint32_t q[3]) const {
 }
 
 uint32_t GridPointTable::find_beside(const uint32_t q[3], int axis) const {
-  uint32_t vertex = find(q);
+  const uint32_t vertex = find(q);
+  return vertex != kNone ? vertex : find_next_to(q, axis);
+}
+
+uint32_t GridPointTable::find_next_to(const uint32_t q[3], int axis) const {
+  uint32_t vertex = kNone;
   for (const int step : {-1, 1}) {
-    if (vertex != kNone) break;
     uint32_t point[3] = {q[0], q[1], q[2]};  // below 0 wraps above 2^31: no vertex is there
     point[axis] = uint32_t(int64_t(point[axis]) + step);
-    vertex = find(point);
+    if ((vertex = find(point)) != kNone) break;
   }
   return vertex;
 }
@@ -77,7 +81,8 @@ MirrorCandidates::MirrorCandidates(const VertexCorners& mesh, MirrorPlane plane,
       plane_(plane),
       first_at_(mesh.vertex_count()),
       first_(mesh.vertex_count(), GridPointTable::kNone),
-      image_vertex_(mesh.vertex_count(), GridPointTable::kNone) {
+      image_vertex_(mesh.vertex_count(), GridPointTable::kNone),
+      image_point_(3 * size_t(mesh.vertex_count()), kNotDecoded) {
   std::copy(top, top + 3, top_);
 }
 
@@ -89,11 +94,9 @@ bool MirrorCandidates::image(const uint32_t* point, uint32_t out[3]) const {
   return true;
 }
 
-bool MirrorCandidates::find(uint32_t v, const uint32_t* q, const VertexPrediction& p, int64_t out[3]) const {
+bool MirrorCandidates::find(uint32_t v, const uint32_t* /*q*/, const VertexPrediction& p, int64_t out[3]) const {
   constexpr int64_t kNoneYet = std::numeric_limits<int64_t>::max();
   int64_t best = kNoneYet;
-  const int axis = plane_.axis;
-  const int64_t sum = plane_.sum, top = top_[axis];
   const int64_t reference[3] = {p.value[0], p.value[1], p.value[2]};
   uint32_t searched[kMirrorNeighbours];
   int neighbours = 0;
@@ -109,15 +112,14 @@ bool MirrorCandidates::find(uint32_t v, const uint32_t* q, const VertexPredictio
       const int corners = int(std::min<ptrdiff_t>(mesh_.end(u_image) - mesh_.begin(u_image), kMirrorCorners));
       for (int k = 0; k < corners; ++k)
         for (const uint32_t w : {around[k].previous, around[k].next}) {
-          if (!is_decoded(w)) continue;
-          const uint32_t* point = &q[3 * size_t(w)];
-          int64_t c[3] = {point[0], point[1], point[2]};
-          c[axis] = std::clamp<int64_t>(sum - c[axis], 0, top);
-          const int64_t distance =
-              std::abs(c[0] - reference[0]) + std::abs(c[1] - reference[1]) + std::abs(c[2] - reference[2]);
+          const uint32_t* img = &image_point_[3 * size_t(w)];
+          if (img[0] == kNotDecoded) continue;
+          const int64_t distance = std::abs(int64_t(img[0]) - reference[0]) +
+                                   std::abs(int64_t(img[1]) - reference[1]) +
+                                   std::abs(int64_t(img[2]) - reference[2]);
           if (distance >= best) continue;  // only a smaller distance replaces the first
           best = distance;
-          std::copy(c, c + 3, out);
+          for (int a = 0; a < 3; ++a) out[a] = img[a];
           if (best == 0) return true;  // nothing later can be smaller
         }
     }
@@ -127,6 +129,11 @@ bool MirrorCandidates::find(uint32_t v, const uint32_t* q, const VertexPredictio
 
 void MirrorCandidates::decoded(uint32_t v, const uint32_t* q) {
   const uint32_t* point = &q[3 * size_t(v)];
+  // 14.10's img of v, clamped: what a search meeting v as a w compares.
+  uint32_t* img = &image_point_[3 * size_t(v)];
+  std::copy(point, point + 3, img);
+  const int axis = plane_.axis;
+  img[axis] = uint32_t(std::clamp<int64_t>(int64_t(plane_.sum) - int64_t(point[axis]), 0, top_[axis]));
   const uint32_t first = first_at_.insert(point, v);
   if (first != GridPointTable::kNone) {  // a duplicate: its images are the first vertex's
     first_[v] = first;
@@ -139,7 +146,7 @@ void MirrorCandidates::decoded(uint32_t v, const uint32_t* q) {
   // vertex decoded a step beside the image along the axis.
   uint32_t twin = first_at_.find(m);
   if (twin == GridPointTable::kNone && plane_.near_images) {
-    twin = first_at_.find_beside(m, plane_.axis);
+    twin = first_at_.find_next_to(m, plane_.axis);
     pairs_beside_ += twin != GridPointTable::kNone;
   }
   if (twin == GridPointTable::kNone) return;

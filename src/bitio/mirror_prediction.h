@@ -37,6 +37,8 @@ class GridPointTable {
   // plane between grid points). POSN method 10's image vertices and aTTR
   // coding 9's twins (15.14) look there.
   uint32_t find_beside(const uint32_t q[3], int axis) const;
+  // The points a step down and up the axis alone (find_beside's second look).
+  uint32_t find_next_to(const uint32_t q[3], int axis) const;
   // Inserts v at q unless a vertex is there already; returns that vertex,
   // or kNone when v was inserted.
   uint32_t insert(const uint32_t q[3], uint32_t v);
@@ -91,6 +93,11 @@ class MirrorCandidates final : public MirrorSource {
   // its image vertex once one is decoded (kNone before). Kept as vertices are decoded, so that a
   // search looks up no grid point: each image vertex is found once.
   std::vector<uint32_t> first_, image_vertex_;
+  // Per vertex, once decoded: M(q) with the axis clamped to the grid (14.10's
+  // img), kept so that a search reads it instead of working it out again for
+  // each of the up to 64 w; kNotDecoded (above any grid integer) before.
+  std::vector<uint32_t> image_point_;
+  static constexpr uint32_t kNotDecoded = 0xFFFFFFFFu;
   uint32_t pairs_beside_ = 0;
 };
 

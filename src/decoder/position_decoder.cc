@@ -201,10 +201,15 @@ Status decode_residuals(RangeDecoder* rc, PositionResidualModel* model, const Pr
 }
 
 // Section 14.4 for one vertex (or attribute value) whose candidates and
-// fallback are in p: the mask, then the residuals.
+// fallback are in p: the mask, then the residuals. selected_all: p is
+// selected with every candidate already (14.10's reference), which the mask
+// of all candidates leaves as it is.
 Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const PredictedGridNames& names, uint32_t v,
-                     const uint32_t* top, VertexPrediction* p, uint32_t* q, uint32_t* activity) {
-  select_candidates(p, code_candidate_mask(rc, model, p->candidates, 0, mask_context(*model, *p)), top);
+                     const uint32_t* top, VertexPrediction* p, uint32_t* q, uint32_t* activity,
+                     bool selected_all = false) {
+  const unsigned all = (1u << p->candidates) - 1;
+  const unsigned mask = code_candidate_mask(rc, model, p->candidates, 0, mask_context(*model, *p));
+  if (!(selected_all && mask == all)) select_candidates(p, mask, top);
   if (rc->overrun()) return truncated_inside(names, v);
   return decode_residuals(rc, model, names, v, top, p, q, activity);
 }
@@ -271,7 +276,8 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
           !s.ok())
         return s;
     if (!mirrored) {
-      if (Status s = decode_vertex(&rc, &model[0], names, i, top, &p, &(*quantized)[3 * size_t(v)], &activity[v]);
+      if (Status s = decode_vertex(&rc, &model[0], names, i, top, &p, &(*quantized)[3 * size_t(v)], &activity[v],
+                                   mirrors != nullptr);
           !s.ok())
         return s;
       twist_weight.learn(p, &(*quantized)[3 * size_t(v)]);

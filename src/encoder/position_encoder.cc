@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include "bitio/bit_writer.h"
@@ -503,10 +504,12 @@ bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, 
   GridPointTable points(n);
   for (uint32_t v = 0; v < n; ++v) points.insert(&positions.q[3 * size_t(v)], v);
   bool near_hits = false;  // the second pass: a vertex within a step of the image counts too
-  // Of every stride-th vertex, the share (in 1/count) whose image is a vertex.
-  const auto hits = [&](MirrorPlane candidate, uint32_t stride) {
+  // Of every stride-th vertex, how many have a vertex at their image (in
+  // the second pass, near it), counting no further than `enough`.
+  const auto hits = [&](MirrorPlane candidate, uint32_t stride,
+                        uint32_t enough = std::numeric_limits<uint32_t>::max()) {
     uint32_t count = 0;
-    for (uint32_t v = 0; v < n; v += stride) {
+    for (uint32_t v = 0; v < n && count < enough; v += stride) {
       uint32_t image[3];
       std::copy(&positions.q[3 * size_t(v)], &positions.q[3 * size_t(v)] + 3, image);
       const int64_t m = int64_t(candidate.sum) - int64_t(image[candidate.axis]);
@@ -543,7 +546,7 @@ bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, 
       }
     }
     plane->near_images = near;
-    if (best > 0 && hits(*plane, 1) >= n / divisor) return true;
+    if (best > 0 && hits(*plane, 1, n / divisor) >= n / divisor) return true;
   }
   return false;
 }
