@@ -13,6 +13,7 @@
 
 #include "attribute_checks.h"
 #include "conn_prefix.h"
+#include "fuzz_limits.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   qmc::Mesh mesh;
@@ -20,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const uint8_t* payload = nullptr;
   size_t length = 0;
   if (!qmc::fuzz::decode_conn_prefix(data, size, &mesh, &vertex_count, &payload, &length)) return 0;
-  if (vertex_count > (1u << 16)) return 0;  // POSN would have to back the vertices
+  if (vertex_count > qmc::fuzz::kMaxVerticesWithoutPositions) return 0;
   std::vector<uint32_t> positions(3 * size_t(vertex_count));
   for (uint32_t v = 0; v < vertex_count; ++v) {
     positions[3 * size_t(v)] = v % 8;

@@ -13,6 +13,7 @@
 #include "conn_prefix.h"
 #include "decoder/attribute_decoder.h"
 #include "encoder/attribute_encoder.h"
+#include "fuzz_limits.h"
 
 namespace {
 
@@ -33,7 +34,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const uint8_t* payload = nullptr;
   size_t length = 0;
   if (!qmc::fuzz::decode_conn_prefix(data, size, &mesh, &vertex_count, &payload, &length)) return 0;
-  if (vertex_count > (1u << 16)) return 0;  // POSN would have to back the vertices
+  if (vertex_count > qmc::fuzz::kMaxVerticesWithoutPositions) return 0;
   // Positions for coding 3's predictions (15.7): a fixed scatter of integers.
   std::vector<uint32_t> quantized(3 * size_t(vertex_count));
   for (size_t i = 0; i < quantized.size(); ++i) quantized[i] = uint32_t((i * 2654435761u) >> 7) & 0xFFFFF;

@@ -10,6 +10,7 @@
 #include "bitio/geometry_order.h"
 #include "conn_prefix.h"
 #include "geometry_order_rule.h"
+#include "fuzz_limits.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   qmc::Mesh mesh;
@@ -17,7 +18,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const uint8_t* rest = nullptr;
   size_t rest_size = 0;
   if (!qmc::fuzz::decode_conn_prefix(data, size, &mesh, &vertex_count, &rest, &rest_size)) return 0;
-  if (vertex_count > (1u << 20)) return 0;  // the decoder limits of 8.1 bound V in a whole file
+  if (vertex_count > qmc::fuzz::kMaxVertices) return 0;
   const std::vector<uint32_t> order = qmc::geometry_order(vertex_count, mesh.face_sizes, mesh.corners);
   if (order.size() != vertex_count) __builtin_trap();
   std::vector<uint8_t> seen(vertex_count, 0);

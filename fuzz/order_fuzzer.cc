@@ -10,6 +10,7 @@
 
 #include "conn_prefix.h"
 #include "decoder/order_decoder.h"
+#include "fuzz_limits.h"
 
 namespace {
 
@@ -31,7 +32,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const uint8_t* payload = nullptr;
   size_t length = 0;
   if (!qmc::fuzz::decode_conn_prefix(data, size, &mesh, &vertex_count, &payload, &length)) return 0;
-  if (vertex_count > (1u << 16)) return 0;  // POSN would have to back the vertices
+  if (vertex_count > qmc::fuzz::kMaxVerticesWithoutPositions) return 0;
   mesh.positions.assign(3 * size_t(vertex_count), 0.f);
   for (uint32_t v = 0; v < vertex_count; ++v) mesh.positions[3 * size_t(v)] = float(v);
   qmc::OrderMaps maps;

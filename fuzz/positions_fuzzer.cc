@@ -8,15 +8,15 @@
 
 #include "bitio/byte_io.h"
 #include "decoder/position_decoder.h"
+#include "fuzz_limits.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   qmc::ByteReader peek(data, size);
   uint64_t count = 0;
   if (!peek.get_varint(&count) || count > UINT32_MAX) return 0;
-  // The decoder limits of 8.1 bound V in a whole file, as in
-  // predicted_positions_fuzzer.cc: 14.1's bound alone lets 28 KB claim
-  // 10.6 M vertices, 127 MB of integers (regressions/positions/).
-  if (count > (1u << 20)) return 0;
+  // 14.1's bound alone lets 28 KB claim 10.6 M vertices, 127 MB of
+  // integers (regressions/positions/).
+  if (count > qmc::fuzz::kMaxVertices) return 0;
   qmc::QuantizationInfo info;
   std::vector<uint32_t> q;
   std::vector<float> positions;

@@ -17,6 +17,7 @@
 
 #include "conn_prefix.h"
 #include "decoder/position_decoder.h"
+#include "fuzz_limits.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   qmc::Mesh mesh;
@@ -24,7 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const uint8_t* payload = nullptr;
   size_t length = 0;
   if (!qmc::fuzz::decode_conn_prefix(data, size, &mesh, &vertex_count, &payload, &length)) return 0;
-  if (vertex_count > (1u << 20)) return 0;  // the decoder limits of 8.1 bound V in a whole file
+  if (vertex_count > qmc::fuzz::kMaxVertices) return 0;
   qmc::QuantizationInfo info;
   std::vector<uint32_t> q;
   std::vector<float> positions;
