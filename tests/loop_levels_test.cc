@@ -201,6 +201,57 @@ TEST(LoopLevels, OctahedronToSphereConvergesLevelByLevel) {
   }
 }
 
+// Edge points aim radially at the sphere of the given radius.
+LevelTargets sphere_of_radius(double radius) {
+  return [radius](int, const LoopMesh& fine, const std::vector<double>& normals, uint32_t coarse_vertices,
+                  std::vector<double>* targets) {
+    targets->resize(normals.size());
+    for (size_t i = 0; i < normals.size(); i += 3) {
+      const double* q = &fine.positions[3 * size_t(coarse_vertices) + i];
+      const double r = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+      for (int k = 0; k < 3; ++k) (*targets)[i + k] = q[k] * radius / r;
+    }
+  };
+}
+
+// RMS over the vertices of |radius - 1|.
+double rms_off_unit_sphere(const std::vector<double>& positions) {
+  double sum = 0;
+  for (size_t i = 0; i < positions.size(); i += 3) {
+    const double r = std::sqrt(positions[i] * positions[i] + positions[i + 1] * positions[i + 1] +
+                               positions[i + 2] * positions[i + 2]);
+    sum += (r - 1) * (r - 1);
+  }
+  return std::sqrt(sum / double(positions.size() / 3));
+}
+
+// Spec 12.10's closed loop: the encoder's targets (here a sphere of radius
+// 3 around a base fitted to the unit sphere) would leave level 1 farther
+// from the input (the unit sphere) than the base; the judge measures that
+// and codes the level towards the alternative instead, and so every level.
+TEST(LoopLevels, TheClosedLoopCodesTheAlternativeWhereTheTargetsWouldMoveALevelAway) {
+  LevelJudge judge;
+  judge.distance = [](const LoopMesh& level) { return rms_off_unit_sphere(level.positions); };
+  judge.alternatives = {{1, sphere_of_radius(1.0)}};
+  const LevelJudge* const judges[] = {nullptr, &judge};
+  for (const LevelJudge* j : judges) {
+    std::vector<uint8_t> file;
+    ASSERT_TRUE(tools::make_loop_file(tools::loop_octahedron(), 3, sphere_of_radius(3.0), 16, &file, nullptr,
+                                      PositionMethod::kDeltas, 0, false, j)
+                    .ok());
+    DecodedFile decoded;
+    ASSERT_TRUE(decode(file.data(), file.size(), &decoded).ok());
+    std::vector<double> distance;
+    for (const LoopLevel& level : decoded.levels) distance.push_back(rms_off_unit_sphere(level.positions));
+    if (!j) {
+      EXPECT_GT(distance[1], distance[0]) << "the encoder's own targets move level 1 away";
+      continue;
+    }
+    for (int level = 1; level <= 3; ++level) EXPECT_LT(distance[level], distance[level - 1]) << "level " << level;
+    EXPECT_EQ(decoded.levels.size(), 4u);
+  }
+}
+
 TEST(LoopLevels, DecoderReproducesTheEncodersClosedLoopBitForBit) {
   const Mesh torus = triangle_torus();
   std::vector<LoopLevel> encoder_side;

@@ -58,8 +58,10 @@ const char kHelp[] =
     "                      consistently oriented mesh; polygons are split into\n"
     "                      triangles first (and the split is reported)\n"
     "  --levels K          levels of --progressive, 1..8; the base mesh has\n"
-    "                      about 1/4^K of the input's triangles (default: the\n"
-    "                      most levels that keep 1,000 of them in the base, at\n"
+    "                      about 1/4^K of the input's triangles, at least 32\n"
+    "                      (or a quarter of the input's), so the finest level\n"
+    "                      may have more than the input (default: the most\n"
+    "                      levels that keep 1,000 of them in the base, at\n"
     "                      least 1; smaller bases lose accuracy fast)\n"
     "  --finest-step-scale F  of --progressive, 1..64 (default 1): the finest\n"
     "                      level's displacement step is the least-error step\n"
@@ -535,6 +537,16 @@ void print_rising_levels(const LoopEncodeStats& ls, const LevelCurve& curve) {
               rising.c_str(), ls.levels.empty() ? 0u : ls.levels[0].vertices, ls.levels.size() - 1);
 }
 
+// LoopLevelStats::targets, as the report names it.
+const char* target_rule_name(uint8_t targets) {
+  switch (targets) {
+    case 1: return "misses stay";
+    case 2: return "5x reach";
+    case 3: return "closest points";
+    default: return "no displacement";
+  }
+}
+
 void print_progressive_report(const EncodeArgs& args, const Mesh& input, const EncodeStats& stats,
                               const LevelCurve& curve, const tools::MeshDistance& distance, uint64_t input_bytes) {
   const LoopEncodeStats& ls = stats.loop;
@@ -563,10 +575,12 @@ void print_progressive_report(const EncodeArgs& args, const Mesh& input, const E
       std::printf("  (CONN + POSN: %s coder, %s positions)\n", connectivity_method_name(stats.method),
                   stats.positions.method >= 1 ? "predicted" : "delta");
     else
-      std::printf("%s\n", l.clamped ? (" (" + std::to_string(l.clamped) + " clamped to 127)").c_str() : "");
+      std::printf("%s%s\n", l.clamped ? (" (" + std::to_string(l.clamped) + " clamped to 127)").c_str() : "",
+                  l.targets ? (std::string(" (closed loop: ") + target_rule_name(l.targets) + ")").c_str() : "");
   }
-  std::printf("            finest level along its normals: %u hit the input surface, %u kept the remesh position\n",
-              ls.ray_hits, ls.ray_misses);
+  if (!ls.levels.empty() && ls.levels.back().targets == 0)
+    std::printf("            finest level along its normals: %u hit the input surface, %u missed it within the reach\n",
+                ls.ray_hits, ls.ray_misses);
   std::printf("output      %s: %llu bytes, %.1fx smaller than the input file\n", args.output.c_str(),
               static_cast<unsigned long long>(stats.total_bytes), double(input_bytes) / double(stats.total_bytes));
   std::printf("error       finest level vs input (Metro-style, %zu samples): L2 %.6g (%.3g of bbox diagonal), "

@@ -240,12 +240,20 @@ struct LoopLevelStats {
   double step = 0;
   uint64_t bytes = 0;                // the LEVL chunk (level 0: CONN + POSN)
   uint8_t code = 0;                  // level >= 1: the displacement code (12.7: 0; 12.7.1: 2)
+  // level >= 1: whose targets the displacements aim at (spec 12.10's closed
+  // loop): 0 the encoder's own; where those would leave the level no nearer
+  // the input than the level below, the alternative taken: 1 points whose
+  // line misses the input stay where subdivision put them, 2 the same with
+  // five times the reach, 3 the closest points, 4 no displacement.
+  uint8_t targets = 0;
 };
 struct LoopEncodeStats {
   uint32_t input_vertices = 0, input_faces = 0, unreferenced_vertices_dropped = 0;
   uint32_t target_base_faces = 0;
   std::vector<LoopLevelStats> levels;  // [0] = base mesh
-  uint32_t ray_hits = 0, ray_misses = 0;  // finest level: targets hit along N, else the remesh position
+  // Finest level, the encoder's own targets (spec 12.10): lines along N that
+  // hit the input within the reach, and those that missed it.
+  uint32_t ray_hits = 0, ray_misses = 0;
   double seconds_simplify = 0, seconds_fit = 0, seconds_remesh = 0, seconds_code = 0;
 };
 

@@ -15,6 +15,7 @@
 #include "decoder/loop_subdivision.h"
 #include "encoder/chunk_writer.h"
 #include "encoder/encoder_internal.h"
+#include "geometry/level_distance.h"
 #include "geometry/loop_fitting.h"
 #include "encoder/loop_level_encoder.h"
 #include "geometry/loop_remesher.h"
@@ -88,6 +89,18 @@ constexpr int kSurfaceFitSubdivisions = 2;
 constexpr int kSurfaceFitPasses = 30;
 constexpr size_t kSurfaceFitPointsPerVertex = 4;
 
+// The fewest triangles the base is simplified to (or a quarter of the
+// input's, if that is fewer), however many levels: bases of 4 or 5 vertices
+// (K = 3..6 on meshes of a few hundred to a few thousand triangles) gave
+// levels 5-12 % of the diagonal from the input, often farther than the level
+// before. With at least 32 (progressive_levels bench, docs/results/
+// progressive.md): on the 10 corpus meshes that had such levels, (mesh, K)
+// with every level nearer than the one before 28 -> 44 of 50, the finest
+// level of cathead at K = 3 0.12 -> 0.0021 of the diagonal, penguin_control_
+// mesh at K = 6 0.052 -> 0.014 (4,687 -> 21,835 bytes: the finest level has
+// 4^K times the base's triangles).
+constexpr uint64_t kMinBaseFaces = 32;
+
 // Every k-th vertex of `mesh` that a face uses, k the smallest that leaves at
 // most `most` of them.
 std::vector<double> surface_points(const LoopMesh& mesh, size_t most) {
@@ -111,35 +124,74 @@ std::vector<double> surface_points(const LoopMesh& mesh, size_t most) {
 // rather than shared, the same rule).
 constexpr int kFinestFitPasses = 2;
 
-// Section 12.10 targets of level j's edge points: the inverse-Loop control
-// mesh below K; at K the input surface along each normal (seed 003's
-// intersection approach), else the remesh position, then moved so that the
-// level fits the input in the mean (loop_fitting.h). From a base fitted over
-// its subdivision (kSurfaceFitFrom) the levels below K aim at the input along
-// their normals too: the subdivided base runs near the input already, and the
-// inverse-Loop meshes of so many steps spread away from it as the base did.
-void pipeline_targets(const std::vector<LoopMesh>& control, const TriangleBvh& surface, double reach, int levels,
-                      bool along_normals_below_k, LoopEncodeStats* st, int j, const LoopMesh& fine,
+// The closed loop measures about this many of the input's edge midpoints
+// against each level (level_distance.h): on armadillo (K = 5) every level's
+// distance came out within 0.6 % of the one from all 43,755, at a fifth of
+// the time of that side.
+constexpr size_t kJudgedInputSamples = 20000;
+
+// Where a level's edge points aim (12.10). kEncoder is the encoder's rule:
+// below K the inverse-Loop control mesh, at K the input surface along each
+// normal (seed 003's intersection approach), else the remesh position, then
+// moved so that the level fits the input in the mean (loop_fitting.h); from
+// a base fitted over its subdivision (kSurfaceFitFrom) the levels below K
+// aim at the input along their normals too: the subdivided base runs near
+// the input already, and the inverse-Loop meshes of so many steps spread
+// away from it as the base did. The others are the closed loop's
+// alternatives (LevelJudge), all along the normals at every level: where the
+// line misses the input within the reach the point stays (kStayOnMiss), the
+// same with five times the reach (kFarReach), the closest point of the input
+// for every point (kClosestPoint), and no displacement at all (kStay).
+// Making kStayOnMiss the rule from a fitted base lowered the finest L2 at
+// K = 4 by 18-26 % on stanford-bunny, armadillo, face and fertility, but
+// made 3holes' at K = 3 eight times larger and left 5 more (mesh, K) of the
+// corpus with a level no nearer than the one before: it stays an alternative.
+// The values are LoopLevelStats::targets.
+enum class TargetRule : uint8_t { kEncoder, kStayOnMiss, kFarReach, kClosestPoint, kStay };
+
+struct TargetContext {
+  const std::vector<LoopMesh>* control;
+  const TriangleBvh* surface;
+  double reach;
+  int levels;
+  bool along_normals_below_k;
+  LoopEncodeStats* stats;
+};
+
+Vec3d edge_point_target(const TargetContext& c, TargetRule rule, int j, const Vec3d& origin, const Vec3d& direction,
+                        size_t v) {
+  const bool encoder = rule == TargetRule::kEncoder;
+  if (rule == TargetRule::kStay) return origin;
+  if (rule == TargetRule::kClosestPoint) return c.surface->closest_point(origin).point;
+  const Vec3d control = position_of((*c.control)[size_t(j)].positions, uint32_t(v));
+  if (encoder && j < c.levels && !c.along_normals_below_k) return control;
+  const double reach = rule == TargetRule::kFarReach ? 5 * c.reach : c.reach;
+  LineHit hit;
+  const bool crossed = c.surface->nearest_line_hit(origin, direction, reach, &hit, /*same_facing=*/true);
+  if (encoder && j == c.levels) ++(crossed ? c.stats->ray_hits : c.stats->ray_misses);
+  return crossed ? hit.point : encoder ? control : origin;
+}
+
+void pipeline_targets(const TargetContext& c, TargetRule rule, int j, const LoopMesh& fine,
                       const std::vector<double>& normals, uint32_t coarse_vertices, std::vector<double>* targets) {
   const size_t edges = normals.size() / 3;
   targets->resize(3 * edges);
   for (size_t e = 0; e < edges; ++e) {
     const size_t v = coarse_vertices + e;
-    for (int k = 0; k < 3; ++k) (*targets)[3 * e + k] = control[j].positions[3 * v + k];
-    if (j < levels && !along_normals_below_k) continue;
-    const Vec3d origin{fine.positions[3 * v], fine.positions[3 * v + 1], fine.positions[3 * v + 2]};
-    const Vec3d direction{normals[3 * e], normals[3 * e + 1], normals[3 * e + 2]};
-    LineHit hit;
-    const bool crossed = surface.nearest_line_hit(origin, direction, reach, &hit, /*same_facing=*/true);
-    if (crossed)
-      (*targets)[3 * e] = hit.point.x, (*targets)[3 * e + 1] = hit.point.y, (*targets)[3 * e + 2] = hit.point.z;
-    if (j == levels) ++(crossed ? st->ray_hits : st->ray_misses);
+    const Vec3d t = edge_point_target(c, rule, j, position_of(fine.positions, uint32_t(v)),
+                                      position_of(normals, uint32_t(e)), v);
+    (*targets)[3 * e] = t.x, (*targets)[3 * e + 1] = t.y, (*targets)[3 * e + 2] = t.z;
   }
-  if (j < levels) return;
+  if (j < c.levels || rule == TargetRule::kStay) return;
   LoopMesh level = fine;
   std::copy(targets->begin(), targets->end(), level.positions.begin() + 3 * std::ptrdiff_t(coarse_vertices));
-  fit_edge_points_in_the_mean(surface, reach, coarse_vertices, normals, kFinestFitPasses, &level);
+  fit_edge_points_in_the_mean(*c.surface, c.reach, coarse_vertices, normals, kFinestFitPasses, &level);
   std::copy(level.positions.begin() + 3 * std::ptrdiff_t(coarse_vertices), level.positions.end(), targets->begin());
+}
+
+LevelTargets targets_by(const TargetContext& c, TargetRule rule) {
+  return [c, rule](int j, const LoopMesh& fine, const std::vector<double>& normals, uint32_t coarse_vertices,
+                   std::vector<double>* targets) { pipeline_targets(c, rule, j, fine, normals, coarse_vertices, targets); };
 }
 
 }  // namespace
@@ -154,6 +206,7 @@ struct ProgressiveEncoder::Prepared {
   std::vector<double> base_positions;  // of the base the file carries, CONN's order
   bool surface_fitted = false;
   std::unique_ptr<TriangleBvh> surface;
+  std::unique_ptr<LevelDistance> distance;  // of a level to the input (12.10's closed loop)
   EncodeStats stats;  // the base connectivity's and the pipeline's
 };
 
@@ -171,7 +224,8 @@ Status ProgressiveEncoder::prepare(const Mesh& mesh, const EncodeOptions& option
   p->levels = options.progressive_levels;
   ls.input_vertices = uint32_t(mesh.vertex_count());
   ls.input_faces = uint32_t(mesh.face_count());
-  ls.target_base_faces = uint32_t(std::max<uint64_t>(4, mesh.face_count() >> (2 * p->levels)));
+  ls.target_base_faces = uint32_t(std::max<uint64_t>(
+      {4, std::min<uint64_t>(kMinBaseFaces, mesh.face_count() / 4), mesh.face_count() >> (2 * p->levels)}));
 
   // II. Simplification.
   report(options, "simplify", 0);
@@ -207,6 +261,7 @@ Status ProgressiveEncoder::prepare(const Mesh& mesh, const EncodeOptions& option
   RemeshStats remesh_stats;
   if (Status s = remesh(original, *p->surface, base, p->levels, &p->control, &remesh_stats); !s.ok()) return s;
   p->base_positions = p->surface_fitted ? base.positions : p->control[0].positions;
+  p->distance = std::make_unique<LevelDistance>(*p->surface, original, kJudgedInputSamples);
   ls.seconds_remesh = seconds_since(start);
   prepared_ = std::move(p);
   return Status::Ok();
@@ -226,13 +281,15 @@ Status ProgressiveEncoder::code(const EncodeOptions& options, std::vector<uint8_
   LoopEncodeStats& ls = st.loop;
   report(options, "code", 0.8);
   const Clock::time_point start = Clock::now();
-  const double reach = 0.02 * p.surface->bbox_diagonal();
-  const LevelTargets targets = [&](int j, const LoopMesh& fine, const std::vector<double>& normals,
-                                   uint32_t coarse_vertices, std::vector<double>* out_targets) {
-    pipeline_targets(p.control, *p.surface, reach, p.levels, p.surface_fitted, &ls, j, fine, normals,
-                     coarse_vertices, out_targets);
-  };
-  if (Status s = write_loop_file(p.conn, p.base_positions, p.levels, options, targets, out, &st); !s.ok())
+  const TargetContext context{&p.control, p.surface.get(), 0.02 * p.surface->bbox_diagonal(), p.levels,
+                              p.surface_fitted, &ls};
+  LevelJudge judge;
+  judge.distance = [&p](const LoopMesh& level) { return (*p.distance)(level); };
+  for (TargetRule rule : {TargetRule::kStayOnMiss, TargetRule::kFarReach, TargetRule::kClosestPoint, TargetRule::kStay})
+    judge.alternatives.push_back({uint8_t(rule), targets_by(context, rule)});
+  if (Status s = write_loop_file(p.conn, p.base_positions, p.levels, options, targets_by(context, TargetRule::kEncoder),
+                                 &judge, out, &st);
+      !s.ok())
     return s;
   ls.seconds_code = seconds_since(start);
   report(options, "done", 1);

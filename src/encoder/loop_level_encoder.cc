@@ -171,9 +171,57 @@ std::vector<uint8_t> encode_level(uint8_t level, const LoopEdges& coarse_edges, 
   return payload;
 }
 
+namespace {
+
+// One level coded towards one set of targets, from the decoder's level below.
+struct CodedLevel {
+  LoopMesh fine;
+  std::vector<uint8_t> payload;
+  LevelCodeStats stats;
+  double distance = 0;  // to the input, when judged
+  uint8_t targets = 0;  // 0: `targets`, else the id of the judge's alternative
+};
+
+CodedLevel code_level(int j, int levels, const EncodeOptions& options, const LoopMesh& current,
+                      const LoopEdges& edges, const LoopMesh& predicted, const std::vector<double>& normals,
+                      const LevelTargets& targets) {
+  CodedLevel c;
+  c.fine = predicted;
+  std::vector<double> level_targets;
+  targets(j, c.fine, normals, current.vertex_count(), &level_targets);
+  c.payload = encode_level(uint8_t(j), edges, current.vertex_count(), normals, level_targets,
+                           options.displacement_code, level_step_scale(options, j, levels), &c.fine, &c.stats);
+  return c;
+}
+
+// 12.10's closed loop: rule 0 unless it leaves the level less than 1 % nearer
+// the input than the level below (`previous`); then the first alternative
+// that is, or else the nearest of all.
+CodedLevel choose_level(int j, int levels, const EncodeOptions& options, const LoopMesh& current,
+                        const LoopEdges& edges, const LevelTargets& targets, const LevelJudge* judge,
+                        double previous) {
+  LoopMesh predicted;
+  std::vector<double> normals;
+  predict_level(current, edges, &predicted, &normals);
+  CodedLevel best = code_level(j, levels, options, current, edges, predicted, normals, targets);
+  if (!judge) return best;
+  constexpr double kEnough = 0.99;
+  best.distance = judge->distance(best.fine);
+  for (size_t rule = 0; rule < judge->alternatives.size() && !(best.distance < kEnough * previous); ++rule) {
+    const LevelJudge::Alternative& alternative = judge->alternatives[rule];
+    CodedLevel other = code_level(j, levels, options, current, edges, predicted, normals, alternative.targets);
+    other.distance = judge->distance(other.fine);
+    other.targets = alternative.id;
+    if (other.distance < best.distance) best = std::move(other);
+  }
+  return best;
+}
+
+}  // namespace
+
 Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& base_positions, int levels,
-                       const EncodeOptions& options, const LevelTargets& targets, std::vector<uint8_t>* out,
-                       EncodeStats* st) {
+                       const EncodeOptions& options, const LevelTargets& targets, const LevelJudge* judge,
+                       std::vector<uint8_t>* out, EncodeStats* st) {
   LoopEncodeStats& ls = st->loop;
   // The base keeps section 6.1's per-axis grid, which both POSN methods
   // carry (method 1 with grid 1 outputs the same positions); the method is
@@ -196,24 +244,22 @@ Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& 
                        24 + conn.payload.size() + positions_payload.size()});
   std::vector<std::vector<uint8_t>> level_payloads;
   bool format_1_5 = st->positions.method >= 1;
+  double previous = judge ? judge->distance(current) : 0;
   for (int j = 1; j <= levels; ++j) {
-    LoopMesh fine;
-    std::vector<double> normals, level_targets;
-    predict_level(current, edges, &fine, &normals);
-    targets(j, fine, normals, current.vertex_count(), &level_targets);
-    LevelCodeStats code_stats;
-    level_payloads.push_back(encode_level(uint8_t(j), edges, current.vertex_count(), normals, level_targets,
-                                          options.displacement_code, level_step_scale(options, j, levels), &fine,
-                                          &code_stats));
-    if (Status s = check_level_range(fine, uint8_t(j)); !s.ok())
+    CodedLevel level = choose_level(j, levels, options, current, edges, targets, judge, previous);
+    if (Status s = check_level_range(level.fine, uint8_t(j)); !s.ok())
       return Status(ErrorCode::kInvalidArgument, "level " + std::to_string(j) + " leaves the binary32 range");
+    const LevelCodeStats& code_stats = level.stats;
     format_1_5 = format_1_5 || code_stats.code == 2;
-    ls.levels.push_back({fine.vertex_count(), fine.face_count(), code_stats.edge_points, code_stats.zeros,
-                         code_stats.clamped, code_stats.step, 12 + level_payloads.back().size(), code_stats.code});
+    level_payloads.push_back(std::move(level.payload));
+    ls.levels.push_back({level.fine.vertex_count(), level.fine.face_count(), code_stats.edge_points,
+                         code_stats.zeros, code_stats.clamped, code_stats.step, 12 + level_payloads.back().size(),
+                         code_stats.code, level.targets});
     if (j < levels)
-      if (Status s = number_loop_edges(fine, &edges); !s.ok())
+      if (Status s = number_loop_edges(level.fine, &edges); !s.ok())
         return Status(ErrorCode::kInvalidArgument, "internal: level " + std::to_string(j) + ": " + s.message());
-    current = std::move(fine);
+    current = std::move(level.fine);
+    previous = level.distance;
   }
   // The lowest minor version that defines everything in the file (4.1).
   out->clear();

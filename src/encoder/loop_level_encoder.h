@@ -49,13 +49,27 @@ std::vector<uint8_t> encode_level(uint8_t level, const LoopEdges& coarse_edges, 
 using LevelTargets = std::function<void(int level, const LoopMesh& fine, const std::vector<double>& normals,
                                         uint32_t coarse_vertices, std::vector<double>* targets)>;
 
+// The closed loop of 12.10 (issue 17): the distance of a decoded level (or
+// of the base) to the input, and other targets to try for a level that the
+// encoder's own would leave no nearer the input than the level below.
+struct LevelJudge {
+  struct Alternative {
+    uint8_t id;  // what LoopLevelStats::targets records when it is kept (1..255)
+    LevelTargets targets;
+  };
+  std::function<double(const LoopMesh& level)> distance;
+  std::vector<Alternative> alternatives;
+};
+
 // Section 12: writes a progressive file whose base mesh has the connectivity
 // `conn` (triangles, CONN order) and binary64 positions `base_positions`
 // (CONN order), quantized with options.position_bits, and `levels` levels
 // whose displacements aim at `targets`, each computed from the decoder's own
-// reconstruction of the level below.
+// reconstruction of the level below. With a `judge`, a level that `targets`
+// would leave less than 1 % nearer the input than the level below takes the
+// first alternative that is, or else the nearest of them all.
 Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& base_positions, int levels,
-                       const EncodeOptions& options, const LevelTargets& targets, std::vector<uint8_t>* out,
-                       EncodeStats* stats);
+                       const EncodeOptions& options, const LevelTargets& targets, const LevelJudge* judge,
+                       std::vector<uint8_t>* out, EncodeStats* stats);
 
 }  // namespace qmc

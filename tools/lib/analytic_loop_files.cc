@@ -52,7 +52,7 @@ LevelTargets height_field_targets() { return per_point(on_height_field, {}); }
 
 Status make_loop_file(const Mesh& base, int levels, const LevelTargets& targets, int bits, std::vector<uint8_t>* out,
                       EncodeStats* stats, PositionMethod base_positions, int displacement_code,
-                      bool context_coded_faces) {
+                      bool context_coded_faces, const LevelJudge* judge) {
   EncodeOptions options;
   options.position_bits = bits;
   options.position_grid = PositionGrid::kPerAxis;  // LEVL's arithmetic starts from section 6.1's grid
@@ -71,7 +71,7 @@ Status make_loop_file(const Mesh& base, int levels, const LevelTargets& targets,
   positions.reserve(base.positions.size());
   for (uint32_t v : conn.file_vertex)
     for (int k = 0; k < 3; ++k) positions.push_back(base.positions[3 * size_t(v) + k]);
-  return write_loop_file(conn, positions, levels, options, targets, out, &st);
+  return write_loop_file(conn, positions, levels, options, targets, judge, out, &st);
 }
 
 }  // namespace qmc::tools

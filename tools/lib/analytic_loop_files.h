@@ -29,10 +29,11 @@ LevelTargets height_field_targets();
 // A progressive file of the triangle mesh `base` (coded with the polygon
 // coder, positions with `bits` bits on section 6.1's grid, by the POSN
 // method given) and `levels` levels aiming at `targets`, with the LEVL
-// displacement code given (0, 2, or -1 for the smaller). Fails on a base
-// that section 12.2 does not allow.
+// displacement code given (0, 2, or -1 for the smaller), and, with a
+// `judge`, 12.10's closed loop (write_loop_file). Fails on a base that
+// section 12.2 does not allow.
 Status make_loop_file(const Mesh& base, int levels, const LevelTargets& targets, int bits, std::vector<uint8_t>* out,
                       EncodeStats* stats = nullptr, PositionMethod base_positions = PositionMethod::kDeltas,
-                      int displacement_code = 0, bool context_coded_faces = false);
+                      int displacement_code = 0, bool context_coded_faces = false, const LevelJudge* judge = nullptr);
 
 }  // namespace qmc::tools
