@@ -12,6 +12,8 @@
 #   seed003.md       seed 003's tables 2 and 3 rerun with qmc's progressive
 #                    Loop levels, and their rate-distortion against Draco
 #                    8-14 bits, plotted in seed003_rd.svg;
+#   progressive.md   issue 17: every level of a progressive file nearer the
+#                    input than the one before, every corpus mesh, K = 2..6;
 #   gim.md           geometry images: seed 000 table 1 and seed 002 tables 1-2
 #                    rerun, lossless planes against zstd -19 and 16-bit PNG,
 #                    pictures in docs/results/gim/;
@@ -21,8 +23,8 @@
 #   attributes.md    issue 16: texture coordinates and normals (spec 15)
 #                    against Draco cl10 at the same bits, on every corpus
 #                    mesh with attributes.
-# ONLY=compression, ONLY=topology, ONLY=seed003, ONLY=attributes or ONLY=gim
-# regenerates that one file.
+# ONLY=compression, ONLY=topology, ONLY=seed003, ONLY=progressive,
+# ONLY=attributes or ONLY=gim regenerates that one file.
 # RUNS (default 7) runs per measurement, LARGE_RUNS (default 3) for the
 # ~1M-quad sphere; medians are reported. Run on an otherwise idle machine.
 set -euo pipefail
@@ -32,11 +34,13 @@ corpus=${QMC_CORPUS_DIR:-../shared/corpus}
 runs=${RUNS:-7}
 large_runs=${LARGE_RUNS:-3}
 scripts/install-deps.sh >/dev/null
-if [ "${ONLY:-}" = compression ] || [ "${ONLY:-}" = topology ] || [ "${ONLY:-}" = seed003 ]; then
+if [ "${ONLY:-}" = compression ] || [ "${ONLY:-}" = topology ] || [ "${ONLY:-}" = seed003 ] ||
+   [ "${ONLY:-}" = progressive ]; then
   # One program: build just it (and what it links), not the whole tree.
   cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
   target=qmc_${ONLY/compression/compression_bench}
-  cmake --build build --target "${target/topology/topology_bench}" >/dev/null
+  target=${target/topology/topology_bench}
+  cmake --build build --target "${target/progressive/progressive_levels}" >/dev/null
 else
   scripts/build.sh >/dev/null
 fi
@@ -80,6 +84,12 @@ seed003_result() {
     "$corpus"/tri/armadillo.obj "$corpus"/tri/fertility.off "$corpus"/tri/camelhead.off
 }
 
+# progressive_result: docs/results/progressive.md (issue 17's levels criterion).
+progressive_result() {
+  write_result docs/results/progressive.md "Progressive files: every level nearer the input than the one before (issue 17)" \
+    build/bench/qmc_progressive_levels "$corpus"/tri/* "$corpus"/quad/* "$corpus"/attr/*.obj
+}
+
 # topology_result: docs/results/topology.md (connectivity alone, issue 14).
 topology_result() {
   write_result docs/results/topology.md "Connectivity: qmc's structured coders against Draco and the indexed fallback" \
@@ -110,6 +120,10 @@ if [ "${ONLY:-}" = seed003 ]; then
   seed003_result
   exit 0
 fi
+if [ "${ONLY:-}" = progressive ]; then
+  progressive_result
+  exit 0
+fi
 
 # ONLY=gim regenerates docs/results/gim.md alone.
 if [ "${ONLY:-}" != gim ]; then
@@ -132,6 +146,7 @@ write_result docs/results/quad_vs_draco.md "Quad meshes: qmc's quad coder agains
 topology_result
 compression_result
 seed003_result
+progressive_result
 attributes_result
 fi
 mkdir -p docs/results/gim
