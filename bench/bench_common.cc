@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <fstream>
 
+#include <unistd.h>
+
 #include "mesh_io.h"
 #include "qmc/decoder.h"
 
@@ -14,6 +16,12 @@ namespace qmc::bench {
 void fail(const char* program, const std::string& message) {
   std::fprintf(stderr, "%s: %s\n", program, message.c_str());
   std::exit(3);
+}
+
+void progress(const std::string& what) {
+  if (!isatty(STDERR_FILENO)) return;
+  std::fprintf(stderr, "\r%-70s", what.substr(0, 70).c_str());
+  if (what.empty()) std::fputs("\r", stderr);
 }
 
 std::string format(const char* fmt, ...) {

@@ -15,6 +15,10 @@ namespace qmc::bench {
 // Prints "PROGRAM: message" and exits with status 3.
 [[noreturn]] void fail(const char* program, const std::string& message);
 
+// What a long benchmark is doing, on one line of a terminal's stderr
+// (nothing when stderr is not a terminal); "" clears the line.
+void progress(const std::string& what);
+
 std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
 
 double median(std::vector<double> values);

@@ -5,8 +5,6 @@
 // every level measured against the input Metro-style (tools/lib/
 // mesh_distance.h). Prints a Markdown report on stdout; progress on a
 // terminal only.
-#include <unistd.h>
-
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -36,10 +34,6 @@ struct Run {
   std::vector<int> targets;         // LoopLevelStats::targets, [0] unused
   std::vector<int> rising;          // levels no nearer than the one before
 };
-
-void progress(const std::string& what) {
-  if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r%-70s", what.substr(0, 70).c_str());
-}
 
 Run run(const qmc::Mesh& triangles, int k, const Options& opt) {
   Run r;
@@ -125,7 +119,7 @@ int main(int argc, char** argv) {
       qmc::bench::fail("qmc_progressive_levels", path + ": " + s.to_string());
     const qmc::Mesh triangles = qmc::tools::triangulated(input);
     for (int k = kFirstK; k <= kLastK; ++k) {
-      progress(name + ": K = " + std::to_string(k));
+      qmc::bench::progress(name + ": K = " + std::to_string(k));
       const Run r = run(triangles, k, opt);
       if (!r.error.empty()) {
         std::printf("| %s | %d | - | - | not encoded: %s |\n", name.c_str(), k, r.error.c_str());
@@ -139,7 +133,7 @@ int main(int argc, char** argv) {
                   static_cast<unsigned long long>(r.bytes), levels_cell(r).c_str());
     }
   }
-  progress("");
+  qmc::bench::progress("");
   std::printf("\n**Every level nearer than the one before: %d of %d** (mesh, K) encoded.", approaching, runs);
   if (!rising_list.empty()) std::printf(" Not: %s.", rising_list.c_str());
   if (!failed_list.empty()) std::printf(" Not encoded: %s.", failed_list.c_str());

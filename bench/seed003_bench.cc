@@ -41,6 +41,7 @@ namespace {
 
 [[noreturn]] void fail(const std::string& message) { qmc::bench::fail("qmc_seed003", message); }
 using qmc::bench::median;
+using qmc::bench::progress;
 
 // printf into a std::string of any length (bench_common's format() stops at 1 kB).
 std::string format(const char* fmt, ...) __attribute__((format(printf, 1, 2)));
@@ -345,9 +346,6 @@ struct MeshRun {
   double load_before = 0, load_after = 0;  // 1-minute load average around the timed runs
 };
 
-void progress(const std::string& what) {
-  if (isatty(STDERR_FILENO)) std::fprintf(stderr, "\r%-70s", what.substr(0, 70).c_str());
-}
 
 #ifdef QMC_BENCH_MESHOPTIMIZER
 // `triangles` simplified by meshoptimizer to about `share` of its triangles
@@ -991,7 +989,6 @@ int main(int argc, char** argv) {
   std::vector<MeshRun> runs;
   for (size_t i = 0; i < opt.meshes.size(); ++i) runs.push_back(bench_mesh(opt.meshes[i], i == 0, opt));
   progress("");
-  if (isatty(STDERR_FILENO)) std::fputs("\r", stderr);
   if (!opt.plot.empty()) {
     std::ofstream out(opt.plot);
     out << svg_document(runs);

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "bitio/exact_arith.h"  // bit_length64
+#include "bitio/splitmix64_mix.h"
 
 namespace qmc {
 namespace {
@@ -16,13 +17,6 @@ namespace {
 // the twin (all of them: face's positions 2 % larger at 12 bits, spot's 3 %).
 constexpr int kMirrorNeighbours = 2, kMirrorCorners = 16;
 
-uint64_t mix(uint64_t x) {  // splitmix64's finalizer
-  x ^= x >> 30;
-  x *= 0xBF58476D1CE4E5B9ull;
-  x ^= x >> 27;
-  x *= 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
 
 }  // namespace
 
@@ -33,12 +27,12 @@ GridPointTable::GridPointTable(uint32_t capacity_for) {
   for (size_t i = 0; i < size; ++i) entries_[i].vertex = kNone;
   mask_ = size - 1;
   // Any key gives the same vertices; one a file cannot know keeps probes short.
-  key_ = mix(uint64_t(std::chrono::steady_clock::now().time_since_epoch().count()) ^
+  key_ = splitmix64_mix(uint64_t(std::chrono::steady_clock::now().time_since_epoch().count()) ^
              uint64_t(reinterpret_cast<uintptr_t>(entries_.get())));
 }
 
 size_t GridPointTable::slot(const uint32_t q[3]) const {
-  const uint64_t h = mix(mix(key_ ^ q[0]) ^ (uint64_t(q[1]) << 32 | q[2]));
+  const uint64_t h = splitmix64_mix(splitmix64_mix(key_ ^ q[0]) ^ (uint64_t(q[1]) << 32 | q[2]));
   return size_t(h) & mask_;
 }
 

@@ -6,23 +6,17 @@
 #include <cstdint>
 #include <limits>
 
+#include "bitio/splitmix64_mix.h"
 #include "geometry/loop_fitting.h"
 
 namespace qmc {
 namespace {
 
-// splitmix64's finalizer: a hash of an edge that no order of the mesh's
-// numbering correlates with.
-uint64_t mix(uint64_t x) {
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-  return x ^ (x >> 31);
-}
-
 // The midpoint of every edge of `mesh`, once, weighted by a third of the
 // area of each face it borders; of a mesh of more than `most` edges, a
 // pseudo-random share of about `most` of them (by a hash of the edge's ends,
-// so the same mesh gives the same samples). Each face's edge a -> b is
+// which no order of the mesh's numbering correlates with, so the same mesh
+// gives the same samples). Each face's edge a -> b is
 // listed under a with its face's third; an edge is sampled from its lower
 // vertex, or from its upper one when nothing runs the other way (a boundary
 // edge).
@@ -36,11 +30,12 @@ void midpoint_samples(const LoopMesh& mesh, size_t most, std::vector<double>* po
   for (size_t f = 0; f < mesh.face_count(); ++f) {
     const uint32_t* t = &mesh.triangles[3 * f];
     const Vec3d a = position_of(mesh.positions, t[0]);
-    const Vec3d n3 = cross(position_of(mesh.positions, t[1]) - a, position_of(mesh.positions, t[2]) - a);
+    const Vec3d normal = cross(position_of(mesh.positions, t[1]) - a, position_of(mesh.positions, t[2]) - a);
+    const double third_of_area = std::sqrt(dot(normal, normal)) / 6;
     for (int k = 0; k < 3; ++k) {
       const uint32_t slot = fill[t[k]]++;
       to[slot] = t[(k + 1) % 3];
-      third[slot] = std::sqrt(dot(n3, n3)) / 6;
+      third[slot] = third_of_area;
     }
   }
   auto reverse_third = [&](uint32_t a, uint32_t b) {  // of b -> a; -1 if no face has it
@@ -54,7 +49,7 @@ void midpoint_samples(const LoopMesh& mesh, size_t most, std::vector<double>* po
   for (uint32_t a = 0; a < n; ++a)
     for (uint32_t i = offset[a]; i < offset[a + 1]; ++i) {
       const uint32_t b = to[i];
-      if (mix(uint64_t(std::min(a, b)) << 32 | std::max(a, b)) > threshold) continue;
+      if (splitmix64_mix(uint64_t(std::min(a, b)) << 32 | std::max(a, b)) > threshold) continue;
       const double other = reverse_third(a, b);
       if (a > b && other >= 0) continue;  // sampled from b
       const Vec3d m = (position_of(mesh.positions, a) + position_of(mesh.positions, b)) * 0.5;

@@ -6,18 +6,15 @@
 
 #include <cstdint>
 
+#include "bitio/splitmix64_mix.h"
+
 namespace qmc::tools {
 
 class SplitMix64 {
  public:
   explicit SplitMix64(uint64_t seed) : state_(seed) {}
 
-  uint64_t next() {
-    uint64_t z = (state_ += 0x9E3779B97F4A7C15ull);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    return z ^ (z >> 31);
-  }
+  uint64_t next() { return splitmix64_mix(state_ += 0x9E3779B97F4A7C15ull); }
   // Uniform enough in [0, n) for test data (multiply-shift, no rejection).
   uint32_t below(uint32_t n) { return static_cast<uint32_t>(((next() >> 32) * n) >> 32); }
   // Uniform in [0, 1) on the 2^-53 grid.
