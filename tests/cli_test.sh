@@ -228,8 +228,14 @@ contains decode-canonical-rejects-identifier "$work/err" "truncated"
 check progressive-levels-alone 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --levels 2
 check progressive-verify-says-why 1 "$qmc" verify "$work/torus.obj" "$work/prog.qmc"
 contains progressive-verify-message "$work/out" "qmc compare"
-check progressive-soup-rejected 3 "$qmc" encode "$work/soup.off" "$work/x.qmc" --progressive
-contains progressive-soup-message "$work/err" "not a manifold"
+# A polygon soup is no manifold: the levels cover its surface cut where it is
+# not one, and the report says what was cut and left out (spec 12.10).
+check progressive-soup-cut 0 "$qmc" encode "$work/soup.off" "$work/x.qmc" --progressive --levels 1
+contains progressive-soup-cut-message "$work/out" "not manifold, cut"
+contains progressive-soup-left-out-message "$work/out" "faces that repeat a vertex"
+printf 'OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n3 1 2 2\n' >"$work/no_area.off"
+check progressive-no-area-rejected 3 "$qmc" encode "$work/no_area.off" "$work/x.qmc" --progressive --levels 1
+contains progressive-no-area-message "$work/err" "every face repeats a vertex"
 # Rate control of --progressive (spec 12.10): the smallest file within an error,
 # the most accurate within a size, what was tried printed; nothing written on a miss.
 check progressive-default-levels 0 "$qmc" encode "$work/torus.obj" "$work/rate.qmc" --progressive

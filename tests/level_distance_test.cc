@@ -23,13 +23,13 @@ LoopMesh flat_grid(double z) {
   return m;
 }
 
-// The triangles of `m` whose corners all have x <= 0 (every vertex kept).
-LoopMesh left_half(const LoopMesh& m) {
+// The triangles of `m` whose corners all have x <= `most` (every vertex kept).
+LoopMesh left_part(const LoopMesh& m, double most) {
   LoopMesh half = m;
   half.triangles.clear();
   for (size_t f = 0; f < m.face_count(); ++f) {
     bool left = true;
-    for (int k = 0; k < 3; ++k) left = left && m.positions[3 * size_t(m.triangles[3 * f + k])] <= 0;
+    for (int k = 0; k < 3; ++k) left = left && m.positions[3 * size_t(m.triangles[3 * f + k])] <= most;
     if (left) half.triangles.insert(half.triangles.end(), &m.triangles[3 * f], &m.triangles[3 * f + 3]);
   }
   return half;
@@ -53,7 +53,7 @@ TEST(LevelDistance, AParallelCopyIsItsOffsetAway) {
 TEST(LevelDistance, ALevelCoveringHalfTheInputIsFarFromTheOtherHalf) {
   const LoopMesh input = flat_grid(0);
   const TriangleBvh bvh(loop_mesh_triangles(input));
-  EXPECT_NEAR(LevelDistance(bvh, input)(left_half(input)), std::sqrt(1.0 / 6), 1e-12);
+  EXPECT_NEAR(LevelDistance(bvh, input)(left_part(input, 0)), std::sqrt(1.0 / 6), 1e-12);
 }
 
 // A share of the input's midpoints (here about 40 of its 208) stands for
@@ -62,6 +62,21 @@ TEST(LevelDistance, AShareOfTheInputsMidpointsMeasuresTheSame) {
   const LoopMesh input = flat_grid(0);
   const TriangleBvh bvh(loop_mesh_triangles(input));
   EXPECT_NEAR(LevelDistance(bvh, input, 40)(flat_grid(-0.5)), 0.5, 1e-12);
+}
+
+// A level of two triangles over the square, the input the part x <= 1/2 of
+// it: the level is max(x - 1/2, 0) away, RMS sqrt((1/4) 2 int_{1/2}^1
+// (x - 1/2)^2 dx) = sqrt(1/48) = 0.1443. The midpoint rule on the level's
+// own five edges finds 1/2 at one midpoint and 0 at the others: sqrt(1/24) =
+// 0.2041. The measure cuts a coarse level's triangles (and those of a small
+// input) into fours until there are thousands of them.
+TEST(LevelDistance, ACoarseLevelIsMeasuredOverItsTrianglesNotOnlyAtItsEdges) {
+  const LoopMesh input = left_part(flat_grid(0), 0.5);
+  const TriangleBvh bvh(loop_mesh_triangles(input));
+  LoopMesh level;
+  level.positions = {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+  level.triangles = {0, 1, 2, 0, 2, 3};
+  EXPECT_NEAR(LevelDistance(bvh, input)(level), std::sqrt(1.0 / 48), 1e-3);
 }
 
 }  // namespace

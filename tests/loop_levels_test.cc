@@ -12,18 +12,12 @@
 #include "encoder/loop_level_encoder.h"
 #include "analytic_loop_files.h"
 #include "chunk_list.h"
+#include "loop_mesh_support.h"
 #include "mesh_generators.h"
 #include "qmc/decoder.h"
 
 namespace qmc {
 namespace {
-
-LoopMesh loop_mesh_of(const Mesh& mesh) {
-  LoopMesh out;
-  out.positions.assign(mesh.positions.begin(), mesh.positions.end());
-  out.triangles = mesh.corners;
-  return out;
-}
 
 Mesh triangle_torus() { return tools::triangulated(tools::make_torus(12, 8)); }
 Mesh triangle_grid() { return tools::triangulated(tools::make_grid(6, 5)); }

@@ -25,6 +25,7 @@
 #include "geometry/quadric_simplifier.h"
 #include "geometry/surface_rim.h"
 #include "geometry/triangle_bvh.h"
+#include "loop_mesh_support.h"
 #include "mesh_generators.h"
 #include "mesh_io.h"
 #include "mesh_test_support.h"
@@ -35,14 +36,6 @@ namespace qmc {
 namespace {
 
 namespace fs = std::filesystem;
-
-LoopMesh loop_mesh_of(const Mesh& polygons) {
-  const Mesh m = tools::triangulated(polygons);
-  LoopMesh out;
-  out.positions.assign(m.positions.begin(), m.positions.end());
-  out.triangles = m.corners;
-  return out;
-}
 
 Mesh mesh_of(const LoopMesh& m) {
   Mesh out;

@@ -100,6 +100,18 @@ TEST(ProgressiveEncoder, TheBaseKeepsAtLeast32Triangles) {
   }
 }
 
+// A cube's 12 triangles: the base keeps half of them (5 vertices), not a
+// quarter (a tetrahedron, from which levels 3 - 4 of K = 4 moved away).
+TEST(ProgressiveEncoder, EachLevelOfACubeFromAFiveVertexBaseIsCloserThanTheOneBefore) {
+  const Mesh cube = tools::triangulated(tools::make_cube());
+  std::vector<uint8_t> file;
+  EncodeStats stats;
+  ASSERT_TRUE(encode(cube, progressive(4), &file, &stats).ok());
+  EXPECT_EQ(stats.loop.target_base_faces, 6u);
+  EXPECT_EQ(stats.loop.levels[0].vertices, 5u);
+  expect_levels_approach(cube, 4, "cube");
+}
+
 TEST(ProgressiveEncoder, PrepareThenCodeGivesTheBytesOfEncode) {
   const Mesh mesh = rippled_torus();
   std::vector<uint8_t> whole, coded;

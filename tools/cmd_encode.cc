@@ -54,12 +54,13 @@ const char kHelp[] =
     "  --progressive       write a progressive file (spec 12, seed 003): a coarse\n"
     "                      base mesh plus Loop levels, each refining the one\n"
     "                      before; lossy: the output is a semi-regular remesh of\n"
-    "                      the input surface. The input must be a manifold,\n"
-    "                      consistently oriented mesh; polygons are split into\n"
-    "                      triangles first (and the split is reported)\n"
+    "                      the input surface. Polygons are split into triangles\n"
+    "                      first; a mesh that is not manifold and consistently\n"
+    "                      oriented is cut where it is not (faces of no area\n"
+    "                      left out); the surface stays, and both are reported\n"
     "  --levels K          levels of --progressive, 1..8; the base mesh has\n"
     "                      about 1/4^K of the input's triangles, at least 32\n"
-    "                      (or a quarter of the input's), so the finest level\n"
+    "                      (or half the input's), so the finest level\n"
     "                      may have more than the input (default: the most\n"
     "                      levels that keep 1,000 of them in the base, at\n"
     "                      least 1; smaller bases lose accuracy fast)\n"
@@ -555,6 +556,13 @@ void print_progressive_report(const EncodeArgs& args, const Mesh& input, const E
   if (ls.unreferenced_vertices_dropped)
     std::printf("            %u vertices no face uses were left out (a remesh covers faces only)\n",
                 ls.unreferenced_vertices_dropped);
+  if (ls.faces_without_area_dropped || ls.duplicate_faces_dropped)
+    std::printf("            left out (no area of their own): faces that repeat a vertex %u, second copies of a face %u\n",
+                ls.faces_without_area_dropped, ls.duplicate_faces_dropped);
+  if (ls.edges_cut || ls.vertices_added)
+    std::printf("            not manifold, cut (the surface is the same): edges of 3+ faces or run one way by two %u, "
+                "vertices added where faces meet in separate fans %u\n",
+                ls.edges_cut, ls.vertices_added);
   std::printf("pipeline    simplify %.2f s, fit %.2f s, subdivide+displace+inverse %.2f s, code %.2f s\n",
               ls.seconds_simplify, ls.seconds_fit, ls.seconds_remesh, ls.seconds_code);
   std::printf("levels      level  vertices     faces  edge points  zero %%     step        bytes  code   bytes read  "

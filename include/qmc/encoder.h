@@ -250,6 +250,11 @@ struct LoopLevelStats {
 struct LoopEncodeStats {
   uint32_t input_vertices = 0, input_faces = 0, unreferenced_vertices_dropped = 0;
   uint32_t target_base_faces = 0;
+  // The input made manifold (spec 12.10), its surface unchanged: faces of no
+  // area and second copies of a face left out, edges of three or more faces
+  // (or run the same way by two) cut open, and a vertex whose faces form
+  // several fans split into one vertex per fan.
+  uint32_t faces_without_area_dropped = 0, duplicate_faces_dropped = 0, edges_cut = 0, vertices_added = 0;
   std::vector<LoopLevelStats> levels;  // [0] = base mesh
   // Finest level, the encoder's own targets (spec 12.10): lines along N that
   // hit the input within the reach, and those that missed it.

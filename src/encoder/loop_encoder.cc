@@ -20,6 +20,7 @@
 #include "encoder/loop_level_encoder.h"
 #include "geometry/loop_remesher.h"
 #include "geometry/loop_surface_fit.h"
+#include "geometry/manifold_cut.h"
 #include "encoder/position_encoder.h"
 #include "geometry/quadric_simplifier.h"
 #include "geometry/triangle_bvh.h"
@@ -89,8 +90,8 @@ constexpr int kSurfaceFitSubdivisions = 2;
 constexpr int kSurfaceFitPasses = 30;
 constexpr size_t kSurfaceFitPointsPerVertex = 4;
 
-// The fewest triangles the base is simplified to (or a quarter of the
-// input's, if that is fewer), however many levels: bases of 4 or 5 vertices
+// The fewest triangles the base is simplified to (or half the input's, if
+// that is fewer), however many levels: bases of 4 or 5 vertices
 // (K = 3..6 on meshes of a few hundred to a few thousand triangles) gave
 // levels 5-12 % of the diagonal from the input, often farther than the level
 // before. With at least 32 (progressive_levels bench, docs/results/
@@ -98,7 +99,10 @@ constexpr size_t kSurfaceFitPointsPerVertex = 4;
 // with every level nearer than the one before 28 -> 44 of 50, the finest
 // level of cathead at K = 3 0.12 -> 0.0021 of the diagonal, penguin_control_
 // mesh at K = 6 0.052 -> 0.014 (4,687 -> 21,835 bytes: the finest level has
-// 4^K times the base's triangles).
+// 4^K times the base's triangles). Half, not a quarter, of a smaller input:
+// a cube's 12 triangles simplified to a tetrahedron's 4 left levels 2 - 3
+// farther than level 2 at K = 4, 5, 6; to 6 (5 vertices) every level of
+// K = 2..6 is nearer than the one before.
 constexpr uint64_t kMinBaseFaces = 32;
 
 // Every k-th vertex of `mesh` that a face uses, k the smallest that leaves at
@@ -219,13 +223,20 @@ Status ProgressiveEncoder::prepare(const Mesh& mesh, const EncodeOptions& option
   if (Status s = validate_input(mesh, options); !s.ok()) return s;
   if (options.progressive_levels < 1) return Status(ErrorCode::kInvalidArgument, "progressive levels must be 1..8");
   LoopEncodeStats& ls = p->stats.loop;
-  LoopMesh original;
-  if (Status s = input_as_loop_mesh(mesh, &original); !s.ok()) return s;
+  LoopMesh input, original;
+  if (Status s = input_as_loop_mesh(mesh, &input); !s.ok()) return s;
+  const ManifoldCut cut = cut_to_manifold(input, &original);
+  ls.faces_without_area_dropped = cut.faces_without_area;
+  ls.duplicate_faces_dropped = cut.duplicate_faces;
+  ls.edges_cut = cut.edges_cut;
+  ls.vertices_added = cut.vertices_added;
+  if (original.face_count() == 0)
+    return Status(ErrorCode::kInvalidArgument, "progressive coding needs a face of some area; every face repeats a vertex");
   p->levels = options.progressive_levels;
   ls.input_vertices = uint32_t(mesh.vertex_count());
   ls.input_faces = uint32_t(mesh.face_count());
   ls.target_base_faces = uint32_t(std::max<uint64_t>(
-      {4, std::min<uint64_t>(kMinBaseFaces, mesh.face_count() / 4), mesh.face_count() >> (2 * p->levels)}));
+      {4, std::min<uint64_t>(kMinBaseFaces, original.face_count() / 2), original.face_count() >> (2 * p->levels)}));
 
   // II. Simplification.
   report(options, "simplify", 0);

@@ -8,7 +8,9 @@
 // that it can afford it at every level: the level's edge midpoints against
 // the input's triangles, the input's (a fixed share of them on a large input)
 // against a BVH of the level's, built per call. Each midpoint is measured
-// once, for both of its faces.
+// once, for both of its faces. A surface of few triangles (a coarse level, a
+// small input) is cut into fours first, until it has thousands: the same
+// surface, a finer rule.
 #pragma once
 
 #include <cstddef>
