@@ -173,6 +173,29 @@ TEST(LoopRemesh, BvhClosestPointAgreesWithBruteForce) {
   EXPECT_EQ(TriangleBvh().closest_point({0, 0, 0}).triangle, kNoTriangle);
 }
 
+// Triangles whose centroids crowd towards x = 0 (at 2^-i): the surface area
+// heuristic splits a few off at a time, and the tree would be as deep as
+// there are triangles without the median split that takes over at depth 48
+// (the searches' stack holds 96 entries).
+TEST(LoopRemesh, BvhOfCrowdedTrianglesStaysShallowAndExact) {
+  std::vector<Triangle3d> tris;
+  for (int i = 0; i < 3000; ++i) {
+    const double x = std::ldexp(1.0, -(i % 1000)), y = i / 1000;
+    tris.push_back({{x, y, 0}, {x, y + 0.5, 0}, {x, y, 0.5}});
+  }
+  const TriangleBvh bvh(tris);
+  EXPECT_LE(bvh.depth(), 48 + 12 + 1);
+  EXPECT_GT(bvh.depth(), 12);  // deeper than balanced: the heuristic did act
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-0.5, 2.5);
+  for (int i = 0; i < 500; ++i) {
+    const Vec3d p{u(rng) - 1, u(rng), u(rng) - 1};
+    double best = INFINITY;
+    for (const Triangle3d& t : tris) best = std::min(best, point_triangle_distance_squared(p, t));
+    EXPECT_EQ(bvh.closest_point(p).distance_squared, best);
+  }
+}
+
 // Brute force by another route: the plane crossing, then the point's side of
 // each edge.
 bool brute_line_hit(const Triangle3d& t, const Vec3d& o, const Vec3d& d, double* param) {

@@ -183,8 +183,10 @@ struct EncodeOptions {
   // Section 12: > 0 (1..8) writes a progressive file with this many Loop
   // levels, made by seed 003's pipeline (simplify, fit, subdivide, displace,
   // inverse Loop). Lossy by nature: the output is a semi-regular remesh of
-  // the input surface, not its vertices. The input must be a manifold,
-  // consistently oriented triangle mesh; position_bits applies to the base.
+  // the input surface, not its vertices. The input must be a triangle mesh;
+  // where it is not manifold or not consistently oriented it is cut open
+  // first, its surface unchanged (LoopEncodeStats says what was cut);
+  // position_bits applies to the base.
   int progressive_levels = 0;
   // The LEVL displacement code: -1 the smaller of 0 (the seed's 1/9-bit
   // code, section 12.7) and 2 (range coded in contexts, 12.7.1); or 0 or 2.

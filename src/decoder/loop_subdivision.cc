@@ -43,6 +43,11 @@ class EdgeHash {
   std::vector<uint32_t> values_;
 };
 
+// Names an edge in a rejection; built only when one is made.
+std::string edge_of_face(uint32_t v, uint32_t w, uint32_t f) {
+  return "edge (" + std::to_string(v) + ", " + std::to_string(w) + ") of face " + std::to_string(f);
+}
+
 Status number_edges(const LoopMesh& mesh, LoopEdges* e) {
   const uint32_t faces = mesh.face_count();
   EdgeHash hash(size_t(faces) * 3 / 2 + 3);
@@ -62,9 +67,9 @@ Status number_edges(const LoopMesh& mesh, LoopEdges* e) {
         e->face0.push_back(f), e->corner0.push_back(k), e->face1.push_back(kNoVertex), e->corner1.push_back(kNoVertex);
         continue;
       }
-      const std::string where = "edge (" + std::to_string(v) + ", " + std::to_string(w) + ") of face " + std::to_string(f);
-      if (e->d[edge] != kNoVertex) return bad_level(where + " is in more than two faces");
-      if (e->a[edge] == v) return bad_level(where + " runs the same way as in face " + std::to_string(e->face0[edge]));
+      if (e->d[edge] != kNoVertex) return bad_level(edge_of_face(v, w, f) + " is in more than two faces");
+      if (e->a[edge] == v)
+        return bad_level(edge_of_face(v, w, f) + " runs the same way as in face " + std::to_string(e->face0[edge]));
       e->d[edge] = third, e->face1[edge] = f, e->corner1[edge] = k;
     }
   }

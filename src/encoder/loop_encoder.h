@@ -11,8 +11,9 @@
 namespace qmc {
 
 // Called by encode() when options.progressive_levels > 0, after the common
-// input checks. The mesh must be a manifold, consistently oriented triangle
-// mesh; anything else is an error naming the problem.
+// input checks. The mesh must be a triangle mesh with a face of some area
+// (anything else is an error naming the problem); where it is not manifold
+// or not consistently oriented it is cut first (geometry/manifold_cut.h).
 Status encode_loop_levels(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* out,
                           EncodeStats* stats);
 

@@ -53,6 +53,102 @@ bool line_box_entry(const double lo[3], const double hi[3], const Vec3d& origin,
   return true;
 }
 
+// A box grown point by point or box by box.
+struct Box {
+  double lo[3] = {kInfinity, kInfinity, kInfinity}, hi[3] = {-kInfinity, -kInfinity, -kInfinity};
+  void add(const Vec3d& p) {
+    for (int axis = 0; axis < 3; ++axis) {
+      lo[axis] = std::min(lo[axis], component(p, axis));
+      hi[axis] = std::max(hi[axis], component(p, axis));
+    }
+  }
+  void add(const Box& b) {
+    for (int axis = 0; axis < 3; ++axis) lo[axis] = std::min(lo[axis], b.lo[axis]), hi[axis] = std::max(hi[axis], b.hi[axis]);
+  }
+  int longest_axis() const {
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+      if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
+    return axis;
+  }
+  double half_area() const {
+    const double x = hi[0] - lo[0], y = hi[1] - lo[1], z = hi[2] - lo[2];
+    return x < 0 ? 0 : x * y + y * z + z * x;
+  }
+};
+
+constexpr uint32_t kLeafTriangles = 4;
+constexpr int kSplitBins = 16;
+
+// The surface area heuristic (MacDonald and Booth 1990; binned, Wald 2007)
+// gives boxes of less overlap than a median split, so that a point or line
+// near the surface meets fewer of them: the progressive encoder on
+// stanford-bunny at K = 4, 14.7 -> 13.1 G instructions (line searches 4.9 ->
+// 3.8 G, closest points 2.5 -> 2.2 G, building 0.6 -> 0.8 G). Binning the
+// longest axis alone, not all three, halved the cost of building for the same
+// searches. Below this depth the median split takes over, so that however
+// the triangles cluster the tree's depth, and with it the searches' fixed
+// stack, stays under 48 + log2(triangles) + 1.
+constexpr int kSurfaceAreaDepth = 48;
+
+// Splits [begin, end) of `order` at the cheapest of the kSplitBins - 1
+// planes between the centroids' bins along the longest axis of their box;
+// the first index of the second half, or 0 where no plane leaves triangles
+// on both sides.
+uint32_t surface_area_split(const std::vector<Vec3d>& centroids, const std::vector<Box>& boxes, const Box& centroid_box,
+                            uint32_t begin, uint32_t end, std::vector<uint32_t>* order) {
+  const int axis = centroid_box.longest_axis();
+  const double lo = centroid_box.lo[axis], extent = centroid_box.hi[axis] - lo;
+  if (!(extent > 0)) return 0;
+  const double scale = kSplitBins / extent;
+  auto bin_of = [&](uint32_t t) { return std::min(kSplitBins - 1, int((component(centroids[t], axis) - lo) * scale)); };
+  Box bin_box[kSplitBins];
+  uint32_t bin_count[kSplitBins] = {};
+  for (uint32_t k = begin; k < end; ++k) {
+    const uint32_t t = (*order)[k];
+    bin_box[bin_of(t)].add(boxes[t]);
+    ++bin_count[bin_of(t)];
+  }
+  // Plane p sends bins < p to the first half: cost = area x count per side.
+  double right_area[kSplitBins];
+  uint32_t right_count[kSplitBins];
+  Box side;
+  uint32_t count = 0;
+  for (int b = kSplitBins - 1; b > 0; --b) {
+    side.add(bin_box[b]);
+    count += bin_count[b];
+    right_area[b] = side.half_area(), right_count[b] = count;
+  }
+  side = Box{};
+  count = 0;
+  double best_cost = kInfinity;
+  int best_plane = 0;
+  for (int plane = 1; plane < kSplitBins; ++plane) {
+    side.add(bin_box[plane - 1]);
+    count += bin_count[plane - 1];
+    if (count == 0 || right_count[plane] == 0) continue;
+    const double cost = side.half_area() * count + right_area[plane] * right_count[plane];
+    if (cost < best_cost) best_cost = cost, best_plane = plane;
+  }
+  if (best_plane == 0) return 0;
+  const auto middle = std::partition(order->begin() + begin, order->begin() + end,
+                                     [&](uint32_t t) { return bin_of(t) < best_plane; });
+  return uint32_t(middle - order->begin());
+}
+
+// Splits [begin, end) of `order` at the median centroid on the longest axis
+// of the centroids' box; returns the first index of the second half.
+uint32_t median_split(const std::vector<Vec3d>& centroids, const Box& centroid_box, uint32_t begin, uint32_t end,
+                      std::vector<uint32_t>* order) {
+  const int axis = centroid_box.longest_axis();
+  const uint32_t mid = begin + (end - begin) / 2;
+  std::nth_element(order->begin() + begin, order->begin() + mid, order->begin() + end, [&](uint32_t x, uint32_t y) {
+    const double cx = component(centroids[x], axis), cy = component(centroids[y], axis);
+    return cx < cy || (cx == cy && x < y);
+  });
+  return mid;
+}
+
 }  // namespace
 
 double point_triangle_distance_squared(const Vec3d& p, const Triangle3d& t, Vec3d* closest) {
@@ -134,51 +230,44 @@ void TriangleBvh::build(const std::vector<Triangle3d>& triangles) {
   original_.resize(triangles.size());
   std::iota(original_.begin(), original_.end(), 0u);
   std::vector<Vec3d> centroids(triangles.size());
-  for (size_t i = 0; i < triangles.size(); ++i)
+  std::vector<Box> boxes(triangles.size());
+  for (size_t i = 0; i < triangles.size(); ++i) {
     centroids[i] = (triangles[i].a + triangles[i].b + triangles[i].c) * (1.0 / 3.0);
+    for (const Vec3d* v : {&triangles[i].a, &triangles[i].b, &triangles[i].c}) boxes[i].add(*v);
+  }
   nodes_.reserve(2 * (triangles.size() / 2 + 1));
   // Depth-first with an explicit stack: the first child is pushed last, so it
   // is built right after its parent and lands at the parent's index + 1.
   struct Task {
     uint32_t begin, end, parent;  // parent: the inner node whose second child this is, or none
+    int depth;
   };
-  std::vector<Task> tasks = {{0, uint32_t(triangles.size()), UINT32_MAX}};
+  std::vector<Task> tasks = {{0, uint32_t(triangles.size()), UINT32_MAX, 0}};
   while (!tasks.empty()) {
     const Task task = tasks.back();
     tasks.pop_back();
-    Node node;
-    for (int axis = 0; axis < 3; ++axis) node.lo[axis] = kInfinity, node.hi[axis] = -kInfinity;
-    double clo[3] = {kInfinity, kInfinity, kInfinity}, chi[3] = {-kInfinity, -kInfinity, -kInfinity};
+    Box box, centroid_box;
     for (uint32_t k = task.begin; k < task.end; ++k) {
-      const Triangle3d& t = triangles[original_[k]];
-      for (int axis = 0; axis < 3; ++axis) {
-        for (const Vec3d* v : {&t.a, &t.b, &t.c}) {
-          node.lo[axis] = std::min(node.lo[axis], component(*v, axis));
-          node.hi[axis] = std::max(node.hi[axis], component(*v, axis));
-        }
-        const double c = component(centroids[original_[k]], axis);
-        clo[axis] = std::min(clo[axis], c);
-        chi[axis] = std::max(chi[axis], c);
-      }
+      box.add(boxes[original_[k]]);
+      centroid_box.add(centroids[original_[k]]);
     }
+    Node node;
+    std::copy_n(box.lo, 3, node.lo);
+    std::copy_n(box.hi, 3, node.hi);
     const uint32_t index = uint32_t(nodes_.size());
+    depth_ = std::max(depth_, task.depth + 1);
     if (task.parent != UINT32_MAX) nodes_[task.parent].first = index;
     node.first = task.begin;
     node.count = task.end - task.begin;
     nodes_.push_back(node);
-    if (task.end - task.begin <= 4) continue;
-    int axis = 0;
-    for (int a = 1; a < 3; ++a)
-      if (chi[a] - clo[a] > chi[axis] - clo[axis]) axis = a;
-    const uint32_t mid = task.begin + (task.end - task.begin) / 2;
-    std::nth_element(original_.begin() + task.begin, original_.begin() + mid, original_.begin() + task.end,
-                     [&](uint32_t x, uint32_t y) {
-                       const double cx = component(centroids[x], axis), cy = component(centroids[y], axis);
-                       return cx < cy || (cx == cy && x < y);
-                     });
+    if (task.end - task.begin <= kLeafTriangles) continue;
+    uint32_t mid = task.depth < kSurfaceAreaDepth
+                       ? surface_area_split(centroids, boxes, centroid_box, task.begin, task.end, &original_)
+                       : 0;
+    if (mid == 0) mid = median_split(centroids, centroid_box, task.begin, task.end, &original_);
     nodes_[index].count = 0;
-    tasks.push_back({mid, task.end, index});
-    tasks.push_back({task.begin, mid, UINT32_MAX});
+    tasks.push_back({mid, task.end, index, task.depth + 1});
+    tasks.push_back({task.begin, mid, UINT32_MAX, task.depth + 1});
   }
 }
 

@@ -6,12 +6,13 @@
 // al.), and of the Metro-style distances of tools/lib/mesh_distance.h (seed
 // 003 §4.1).
 //
-// The tree: median split on the longest axis of the centroids, at most four
-// triangles per leaf, nodes in depth-first order (an inner node's first child
-// follows it, the second is named). The median split keeps the tree balanced,
-// so its depth, and with it the fixed traversal stack, stays logarithmic even
-// for clustered or repeated triangles. Building and both searches are
-// iterative.
+// The tree: split by the surface area heuristic over 16 bins of the
+// centroids along their longest axis, at most four triangles per leaf, nodes
+// in depth-first order (an inner node's first child follows it, the second is
+// named). From depth 48 on the split is at the median centroid instead, which
+// halves the triangles, so the depth, and with it the fixed traversal stack,
+// stays under 48 + log2(triangles) + 1 even for clustered or repeated
+// triangles. Building and both searches are iterative.
 #pragma once
 
 #include <cstddef>
@@ -74,6 +75,8 @@ class TriangleBvh {
   const Triangle3d& triangle(uint32_t index) const { return triangles_[position_[index]]; }
   // Diagonal of the box around all triangles (0 when empty).
   double bbox_diagonal() const;
+  // Nodes on the longest path from the root to a leaf (0 when empty).
+  int depth() const { return depth_; }
 
   // Squared distance from p to the nearest triangle (+infinity if there are
   // none). *nearest, if not null, receives that triangle's index in the
@@ -114,6 +117,7 @@ class TriangleBvh {
   std::vector<double> planes_;         // leaf order: unit normal and offset, 4 values per triangle
   std::vector<uint32_t> original_;     // leaf order -> constructor order
   std::vector<uint32_t> position_;     // constructor order -> leaf order
+  int depth_ = 0;
 };
 
 }  // namespace qmc
