@@ -29,13 +29,18 @@ double box_distance_squared(const double lo[3], const double hi[3], const Vec3d&
   return sum;
 }
 
-// The part of the line parameter range [-limit, limit] inside the box
-// (padded by a relative 1e-9 so that rounding in the slab test never drops a
-// triangle that touches the box's face), as the smallest |t| in it. False
-// when the line misses the box within the range.
-bool line_box_entry(const double lo[3], const double hi[3], const Vec3d& origin, const Vec3d& direction,
+// The padding of a box for line_box_entry: a relative 1e-9, so that
+// rounding in the slab test never drops a triangle that touches the box's
+// face. Worked out once per node, when the tree is built.
+double line_pad(const double lo[3], const double hi[3]) {
+  return 1e-9 * std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) + 1e-300;
+}
+
+// The part of the line parameter range [-limit, limit] inside the box padded
+// by `pad`, as the smallest |t| in it. False when the line misses the box
+// within the range.
+bool line_box_entry(const double lo[3], const double hi[3], double pad, const Vec3d& origin, const Vec3d& direction,
                     const double inverse[3], double limit, double* nearest_abs_t) {
-  const double pad = 1e-9 * std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]}) + 1e-300;
   double t_min = -limit, t_max = limit;
   for (int axis = 0; axis < 3; ++axis) {
     const double o = component(origin, axis), low = lo[axis] - pad, high = hi[axis] + pad;
@@ -254,6 +259,7 @@ void TriangleBvh::build(const std::vector<Triangle3d>& triangles) {
     Node node;
     std::copy_n(box.lo, 3, node.lo);
     std::copy_n(box.hi, 3, node.hi);
+    node.pad = line_pad(node.lo, node.hi);
     const uint32_t index = uint32_t(nodes_.size());
     depth_ = std::max(depth_, task.depth + 1);
     if (task.parent != UINT32_MAX) nodes_[task.parent].first = index;
@@ -353,7 +359,7 @@ bool TriangleBvh::nearest_line_hit(const Vec3d& origin, const Vec3d& direction, 
   Entry stack[kStackSize];
   int top = 0;
   double root_t;
-  if (line_box_entry(nodes_[0].lo, nodes_[0].hi, origin, direction, inverse, limit, &root_t))
+  if (line_box_entry(nodes_[0].lo, nodes_[0].hi, nodes_[0].pad, origin, direction, inverse, limit, &root_t))
     stack[top++] = {0, root_t};
   while (top > 0) {
     const Entry e = stack[--top];
@@ -384,8 +390,8 @@ bool TriangleBvh::nearest_line_hit(const Vec3d& origin, const Vec3d& direction, 
     }
     uint32_t near = e.node + 1, far = n.first;
     double near_t, far_t;
-    const bool near_in = line_box_entry(nodes_[near].lo, nodes_[near].hi, origin, direction, inverse, limit, &near_t);
-    const bool far_in = line_box_entry(nodes_[far].lo, nodes_[far].hi, origin, direction, inverse, limit, &far_t);
+    const bool near_in = line_box_entry(nodes_[near].lo, nodes_[near].hi, nodes_[near].pad, origin, direction, inverse, limit, &near_t);
+    const bool far_in = line_box_entry(nodes_[far].lo, nodes_[far].hi, nodes_[far].pad, origin, direction, inverse, limit, &far_t);
     if (near_in && far_in && far_t < near_t) std::swap(near, far), std::swap(near_t, far_t);
     if (far_in && far_t <= best_abs) stack[top++] = {far, far_t};
     if (near_in && near_t <= best_abs) stack[top++] = {near, near_t};

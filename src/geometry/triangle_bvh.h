@@ -109,6 +109,7 @@ class TriangleBvh {
     double lo[3], hi[3];
     uint32_t first;  // leaf: first triangle; inner: index of the second child (the first is next)
     uint32_t count;  // triangles in a leaf, 0 for an inner node
+    double pad;      // the margin of the box's slab test in nearest_line_hit
   };
   void build(const std::vector<Triangle3d>& triangles);
 
