@@ -14,19 +14,8 @@ namespace {
 
 // The faces kept: no repeated vertex, no second copy of a vertex set.
 std::vector<uint32_t> faces_kept(const LoopMesh& mesh, ManifoldCut* cut) {
-  std::vector<std::array<uint32_t, 4>> keys;  // sorted vertices, then the face
-  keys.reserve(mesh.face_count());
-  for (uint32_t f = 0; f < mesh.face_count(); ++f) {
-    const uint32_t* t = &mesh.triangles[3 * size_t(f)];
-    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) {
-      ++cut->faces_without_area;
-      continue;
-    }
-    std::array<uint32_t, 4> k = {t[0], t[1], t[2], f};
-    std::sort(k.begin(), k.begin() + 3);
-    keys.push_back(k);
-  }
-  std::sort(keys.begin(), keys.end());
+  const std::vector<std::array<uint32_t, 4>> keys = faces_by_vertex_set(mesh);
+  cut->faces_without_area = mesh.face_count() - uint32_t(keys.size());
   std::vector<uint32_t> kept;
   kept.reserve(keys.size());
   for (size_t i = 0; i < keys.size(); ++i) {
@@ -71,6 +60,20 @@ void join_fans(const std::vector<uint32_t>& triangles, UnionFind* fans, Manifold
 }
 
 }  // namespace
+
+std::vector<std::array<uint32_t, 4>> faces_by_vertex_set(const LoopMesh& mesh) {
+  std::vector<std::array<uint32_t, 4>> keys;
+  keys.reserve(mesh.face_count());
+  for (uint32_t f = 0; f < mesh.face_count(); ++f) {
+    const uint32_t* t = &mesh.triangles[3 * size_t(f)];
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) continue;
+    std::array<uint32_t, 4> k = {t[0], t[1], t[2], f};
+    std::sort(k.begin(), k.begin() + 3);
+    keys.push_back(k);
+  }
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
 
 ManifoldCut cut_to_manifold(const LoopMesh& mesh, LoopMesh* out) {
   ManifoldCut cut;

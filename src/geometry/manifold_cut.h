@@ -9,7 +9,9 @@
 // same position. A manifold oriented mesh comes out unchanged.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <vector>
 
 #include "decoder/loop_subdivision.h"
 
@@ -25,5 +27,10 @@ struct ManifoldCut {
 
 // `mesh`'s indices must name its vertices; `out` may not be `mesh`.
 ManifoldCut cut_to_manifold(const LoopMesh& mesh, LoopMesh* out);
+
+// Every face of `mesh` that repeats no vertex as {its three vertices in
+// increasing order, the face}, sorted: faces on the same three vertices come
+// next to each other, the earliest first.
+std::vector<std::array<uint32_t, 4>> faces_by_vertex_set(const LoopMesh& mesh);
 
 }  // namespace qmc

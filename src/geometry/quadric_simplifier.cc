@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "bitio/union_find.h"
+#include "geometry/manifold_cut.h"
 
 namespace qmc {
 namespace {
@@ -216,16 +217,10 @@ Status compact(const LoopMesh& mesh, LoopMesh* out, uint32_t* dropped) {
 
 // Two faces on the same three vertices: closed up (two faces of opposite
 // orientation) they are a separate sphere of two triangles, which Loop
-// subdivision cannot make smooth; build_loop_edges lets it pass.
+// subdivision cannot make smooth; build_loop_edges lets it pass (and has
+// refused faces that repeat a vertex, which faces_by_vertex_set leaves out).
 Status check_no_duplicate_faces(const LoopMesh& mesh) {
-  std::vector<std::array<uint32_t, 4>> keys(mesh.face_count());
-  for (uint32_t f = 0; f < mesh.face_count(); ++f) {
-    std::array<uint32_t, 4> k = {mesh.triangles[3 * size_t(f)], mesh.triangles[3 * size_t(f) + 1],
-                                 mesh.triangles[3 * size_t(f) + 2], f};
-    std::sort(k.begin(), k.begin() + 3);
-    keys[f] = k;
-  }
-  std::sort(keys.begin(), keys.end());
+  const std::vector<std::array<uint32_t, 4>> keys = faces_by_vertex_set(mesh);
   for (size_t i = 1; i < keys.size(); ++i)
     if (std::equal(keys[i].begin(), keys[i].begin() + 3, keys[i - 1].begin()))
       return invalid("faces " + std::to_string(keys[i - 1][3]) + " and " + std::to_string(keys[i][3]) +
