@@ -331,6 +331,22 @@ struct RatedFile {
   size_t tried = 0, measured = 0;
 };
 
+// The rated file's setting again with --max-deviation (spec 12.7.2).
+struct CorrectedFile {
+  bool ok = false;
+  std::string error;
+  double max_deviation = 0;
+  uint64_t bytes = 0;
+  uint32_t corrected_vertices = 0;
+  Distance distance;
+};
+
+// The max deviation asked for, as a share of Draco's Hausdorff distance:
+// inside issue 17's 2, as the fit comes out above what it is asked
+// (12.10: it aims at 0.7 of it, and rounding and points between its
+// samples add to that).
+constexpr double kDeviationOfDracoHausdorff = 1.6;
+
 struct MeshRun {
   std::string name;
   std::string error;  // unreadable mesh
@@ -340,6 +356,7 @@ struct MeshRun {
   std::vector<DracoPoint> draco;  // 8..14 bits
   std::vector<RatedFile> rated;   // per kRateTargets
   std::vector<RatedFile> lod_rated;  // per kLodErrors
+  std::vector<CorrectedFile> corrected;  // per kRateTargets
   std::vector<Timing> timings;    // first mesh only: K = 3, 4
   DracoTiming draco_timing;
   bool timed = false;
@@ -424,6 +441,31 @@ RatedFile run_rated(const qmc::Mesh& triangles, double relative_l2, const Option
   return r;
 }
 
+CorrectedFile run_corrected(const qmc::Mesh& triangles, const RatedFile& rated, double max_deviation,
+                            const Options& opt) {
+  CorrectedFile c;
+  c.max_deviation = max_deviation;
+  qmc::EncodeOptions options;
+  options.progressive_levels = rated.k;
+  options.position_bits = rated.bits;
+  options.finest_step_scale = rated.step_scale;
+  options.max_deviation = max_deviation;
+  std::vector<uint8_t> file;
+  qmc::EncodeStats stats;
+  qmc::DecodedFile decoded;
+  qmc::Status s = qmc::encode(triangles, options, &file, &stats);
+  if (s.ok()) s = qmc::decode(file.data(), file.size(), &decoded);
+  if (!s.ok()) {
+    c.error = s.to_string();
+    return c;
+  }
+  c.ok = true;
+  c.bytes = file.size();
+  c.corrected_vertices = decoded.levels.back().corrected_vertices;
+  c.distance = measure(triangles, decoded.mesh, opt);
+  return c;
+}
+
 MeshRun bench_mesh(const std::string& path, bool timed, const Options& opt) {
   MeshRun m;
   m.name = qmc::bench::display_name(path);
@@ -448,6 +490,15 @@ MeshRun bench_mesh(const std::string& path, bool timed, const Options& opt) {
     RatedFile none;
     none.error = "no Draco point";
     m.rated.push_back(d ? run_rated(triangles, d->distance.relative_l2, opt) : none);
+    CorrectedFile not_rated;
+    not_rated.error = "no rated file";
+    if (d && m.rated.back().ok) {
+      progress(format("%s: the rated file with --max-deviation", m.name.c_str()));
+      m.corrected.push_back(
+          run_corrected(triangles, m.rated.back(), kDeviationOfDracoHausdorff * d->distance.relative_hausdorff, opt));
+    } else {
+      m.corrected.push_back(not_rated);
+    }
   }
   for (double error : kLodErrors) {
     progress(format("%s: qmc --target-error %.0e", m.name.c_str(), error));
@@ -689,6 +740,22 @@ std::string interpolated_cell(const MeshRun& m, const DracoPoint& d) {
   return format("%s%.0f (%.3f)", q.below_first ? "<= " : "", q.bytes, q.bytes / double(d.bytes));
 }
 
+std::string corrected_row(const MeshRun& m, const RateTarget& t, size_t target_index) {
+  const DracoPoint* d = draco_at(m, t.draco_bits);
+  if (!m.error.empty() || !d || target_index >= m.corrected.size() || !m.corrected[target_index].ok) return "";
+  const CorrectedFile& c = m.corrected[target_index];
+  const RatedFile& r = m.rated[target_index];
+  const double ratio = double(c.bytes) / double(d->bytes);
+  const double h_ratio = c.distance.relative_hausdorff / d->distance.relative_hausdorff;
+  return format("| %s | %d | %llu (%.3f) | %.3e / %.1f | %.3g | %llu (%.3f) | %u | %.3e | %.3e / %.3e = %.1f | %s | %s |\n",
+                m.name.c_str(), t.draco_bits, (unsigned long long)r.bytes, double(r.bytes) / double(d->bytes),
+                r.relative_hausdorff, r.relative_hausdorff / d->distance.relative_hausdorff, c.max_deviation,
+                (unsigned long long)c.bytes, ratio, c.corrected_vertices, c.distance.relative_l2,
+                c.distance.relative_hausdorff, d->distance.relative_hausdorff, h_ratio,
+                met(ratio <= t.ratio && c.distance.relative_l2 <= d->distance.relative_l2).c_str(),
+                met(h_ratio <= 2).c_str());
+}
+
 std::string target_row(const MeshRun& m, const RateTarget& t, size_t target_index) {
   const DracoPoint* d = draco_at(m, t.draco_bits);
   if (!m.error.empty() || !d)
@@ -805,6 +872,19 @@ std::string section_rd(const std::vector<MeshRun>& runs, const Options& opt) {
        "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- |\n";
   for (size_t i = 0; i < std::size(kRateTargets); ++i)
     for (const MeshRun& m : runs) s += target_row(m, kRateTargets[i], i);
+  std::string corrected;
+  for (size_t i = 0; i < std::size(kRateTargets); ++i)
+    for (const MeshRun& m : runs) corrected += corrected_row(m, kRateTargets[i], i);
+  if (!corrected.empty())
+    s += format(
+        "\nThe same files with the finest level corrected (LEVL code 4, spec 12.7.2): the setting the rate search "
+        "chose, encoded again with `--max-deviation` %.1f times Draco's relative Hausdorff distance, decoded and "
+        "measured as above. Targets as above, and issue 17's Hausdorff within 2x Draco's at equal L2.\n\n"
+        "| mesh | Draco bits | rated file: bytes (qmc / Draco) | its Hausdorff / diag / Draco's | max deviation asked | "
+        "corrected file: bytes (qmc / Draco) | vertices corrected | L2 / diag | Hausdorff / diag: qmc / Draco = ratio | "
+        "bytes and L2 target | Hausdorff <= 2 |\n"
+        "| --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | --- | --- |\n",
+        kDeviationOfDracoHausdorff) + corrected;
   if (!opt.plot.empty()) {
     const size_t slash = opt.plot.find_last_of('/');
     s += "\n![log10(bytes) against log10(L2 / bounding-box diagonal), qmc levels and Draco 8-14 bits](" +

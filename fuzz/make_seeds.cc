@@ -1,6 +1,7 @@
 // Builds each fuzz target's seed corpus from the conformance vectors:
 // whole files for the file decoders, chunk payloads for the component
 // decoders. Usage: make_seeds VECTORS_DIR OUT_DIR
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "bitio/byte_io.h"
+#include "bitio/displacement_coding.h"
 #include "bitio/predicted_mapping.h"
 #include "bitio/range_coder.h"
 #include "qmc/format.h"
@@ -94,12 +96,17 @@ static void write_gim_plane_seed(const fs::path& path, const GimPlaneHeader& h, 
 // dozen faces with seams (a vertex's corners split between two values),
 // values shared between vertices and values given per face, coded by the
 // encoder's template (spec 15.11). No vector holds such a soup.
-static void write_predicted_mapping_seeds(const fs::path& dir) {
-  uint32_t state = 12345;
-  const auto next = [&](uint32_t below) {
+// A small linear congruential generator: seeds the same on every platform.
+struct SeedRandom {
+  uint32_t state;
+  uint32_t operator()(uint32_t below) {
     state = state * 1103515245u + 12345u;
     return (state >> 8) % below;
-  };
+  }
+};
+
+static void write_predicted_mapping_seeds(const fs::path& dir) {
+  SeedRandom next{12345};
   for (int seed = 0; seed < 12; ++seed) {
     const uint32_t vertices = 6 + 5 * uint32_t(seed), faces = 8 + 7 * uint32_t(seed);
     std::vector<uint8_t> input{uint8_t(vertices - 1), uint8_t(faces - 1), 0, 0};
@@ -154,6 +161,41 @@ static void write_predicted_mapping_seeds(const fs::path& dir) {
   }
 }
 
+// level_corrections input: the count byte, then a code-4 stream over the
+// octahedron of the target (12 edges, a level of 18 vertices): displacements,
+// then C corrections of pseudo-random gaps and offsets of every size.
+static void write_level_corrections_seeds(const fs::path& dir) {
+  SeedRandom next{777};
+  for (uint32_t seed = 0; seed < 20; ++seed) {
+    qmc::RangeEncoder rc;
+    qmc::DisplacementModel displacements;
+    for (int e = 0; e < 12; ++e)
+      qmc::code_displacement(&rc, &displacements, qmc::DisplacementContext(0, 0, 0), int(next(9)) - 4);
+    qmc::CorrectionModel corrections;
+    const int32_t none[3] = {0, 0, 0};
+    int32_t previous[3] = {0, 0, 0};
+    uint32_t vertex = 0;
+    const uint32_t count = seed % 19;
+    for (uint32_t i = 0; i < count; ++i) {
+      const uint32_t room = 18 - (i == 0 ? 0 : vertex + 1) - (count - 1 - i);
+      const uint32_t gap = next(room);
+      qmc::code_correction_gap(&rc, &corrections, gap);
+      vertex = i == 0 ? gap : vertex + 1 + gap;
+      int32_t offset[3];
+      for (int a = 0; a < 3; ++a) {
+        offset[a] = int32_t(next(1u << (1 + next(15)))) * (next(2) ? -1 : 1);
+        qmc::code_correction_offset(&rc, &corrections, qmc::correction_bucket(i == 0 ? none : previous, offset, a), a,
+                                    offset[a]);
+      }
+      std::copy(offset, offset + 3, previous);
+    }
+    std::vector<uint8_t> input{uint8_t(count)};
+    const std::vector<uint8_t> stream = rc.finish();
+    input.insert(input.end(), stream.begin(), stream.end());
+    write(dir / ("corrections_" + std::to_string(seed)), input.data(), input.size());
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc != 3) {
     std::fprintf(stderr, "usage: make_seeds VECTORS_DIR OUT_DIR\n");
@@ -163,9 +205,10 @@ int main(int argc, char** argv) {
   for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "polygon_connectivity", "polygon_coding7", "positions",
                         "predicted_positions", "geometry_order",
                         "huffman", "roundtrip", "order", "loop_levels", "gim_file", "gim_plane", "attributes", "face_labels",
-                        "predicted_mapping", "attribute_twins"})
+                        "predicted_mapping", "attribute_twins", "level_corrections"})
     fs::create_directories(out / t);
   write_predicted_mapping_seeds(out / "predicted_mapping");
+  write_level_corrections_seeds(out / "level_corrections");
   int n = 0;
   for (const auto& entry : fs::directory_iterator(argv[1])) {
     std::ifstream in(entry.path(), std::ios::binary);

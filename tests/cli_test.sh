@@ -118,7 +118,7 @@ for vector in "$vectors"/invalid_*.qmc; do
 done
 if [ -z "$info_crashed" ]; then passed=$((passed + 1)); else
   failed=$((failed + 1)); echo "FAIL info-invalid-vectors:$info_crashed"; fi
-check format-1.14-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f114.qmc" --format 1.14
+check format-1.15-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f115.qmc" --format 1.15
 check format-1.010-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f112.qmc" --format 1.010
 "$meshgen" torus 40 30 "$work/torus1200.obj" >/dev/null  # 1,200 vertices of quads: method 4 or 5, never 1 (14.5)
 check format-1.9 0 "$qmc" encode "$work/torus1200.obj" "$work/f19.qmc" --quiet --format 1.11
@@ -157,7 +157,7 @@ check soup-encode 0 "$qmc" encode "$work/soup.off" "$work/soup.qmc" -q 16 --text
 check soup-verify 0 "$qmc" verify "$work/soup.off" "$work/soup.qmc"
 check verify-wrong-mesh 1 "$qmc" verify "$work/soup.off" "$work/torus.qmc"
 check help 0 "$qmc" --help
-contains help-version "$work/out" "format version 1.13, spec/qmc-format.md"
+contains help-version "$work/out" "format version 1.14, spec/qmc-format.md"
 check encode-help 0 "$qmc" encode --help
 contains help-default-bits "$work/out" "1/4096"
 check no-args 2 "$qmc"
@@ -236,6 +236,17 @@ contains progressive-soup-left-out-message "$work/out" "faces that repeat a vert
 printf 'OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n3 1 2 2\n' >"$work/no_area.off"
 check progressive-no-area-rejected 3 "$qmc" encode "$work/no_area.off" "$work/x.qmc" --progressive --levels 1
 contains progressive-no-area-message "$work/err" "every face repeats a vertex"
+# --max-deviation (spec 12.7.2): the finest level's strays corrected, LEVL code 4 in a 1.14 file, the
+# deviation before and after reported; a progressive option that --format 1.13 refuses.
+check progressive-max-deviation 0 "$qmc" encode "$work/torus.obj" "$work/dev.qmc" --progressive --levels 2 \
+  --max-deviation 1e-4
+contains progressive-max-deviation-report "$work/out" "before its corrections"
+check progressive-max-deviation-info 0 "$qmc" info "$work/dev.qmc"
+contains progressive-max-deviation-version "$work/out" "format 1.14"
+check progressive-max-deviation-alone 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --max-deviation 1e-3
+check progressive-max-deviation-range 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --progressive --max-deviation 1
+check progressive-max-deviation-format 2 "$qmc" encode "$work/torus.obj" "$work/x.qmc" --progressive \
+  --max-deviation 1e-3 --format 1.13
 # Rate control of --progressive (spec 12.10): the smallest file within an error,
 # the most accurate within a size, what was tried printed; nothing written on a miss.
 check progressive-default-levels 0 "$qmc" encode "$work/torus.obj" "$work/rate.qmc" --progressive
@@ -343,7 +354,7 @@ check decode-groups-off-refused 3 "$qmc" decode "$work/groups.qmc" "$work/groups
 { echo "v 0 0 0 1 0 0"; echo "v 1 0 0 0 1 0"; echo "v 0 1 0 0 0 1 1"; echo "f 1 2 3"; echo "l 1 2"; } >"$work/colours.obj"
 check encode-colours-refused 3 "$qmc" encode "$work/colours.obj" "$work/colours.qmc"
 contains encode-colours-refused-names-flag "$work/err" "pass --drop-unsupported"
-contains encode-colours-refused-names-format "$work/err" "holds what format 1.13 cannot carry yet"
+contains encode-colours-refused-names-format "$work/err" "holds what format 1.14 cannot carry yet"
 contains encode-colours-refused-colours "$work/err" "  ignored per-vertex colours on v lines of 7 numbers: 1"
 contains encode-colours-refused-partial "$work/err" "  ignored per-vertex colours on v lines: only 2 of 3 vertices have one"
 check encode-colours-refused-no-output 0 test ! -e "$work/colours.qmc"

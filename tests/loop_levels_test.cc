@@ -309,6 +309,111 @@ TEST(LoopLevels, DisplacementCode2GivesCode0sLevelsInFewerBytes) {
   }
 }
 
+// Section 12.7.2: a file with code 4 at level `corrected` and its twin
+// without the corrections (the same displacements, code 2).
+struct CorrectedPair {
+  DecodedFile plain, corrected;
+  EncodeStats stats;
+};
+CorrectedPair corrected_pair(const Mesh& base, int levels, const LevelCorrector& corrector) {
+  CorrectedPair pair;
+  std::vector<uint8_t> files[2];
+  EXPECT_TRUE(tools::make_loop_file(base, levels, sphere_targets, 12, &files[0], nullptr, PositionMethod::kDeltas, 2)
+                  .ok());
+  const Status s = tools::make_loop_file(base, levels, sphere_targets, 12, &files[1], &pair.stats,
+                                         PositionMethod::kDeltas, 2, false, nullptr, &corrector);
+  EXPECT_TRUE(s.ok()) << s.to_string();
+  EXPECT_TRUE(decode(files[0].data(), files[0].size(), &pair.plain).ok());
+  EXPECT_TRUE(decode(files[1].data(), files[1].size(), &pair.corrected).ok());
+  return pair;
+}
+
+// Each listed vertex moves by its offsets times the correction step, one
+// rounding per operation; every other vertex, and every level below, is
+// where the file without corrections puts it.
+TEST(LoopLevels, Code4MovesExactlyTheListedVerticesOfItsLevel) {
+  const double step = 0x1p-14;
+  const CorrectedPair pair = corrected_pair(tools::loop_octahedron(), 3, tools::sphere_corrections(3, step, {3}));
+  EXPECT_EQ(pair.corrected.version_minor, 14);
+  EXPECT_EQ(pair.plain.version_minor, 5);
+  for (size_t j = 1; j < 3; ++j) EXPECT_EQ(pair.corrected.levels[j].positions, pair.plain.levels[j].positions);
+  const LoopLevel& plain = pair.plain.levels[3];
+  const LoopLevel& corrected = pair.corrected.levels[3];
+  ASSERT_EQ(pair.stats.loop.levels[3].code, 4);
+  EXPECT_GT(corrected.corrected_vertices, 20u);
+  EXPECT_EQ(corrected.corrected_vertices, pair.stats.loop.levels[3].corrected_vertices);
+  size_t moved = 0;
+  for (uint32_t v = 0; v < plain.vertex_count(); ++v) {
+    for (int a = 0; a < 3; ++a) {
+      const double before = plain.positions[3 * v + a], after = corrected.positions[3 * v + a];
+      if (v % 3 != 0) {
+        EXPECT_EQ(after, before) << "vertex " << v;
+        continue;
+      }
+      const double offset = std::nearbyint((after - before) / step);
+      EXPECT_EQ(after, before + offset * step) << "vertex " << v;
+      moved += after != before;
+    }
+  }
+  EXPECT_GT(moved, 0u);
+  // Radially onto the sphere, to within the step.
+  for (uint32_t v = 0; v < corrected.vertex_count(); v += 3) {
+    const double* p = &corrected.positions[3 * size_t(v)];
+    EXPECT_NEAR(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), 1.0, step) << "vertex " << v;
+  }
+}
+
+// Corrections below the finest level are level j's positions: level j + 1
+// subdivides the corrected level.
+TEST(LoopLevels, Code4CorrectionsBelowTheFinestAreSubdividedFurther) {
+  const CorrectedPair pair = corrected_pair(tools::loop_octahedron(), 2, tools::sphere_corrections(1, 0x1p-10, {1}));
+  ASSERT_EQ(pair.stats.loop.levels[1].code, 4);
+  EXPECT_NE(pair.corrected.levels[1].positions, pair.plain.levels[1].positions);
+  LoopEdges edges;
+  ASSERT_TRUE(number_loop_edges(pair.corrected.levels[1], &edges).ok());
+  LoopMesh subdivided;
+  loop_subdivide(pair.corrected.levels[1], edges, &subdivided);
+  // Level 2 has no corrections: its vertex points are level 1's corrected
+  // vertices under the masks of 12.5 step 1.
+  ASSERT_EQ(pair.corrected.levels[2].corrected_vertices, 0u);
+  for (uint32_t v = 0; v < pair.corrected.levels[1].vertex_count(); ++v)
+    for (int a = 0; a < 3; ++a)
+      EXPECT_EQ(pair.corrected.levels[2].positions[3 * v + a], subdivided.positions[3 * v + a]) << "vertex " << v;
+}
+
+// Section 12.7.2's example: a level of 10 vertices (a tetrahedron's 4 and
+// its 6 edge points), corrections (3; 2, 0, -1) and (7; 0, 0, 5).
+TEST(LoopLevels, Section12_7_2sExampleDecodesToItsMoves) {
+  LoopMesh base;
+  const Mesh tetrahedron = tools::make_tetrahedron();
+  base.positions.assign(tetrahedron.positions.begin(), tetrahedron.positions.end());
+  base.triangles = tetrahedron.corners;
+  LoopEdges edges;
+  ASSERT_TRUE(build_loop_edges(base, &edges).ok());
+  ASSERT_EQ(base.vertex_count() + edges.edge_count(), 10u);
+  LevelCode code;
+  code.step = 0.5;
+  code.m.assign(edges.edge_count(), 0);
+  code.correction_step = 0.25;
+  code.corrections = {{3, {2, 0, -1}}, {7, {0, 0, 5}}};
+  const std::vector<uint8_t> payload = corrected_level_payload(1, edges, base.vertex_count(), code);
+  LevelCode decoded;
+  ASSERT_TRUE(decode_level_code(payload.data(), payload.size(), 1, edges, base.vertex_count(), &decoded).ok());
+  ASSERT_EQ(decoded.corrections.size(), 2u);
+  EXPECT_EQ(decoded.corrections[1].vertex, 7u);
+  EXPECT_EQ(decoded.corrections[0].offset[2], -1);
+  EXPECT_EQ(decoded.corrections[1].offset[2], 5);
+  LoopMesh plain, fine;
+  loop_subdivide(base, edges, &plain);
+  ASSERT_TRUE(decode_level(payload.data(), payload.size(), 1, base, edges, &fine).ok());
+  for (uint32_t v = 0; v < 10; ++v) {
+    const double expected[3] = {v == 3 ? 0.5 : 0.0, 0.0, v == 3 ? -0.25 : v == 7 ? 1.25 : 0.0};
+    for (int a = 0; a < 3; ++a)
+      EXPECT_EQ(fine.positions[3 * v + a], plain.positions[3 * v + a] + expected[a]) << "vertex " << v;
+  }
+  EXPECT_EQ(fine.corrected_vertices, 2u);
+}
+
 TEST(LoopLevels, StreamingShowsEachLevelWhenItsChunkLands) {
   const std::vector<uint8_t> file = progressive_file(tools::make_octahedron(), 3, sphere_targets);
   DecodedFile whole;

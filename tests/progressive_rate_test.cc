@@ -49,11 +49,16 @@ Mesh six_limbs() {
   return mesh;
 }
 
-double relative_l2(const Mesh& input, const Mesh& level) {
+tools::MeshDistance distance(const Mesh& input, const Mesh& level, size_t samples) {
   tools::MeshDistanceOptions options;
-  options.samples = 20000;
+  options.samples = samples;
   tools::MeshDistance d;
   EXPECT_TRUE(tools::measure_mesh_distance(input, level, options, &d).ok());
+  return d;
+}
+
+double relative_l2(const Mesh& input, const Mesh& level) {
+  const tools::MeshDistance d = distance(input, level, 20000);
   return d.relative(d.l2);
 }
 
@@ -110,6 +115,69 @@ TEST(ProgressiveEncoder, EachLevelOfACubeFromAFiveVertexBaseIsCloserThanTheOneBe
   EXPECT_EQ(stats.loop.target_base_faces, 6u);
   EXPECT_EQ(stats.loop.levels[0].vertices, 5u);
   expect_levels_approach(cube, 4, "cube");
+}
+
+double relative_hausdorff(const Mesh& input, const Mesh& level) {
+  const tools::MeshDistance d = distance(input, level, 50000);
+  return d.relative(d.hausdorff);
+}
+
+// Section 12.7.2: the six limbs' finest level at K = 3 strays at the limbs'
+// tips; with a max deviation the encoder moves it back there, codes the
+// moves as corrections (LEVL code 4, format 1.14), and the Hausdorff
+// distance falls while L2 does not rise.
+TEST(ProgressiveEncoder, MaxDeviationCorrectsWhereTheFinestLevelStrays) {
+  const Mesh limbs = six_limbs();
+  std::vector<uint8_t> plain, corrected;
+  EncodeStats plain_stats, stats;
+  ASSERT_TRUE(encode(limbs, progressive(3), &plain, &plain_stats).ok());
+  EncodeOptions options = progressive(3);
+  options.max_deviation = 2e-3;
+  ASSERT_TRUE(encode(limbs, options, &corrected, &stats).ok());
+  const LoopLevelStats& finest = stats.loop.levels.back();
+  ASSERT_EQ(finest.code, 4);
+  EXPECT_GT(finest.corrected_vertices, 0u);
+  EXPECT_GT(stats.loop.deviation_before, options.max_deviation);
+  EXPECT_LT(stats.loop.deviation_after, 0.6 * stats.loop.deviation_before);
+  DecodedFile a, b;
+  ASSERT_TRUE(decode(plain.data(), plain.size(), &a).ok());
+  ASSERT_TRUE(decode(corrected.data(), corrected.size(), &b).ok());
+  EXPECT_EQ(b.version_minor, 14);
+  EXPECT_EQ(b.levels.back().corrected_vertices, finest.corrected_vertices);
+  for (size_t j = 0; j + 1 < a.levels.size(); ++j) EXPECT_EQ(a.levels[j].positions, b.levels[j].positions) << j;
+  const double h_plain = relative_hausdorff(limbs, level_mesh(a.levels.back()));
+  const double h_corrected = relative_hausdorff(limbs, level_mesh(b.levels.back()));
+  std::printf("six limbs, K = 3: Hausdorff %.3e -> %.3e of the diagonal, %zu -> %zu bytes, %u vertices corrected\n",
+              h_plain, h_corrected, plain.size(), corrected.size(), finest.corrected_vertices);
+  EXPECT_LT(h_corrected, 0.6 * h_plain);
+  EXPECT_LE(relative_l2(limbs, level_mesh(b.levels.back())), relative_l2(limbs, level_mesh(a.levels.back())));
+}
+
+// Where the finest level is within the deviation asked for, nothing is
+// corrected and the file is the one without the option.
+TEST(ProgressiveEncoder, MaxDeviationAlreadyMetAddsNothing) {
+  const Mesh torus = rippled_torus();
+  std::vector<uint8_t> plain, loose;
+  EncodeStats stats;
+  ASSERT_TRUE(encode(torus, progressive(2), &plain).ok());
+  EncodeOptions options = progressive(2);
+  options.max_deviation = 0.5;
+  ASSERT_TRUE(encode(torus, options, &loose, &stats).ok());
+  EXPECT_EQ(loose, plain);
+  EXPECT_LT(stats.loop.deviation_before, 0.5);
+  EXPECT_NE(stats.loop.levels.back().code, 4);
+}
+
+TEST(ProgressiveEncoder, MaxDeviationIsAProgressiveOptionOfAFractionOfTheDiagonal) {
+  std::vector<uint8_t> file;
+  EncodeOptions options;
+  options.max_deviation = 1e-3;
+  EXPECT_EQ(encode(rippled_torus(), options, &file).code(), ErrorCode::kInvalidArgument);
+  options = progressive(2);
+  for (double bad : {-1e-3, 1.0, double(NAN)}) {
+    options.max_deviation = bad;
+    EXPECT_EQ(encode(rippled_torus(), options, &file).code(), ErrorCode::kInvalidArgument) << bad;
+  }
 }
 
 TEST(ProgressiveEncoder, PrepareThenCodeGivesTheBytesOfEncode) {

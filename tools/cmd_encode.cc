@@ -77,6 +77,13 @@ const char kHelp[] =
     "                      not fix), decodes and measures the candidates that\n"
     "                      can still win; prints what it tried\n"
     "  --target-hausdorff E  as --target-error, for the Hausdorff distance\n"
+    "  --max-deviation E   of --progressive: where the finest level strays\n"
+    "                      farther than E (relative to the bounding-box diagonal)\n"
+    "                      from the input surface, or leaves input points that far\n"
+    "                      from itself, move its vertices back and code the moves\n"
+    "                      as corrections (LEVL code 4, format 1.14; spec 12.7.2):\n"
+    "                      more bytes, a smaller Hausdorff distance; reports how\n"
+    "                      near the fit came\n"
     "  --max-bytes N       of --progressive: the file of least L2 error within\n"
     "                      N bytes, searched as for --target-error\n"
     "  --gim N             write a geometry image (spec 13, seeds 000 and 002)\n"
@@ -97,6 +104,7 @@ const char kHelp[] =
     "  --gim-store-blank   also code the samples of blank pixels (smooth planes\n"
     "                      for image tools, at some cost in bytes)\n"
     "  --format 1.N        write nothing that decoders older than 1.N cannot read:\n"
+    "                      1.13 refuses --max-deviation (LEVL code 4),\n"
     "                      1.12 takes no mirror image a step away (POSN\n"
     "                      method 9, not 10) and no attribute twins (aTTR\n"
     "                      coding 9), 1.11 predicts no vertex by its mirror\n"
@@ -112,7 +120,7 @@ const char kHelp[] =
     "                      (method 1 or 3, not 4) and attribute values with\n"
     "                      coding 0 (not 4), 1.6 as method 1 only, 1.5\n"
     "                      also leaves out polygon coding 7, 1.4 also predicted\n"
-    "                      positions (deltas on the per-axis grid); default 1.13\n"
+    "                      positions (deltas on the per-axis grid); default 1.14\n"
     "  --uv-bits N         texture coordinates (spec 15) on a grid of 2^N - 1 steps\n"
     "                      over their range (default 12: 1/4 texel of a 1024\n"
     "                      texture)\n"
@@ -159,7 +167,8 @@ const CommandSpec kSpec{"encode",
                         {{"--bits", "-q"}, {"--text"}, {"--connectivity"}, {"--levels"}, {"--gim"}, {"--sampling"},
                          {"--roi"}, {"--grid"}, {"--step"}, {"--max-error"}, {"--positions"}, {"--format"},
                          {"--uv-bits"}, {"--normal-bits"}, {"--color-bits"}, {"--drop"},
-                         {"--finest-step-scale"}, {"--target-error"}, {"--target-hausdorff"}, {"--max-bytes"}},
+                         {"--finest-step-scale"}, {"--target-error"}, {"--target-hausdorff"}, {"--max-bytes"},
+                         {"--max-deviation"}},
                         2,
                         2};
 
@@ -249,6 +258,8 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
 // error naming the option that needs a newer version.
 int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   EncodeOptions& o = args->options;
+  if (args->newest_minor >= 14) return -1;
+  if (o.max_deviation > 0) return usage_error("encode", "--max-deviation (LEVL code 4, spec 12.7.2) needs --format 1.14");
   if (args->newest_minor >= 13) return -1;
   o.near_mirror = false;      // POSN method 10 (14.11) came with 1.13,
   o.attribute_twins = false;  // and aTTR coding 9 (15.14) with it
@@ -285,7 +296,8 @@ int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   return -1;
 }
 
-// --finest-step-scale, --target-error, --max-bytes (spec 12.10); -1 when valid.
+// --finest-step-scale, --target-error, --max-bytes (spec 12.10), --max-deviation
+// (12.7.2); -1 when valid.
 int parse_rate_option(const std::string& name, const std::string& value, EncodeArgs* args) {
   if (!args->progressive) return usage_error("encode", name + " needs --progressive");
   char* end = nullptr;
@@ -296,6 +308,11 @@ int parse_rate_option(const std::string& name, const std::string& value, EncodeA
     if (!number || v < 1 || v > 64) return usage_error("encode", "--finest-step-scale takes a number from 1 to 64, got '" + value + "'");
     args->options.finest_step_scale = v;
     args->step_scale_given = true;
+  } else if (name == "--max-deviation") {
+    if (!number || !(v > 0) || v >= 1)
+      return usage_error("encode", "--max-deviation takes a relative distance above 0 and below 1 (e.g. 1e-3), got '" +
+                                       value + "'");
+    args->options.max_deviation = v;
   } else if (name == "--target-error" || name == "--target-hausdorff") {
     if (!number || !(v > 0) || v >= 1)
       return usage_error("encode", name + " takes a relative error above 0 and below 1 (e.g. 1e-4), got '" + value + "'");
@@ -330,7 +347,8 @@ int parse(int argc, char** argv, EncodeArgs* args) {
       long minor = 0;
       if (value.compare(0, 2, "1.") != 0 || !parse_int(value.substr(2), kOldestTargetMinor, kNewestMinor, &minor) ||
           value.substr(2) != std::to_string(minor))
-        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 1.10, 1.11, 1.12 or 1.13, got '" + value + "'");
+        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 1.10, 1.11, 1.12, 1.13 or 1.14, got '" +
+                                         value + "'");
       args->newest_minor = int(minor);
       continue;
     }
@@ -344,7 +362,7 @@ int parse(int argc, char** argv, EncodeArgs* args) {
       continue;
     }
     if (name == "--finest-step-scale" || name == "--target-error" || name == "--target-hausdorff" ||
-        name == "--max-bytes") {
+        name == "--max-bytes" || name == "--max-deviation") {
       if (int rc = parse_rate_option(name, value, args); rc >= 0) return rc;
       continue;
     }
@@ -585,6 +603,21 @@ void print_progressive_report(const EncodeArgs& args, const Mesh& input, const E
     else
       std::printf("%s%s\n", l.clamped ? (" (" + std::to_string(l.clamped) + " clamped to 127)").c_str() : "",
                   l.targets ? (std::string(" (closed loop: ") + target_rule_name(l.targets) + ")").c_str() : "");
+  }
+  if (args.options.max_deviation > 0) {
+    const LoopLevelStats& finest = ls.levels.back();
+    if (finest.code == 4)
+      std::printf("deviation   finest level, largest distance either way over the fit's samples: %.3g of the diagonal "
+                  "before its corrections, %.3g after (asked: %.3g); %u vertices corrected, %.2f s\n",
+                  ls.deviation_before, ls.deviation_after, args.options.max_deviation, finest.corrected_vertices,
+                  ls.seconds_deviation);
+    else if (ls.deviation_before > args.options.max_deviation)
+      std::printf("deviation   finest level %.3g of the diagonal from the input, over the asked %.3g: the corrections "
+                  "were left out, as they would not leave it nearer the input (L2) than the level below\n",
+                  ls.deviation_before, args.options.max_deviation);
+    else
+      std::printf("deviation   finest level within %.3g of the input (asked: %.3g): no corrections needed\n",
+                  ls.deviation_before, args.options.max_deviation);
   }
   if (!ls.levels.empty() && ls.levels.back().targets == 0)
     std::printf("            finest level along its normals: %u hit the input surface, %u missed it within the reach\n",

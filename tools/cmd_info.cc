@@ -151,7 +151,7 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
   if (f.loop_level_count) {
     std::printf("progressive  %u Loop levels (spec 12), %zu decoded\n", f.loop_level_count,
                 f.levels.empty() ? 0 : f.levels.size() - 1);
-    std::printf("levels       level  vertices     faces      bytes  cumulative  zero displacements   step\n");
+    std::printf("levels       level  vertices     faces      bytes  cumulative  zero displacements   step   corrected\n");
     uint64_t sum = 0;
     for (size_t j = 0; j < f.levels.size(); ++j) {
       const LoopLevel& l = f.levels[j];
@@ -160,9 +160,10 @@ void print_text(const std::string& path, const DecodedFile& f, uint64_t size, co
         std::printf("             base  %8u  %8u  %9llu  %10llu  (CONN + POSN)\n", l.vertex_count(), l.face_count(),
                     static_cast<unsigned long long>(l.chunk_bytes), static_cast<unsigned long long>(sum));
       else
-        std::printf("             %4zu  %8u  %8u  %9llu  %10llu  %8u of %8u  %.3g\n", j, l.vertex_count(),
+        std::printf("             %4zu  %8u  %8u  %9llu  %10llu  %8u of %8u  %-5.3g  %9u\n", j, l.vertex_count(),
                     l.face_count(), static_cast<unsigned long long>(l.chunk_bytes),
-                    static_cast<unsigned long long>(sum), l.zero_displacements, l.edge_points, l.step);
+                    static_cast<unsigned long long>(sum), l.zero_displacements, l.edge_points, l.step,
+                    l.corrected_vertices);
     }
   }
   std::printf("chunks       type  offset      bytes  bits/vertex\n");
@@ -192,9 +193,9 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
   for (size_t j = 0; j < f.levels.size(); ++j) {
     const LoopLevel& l = f.levels[j];
     std::printf("%s{\"level\":%zu,\"vertices\":%u,\"faces\":%u,\"bytes\":%llu,\"edge_points\":%u,"
-                "\"zero_displacements\":%u,\"step\":%.17g}",
+                "\"zero_displacements\":%u,\"step\":%.17g,\"corrected_vertices\":%u}",
                 j ? "," : "", j, l.vertex_count(), l.face_count(), static_cast<unsigned long long>(l.chunk_bytes),
-                l.edge_points, l.zero_displacements, l.step);
+                l.edge_points, l.zero_displacements, l.step, l.corrected_vertices);
   }
   std::printf("],");
   if (f.gim.present)

@@ -37,6 +37,8 @@
 #include "random_polygon_mesh.h"
 #include "decoder/connectivity_decoder.h"
 #include "decoder/position_decoder.h"
+#include "decoder/loop_level_decoder.h"
+#include "encoder/loop_level_encoder.h"
 #include "decoder/spirale_reversi_decoder.h"
 #include "encoder/gim_writer.h"
 #include "encoder/polygon_connectivity_encoder.h"
@@ -3433,6 +3435,168 @@ Mesh lumpy_mirrored_sphere(int levels) {
   return sphere;
 }
 
+// Section 12.7.2 (format 1.14): LEVL code 4, displacements and vertex
+// corrections, valid and invalid.
+std::vector<uint8_t> corrected_loop_file(const Mesh& base, int levels, const qmc::LevelCorrector& corrector,
+                                         int displacement_code = 2) {
+  std::vector<uint8_t> out;
+  if (qmc::Status s = qmc::tools::make_loop_file(base, levels, qmc::tools::unit_sphere_targets(), 14, &out, nullptr,
+                                                qmc::PositionMethod::kDeltas, displacement_code, false, nullptr,
+                                                &corrector);
+      !s.ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: %s\n", s.to_string().c_str());
+    std::exit(3);
+  }
+  return out;
+}
+
+// The LevelCode of level j of a file, as the decoder reads it.
+qmc::LevelCode level_code_of(const std::vector<uint8_t>& file, int j) {
+  qmc::DecodedFile decoded;
+  qmc::LoopEdges edges;
+  qmc::LevelCode code;
+  const Chunks chunks = split_chunks(file);
+  const std::vector<uint8_t>& payload = chunks[find_chunk(chunks, qmc::kChunkLevel, j - 1)].payload;
+  if (!qmc::decode(file.data(), file.size(), &decoded).ok() ||
+      !qmc::number_loop_edges(decoded.levels[size_t(j - 1)], &edges).ok() ||
+      !qmc::decode_level_code(payload.data(), payload.size(), uint8_t(j), edges,
+                              decoded.levels[size_t(j - 1)].vertex_count(), &code)
+           .ok()) {
+    std::fprintf(stderr, "qmc-make-vectors: level %d does not decode\n", j);
+    std::exit(3);
+  }
+  return code;
+}
+
+void write_levl4_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  const Mesh octahedron = qmc::tools::loop_octahedron();
+  // Every 5th vertex of the finest level radially onto the sphere, in 2^-16.
+  const std::vector<uint8_t> finest = corrected_loop_file(octahedron, 3, qmc::tools::sphere_corrections(5, 0x1p-16, {3}));
+  w->valid("valid_levl4_octahedron_finest_corrected", finest, nullptr);
+  // Corrections at levels 1 and 2, which levels 2 and 3 subdivide; level 3 code 0.
+  w->valid("valid_levl4_corrected_then_subdivided",
+           corrected_loop_file(octahedron, 3, qmc::tools::sphere_corrections(2, 0x1p-12, {1, 2}), 0), nullptr);
+  // Every vertex (every gap 0), those that do not move with zero offsets, on a torus base.
+  w->valid("valid_levl4_every_vertex",
+           corrected_loop_file(qmc::tools::triangulated(qmc::tools::make_torus(6, 4)), 2,
+                               qmc::tools::sphere_corrections(1, 0x1p-10, {2}, true)),
+           nullptr);
+  // Offsets of every class: 2^-20 steps, clamped to +-32767, and one -32768 (class 16).
+  const qmc::LevelCorrector extreme = [](int j, const qmc::LoopMesh& level, qmc::LevelCode* code) {
+    const qmc::Status s = qmc::tools::sphere_corrections(3, 0x1p-20, {2})(j, level, code);
+    if (!code->corrections.empty()) code->corrections.front().offset[1] = -32768;
+    return s;
+  };
+  w->valid("valid_levl4_extreme_offsets", corrected_loop_file(octahedron, 2, extreme), nullptr);
+  // Gaps of every class up to 9, both first bits after the leading one, and
+  // the direct bits beyond the second (the octahedron's level 4: 1,026 vertices).
+  const qmc::LevelCorrector gaps = [](int j, const qmc::LoopMesh& level, qmc::LevelCode* code) {
+    code->correction_step = 0x1p-12;
+    code->corrections.clear();
+    if (j != 4) return qmc::Status::Ok();
+    uint32_t v = 0;
+    for (uint32_t gap : {0u, 1u, 2u, 3u, 5u, 6u, 9u, 13u, 17u, 25u, 36u, 51u, 70u, 100u, 140u, 200u, 300u, 0u, 4u, 7u}) {
+      v += gap;
+      if (v >= level.vertex_count()) break;
+      qmc::VertexCorrection c;
+      c.vertex = v;
+      c.offset[0] = int32_t(gap % 7) - 3, c.offset[1] = int32_t(gap % 5), c.offset[2] = -int32_t(gap % 11);
+      code->corrections.push_back(c);
+      ++v;
+    }
+    return qmc::Status::Ok();
+  };
+  w->valid("valid_levl4_gaps_of_every_class", corrected_loop_file(octahedron, 4, gaps), nullptr);
+
+  // Code 4 with no correction: code 2's stream, C = 0.
+  const Chunks plain = split_chunks(loop_file(octahedron, 2, qmc::tools::unit_sphere_targets(), 14,
+                                              qmc::PositionMethod::kDeltas, 2));
+  const size_t second = find_chunk(plain, qmc::kChunkLevel, 1);
+  Chunks c = plain;
+  std::vector<uint8_t> p = plain[second].payload;  // level, code, varint 48 (1 byte), step: 11 bytes
+  p[1] = 4;
+  std::vector<uint8_t> fields;
+  qmc::put_f64le(&fields, 0x1p-10);
+  qmc::put_varint(&fields, 0);
+  p.insert(p.begin() + 11, fields.begin(), fields.end());
+  c[second].payload = p;
+  c[find_chunk(c, qmc::kChunkHeader)].payload[1] = 14;
+  w->valid("valid_levl4_no_corrections", join_chunks(c), nullptr);
+
+  // Invalid: the finest file's level 3 (level, code, varint 192, step,
+  // correction_step, varint C, stream).
+  const Chunks base = split_chunks(finest);
+  const size_t last = find_chunk(base, qmc::kChunkLevel, 2);
+  const std::vector<uint8_t> payload = base[last].payload;
+  const size_t correction_step = 1 + 1 + 2 + 8, count = correction_step + 8;
+  auto with_level = [&](std::vector<uint8_t> q) {
+    Chunks d = base;
+    d[last].payload = std::move(q);
+    return join_chunks(d);
+  };
+  auto with_step = [&](double step) {
+    std::vector<uint8_t> q = payload, b;
+    qmc::put_f64le(&b, step);
+    std::copy(b.begin(), b.end(), q.begin() + std::ptrdiff_t(correction_step));
+    return with_level(q);
+  };
+  w->invalid("invalid_levl4_correction_step_zero", with_step(0.0), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_levl4_correction_step_nan", with_step(std::numeric_limits<double>::quiet_NaN()),
+             ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_levl4_correction_step_missing",
+             with_level({payload.begin(), payload.begin() + std::ptrdiff_t(correction_step + 4)}),
+             ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_levl4_correction_count_missing",
+             with_level({payload.begin(), payload.begin() + std::ptrdiff_t(count)}), ErrorCode::kBadChunkPayload);
+  // Level 3 has 66 + 192 = 258 vertices: C = 259 (varint 0x83 0x02) is one too many.
+  qmc::LevelCode code = level_code_of(finest, 3);
+  const uint32_t vertices = 258;
+  {
+    std::vector<uint8_t> q(payload.begin(), payload.begin() + std::ptrdiff_t(count));
+    qmc::put_varint(&q, vertices + 1);
+    w->invalid("invalid_levl4_count_above_vertices", with_level(q), ErrorCode::kBadChunkPayload);
+  }
+  // Level 3's payload recoded from changed corrections, over level 2's edges.
+  qmc::LoopEdges edges;
+  qmc::DecodedFile decoded;
+  if (!qmc::decode(finest.data(), finest.size(), &decoded).ok() ||
+      !qmc::number_loop_edges(decoded.levels[2], &edges).ok())
+    std::exit(3);
+  const uint32_t coarse = decoded.levels[2].vertex_count();
+  auto recoded = [&](const qmc::LevelCode& changed) {
+    return with_level(qmc::corrected_level_payload(3, edges, coarse, changed));
+  };
+  qmc::LevelCode beyond = code;
+  beyond.corrections.back().vertex = vertices;  // the gap points past the last vertex
+  w->invalid("invalid_levl4_vertex_beyond_level", recoded(beyond), ErrorCode::kBadSymbol);
+  qmc::LevelCode overflow = code;
+  overflow.corrections[1].offset[2] = 32768;  // class 16, positive
+  w->invalid("invalid_levl4_offset_overflow", recoded(overflow), ErrorCode::kBadSymbol);
+  qmc::LevelCode huge = code;
+  huge.correction_step = 0x1p1000;  // finite, but the corrected coordinates are not (12.8)
+  w->invalid("invalid_levl4_coordinate_not_finite", recoded(huge), ErrorCode::kBadChunkPayload);
+  p = payload;
+  p.resize(p.size() - 6);  // the stream ends inside the corrections
+  w->invalid("invalid_levl4_truncated", with_level(p), ErrorCode::kTruncated);
+  p = payload;
+  p.insert(p.end(), {0x55, 0x55, 0x55, 0x55, 0x55, 0x55});
+  w->invalid("invalid_levl4_bytes_after_stream", with_level(p), ErrorCode::kBadChunkPayload);
+  // 12.1: code 4 as code 2, the 12288 edges of the octahedron's level 5 in one stream byte, above 512 (1 + 8).
+  const Chunks deep = split_chunks(loop_file(octahedron, 6, qmc::tools::unit_sphere_targets(), 14,
+                                             qmc::PositionMethod::kDeltas, 2));
+  const size_t sixth = find_chunk(deep, qmc::kChunkLevel, 5);
+  Chunks e = deep;
+  std::vector<uint8_t>& q = e[sixth].payload;
+  q.resize(2 + 2 + 8);  // level, code, varint 12288, step
+  q[1] = 4;
+  qmc::put_f64le(&q, 0x1p-10);
+  qmc::put_varint(&q, 0);
+  q.push_back(0);  // one byte of stream
+  e[find_chunk(e, qmc::kChunkHeader)].payload[1] = 14;
+  w->invalid("invalid_levl4_edges_unjustified", join_chunks(e), ErrorCode::kLimitExceeded);
+}
+
 void write_posn10_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   qmc::EncodeOptions options;  // what `qmc encode` writes
@@ -4256,6 +4420,7 @@ int main(int argc, char** argv) {
   write_posn8_vectors(&w);
   write_posn9_vectors(&w);
   write_posn10_vectors(&w);
+  write_levl4_vectors(&w);
   w.finish();
   return 0;
 }

@@ -49,6 +49,7 @@ struct LoopLevel {
   uint32_t edge_points = 0;         // level >= 1: displacements coded (edges of the level below)
   uint32_t zero_displacements = 0;  // level >= 1: of which 1-bit zeros
   double step = 0;                  // level >= 1: the chunk's step
+  uint32_t corrected_vertices = 0;  // level >= 1: vertices moved by LEVL code 4's corrections (12.7.2)
 
   uint32_t vertex_count() const { return uint32_t(positions.size() / 3); }
   uint32_t face_count() const { return uint32_t(triangles.size() / 3); }

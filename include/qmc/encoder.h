@@ -196,6 +196,13 @@ struct EncodeOptions {
   // Larger values trade accuracy for bytes: 4 made camelhead's 2-level file
   // 25 % smaller for 9 % more L2 error (docs/results/seed003.md).
   double finest_step_scale = 1;
+  // Section 12.7.2: where the finest level strays farther than this from the
+  // input surface, or leaves input points farther than this from itself
+  // (sampled both ways), its vertices are moved back and the moves coded as
+  // LEVL code 4's corrections (format 1.14). Relative to the input's
+  // bounding-box diagonal; 0: no corrections. LoopEncodeStats says how far
+  // the fit got.
+  double max_deviation = 0;
   GeometryImageOptions gim;
   // Section 15: the attributes of mesh.attributes, each quantized on the
   // uniform grid of its bounding box with these bits (1..30) by kind, or
@@ -241,7 +248,8 @@ struct LoopLevelStats {
   uint32_t edge_points = 0, zeros = 0, clamped = 0;
   double step = 0;
   uint64_t bytes = 0;                // the LEVL chunk (level 0: CONN + POSN)
-  uint8_t code = 0;                  // level >= 1: the displacement code (12.7: 0; 12.7.1: 2)
+  uint8_t code = 0;                  // level >= 1: the displacement code (12.7: 0; 12.7.1: 2; 12.7.2: 4)
+  uint32_t corrected_vertices = 0;   // code 4: vertices the corrections move
   // level >= 1: whose targets the displacements aim at (spec 12.10's closed
   // loop): 0 the encoder's own; where those would leave the level no nearer
   // the input than the level below, the alternative taken: 1 points whose
@@ -261,7 +269,12 @@ struct LoopEncodeStats {
   // Finest level, the encoder's own targets (spec 12.10): lines along N that
   // hit the input within the reach, and those that missed it.
   uint32_t ray_hits = 0, ray_misses = 0;
-  double seconds_simplify = 0, seconds_fit = 0, seconds_remesh = 0, seconds_code = 0;
+  // With max_deviation: the finest level's largest distance to the input and
+  // the input's to it, over the fit's samples (the input's vertices, edge
+  // midpoints and centroids; the level's vertices, edge midpoints and
+  // centroids), relative to the diagonal, before and after the corrections.
+  double deviation_before = 0, deviation_after = 0;
+  double seconds_simplify = 0, seconds_fit = 0, seconds_remesh = 0, seconds_code = 0, seconds_deviation = 0;
 };
 
 // Section 13: what the geometry-image encoder did.

@@ -14,25 +14,24 @@ struct SignedResidual {
   bool negative = false;
 };
 
-// Codes one residual: its class c = bit length of the magnitude (0..k) as
-// unary bits "c > i" with probabilities cls[i], then for c >= 1 the sign,
-// then the c - 1 bits below the leading one, the first two adaptive per
-// class (mantissa[c]), the rest at 1/2 (spec 13.5.6; section 14.4 uses it
-// with its own probabilities). Coder is RangeEncoder (value is coded) or
-// RangeDecoder (value is ignored and the decoded residual returned).
+// The class c = bit length of a magnitude (0..k), as unary bits "c > i"
+// with probabilities cls[i] (spec 13.5.6).
 template <class Coder>
-SignedResidual code_class_residual(Coder* coder, uint16_t* cls, uint16_t* sign, uint16_t (*mantissa)[3], int k,
-                                   SignedResidual value) {
+int code_magnitude_class(Coder* coder, uint16_t* cls, int k, uint32_t magnitude) {
   int value_class = 0;
-  for (uint32_t v = value.magnitude; v != 0; v >>= 1) ++value_class;
+  for (uint32_t v = magnitude; v != 0; v >>= 1) ++value_class;
   int c = 0;
   while (c < k && coder->code(value_class > c, &cls[c])) ++c;
-  SignedResidual out;
-  if (c == 0) return out;
-  out.negative = coder->code(value.negative, sign) != 0;
+  return c;
+}
+
+// The c - 1 bits below the leading one of a class-c magnitude (c >= 1), the
+// first two adaptive per class (mantissa[c]), the rest at 1/2 (13.5.6).
+template <class Coder>
+uint32_t code_magnitude_bits(Coder* coder, uint16_t (*mantissa)[3], int c, uint32_t value) {
   uint32_t magnitude = 1;
   for (int j = c - 2; j >= 0; --j) {
-    const int bit = int((value.magnitude >> j) & 1);
+    const int bit = int((value >> j) & 1);
     const int position = c - 2 - j;
     int got;
     if (position == 0)
@@ -43,7 +42,21 @@ SignedResidual code_class_residual(Coder* coder, uint16_t* cls, uint16_t* sign, 
       got = coder->code_direct(bit);
     magnitude = (magnitude << 1) | uint32_t(got);
   }
-  out.magnitude = magnitude;
+  return magnitude;
+}
+
+// Codes one residual: its class, then for c >= 1 the sign, then the bits
+// below the leading one (spec 13.5.6; section 14.4 uses it with its own
+// probabilities). Coder is RangeEncoder (value is coded) or RangeDecoder
+// (value is ignored and the decoded residual returned).
+template <class Coder>
+SignedResidual code_class_residual(Coder* coder, uint16_t* cls, uint16_t* sign, uint16_t (*mantissa)[3], int k,
+                                   SignedResidual value) {
+  const int c = code_magnitude_class(coder, cls, k, value.magnitude);
+  SignedResidual out;
+  if (c == 0) return out;
+  out.negative = coder->code(value.negative, sign) != 0;
+  out.magnitude = code_magnitude_bits(coder, mantissa, c, value.magnitude);
   return out;
 }
 

@@ -1,6 +1,7 @@
 // Progressive levels, spec/qmc-format.md section 12: the LOOP header, the
-// base mesh checks, and each LEVL chunk's 1-bit/9-bit displacement code
-// (seed 003 §4.2) applied along the limit normals of section 12.6.
+// base mesh checks, and each LEVL chunk's displacements (seed 003 §4.2's
+// 1-bit/9-bit code, or range coded) applied along the limit normals of
+// section 12.6, then code 4's vertex corrections.
 #include "decoder/loop_level_decoder.h"
 
 #include <cmath>
@@ -86,8 +87,44 @@ Status decode_bit_code(ByteReader* in, uint32_t edge_count, LevelCode* code) {
   return Status::Ok();
 }
 
-// 12.7.1: code 2, range coded in contexts of the edges' ends.
-Status decode_range_code(ByteReader* in, const LoopEdges& edges, uint32_t coarse_vertices, LevelCode* code) {
+// 12.7.2: code 4's corrections after the displacements, C of them, for the
+// V + E vertices of the fine level.
+Status decode_corrections(RangeDecoder* rc, uint64_t count, uint64_t fine_vertices, LevelCode* code) {
+  std::vector<CorrectionModel> model(1);
+  const int32_t none[3] = {0, 0, 0};
+  uint64_t vertex = 0;
+  for (uint64_t i = 0; i < count; ++i) {
+    const uint32_t gap = code_correction_gap(rc, &model[0], 0);
+    if (rc->overrun())
+      return Status(ErrorCode::kTruncated, "LEVL: the range-coded stream ends at correction " + std::to_string(i));
+    vertex = i == 0 ? gap : vertex + 1 + gap;
+    if (vertex >= fine_vertices)
+      return Status(ErrorCode::kBadSymbol, "LEVL: correction " + std::to_string(i) + " names vertex " +
+                                               std::to_string(vertex) + " of a level of " +
+                                               std::to_string(fine_vertices) + " (section 12.7.2)");
+    VertexCorrection c;
+    c.vertex = uint32_t(vertex);
+    const int32_t* previous = code->corrections.empty() ? none : code->corrections.back().offset;
+    for (int a = 0; a < 3; ++a) {
+      const SignedResidual r =
+          code_correction_offset(rc, &model[0], correction_bucket(previous, c.offset, a), a, 0);
+      if (rc->overrun())
+        return Status(ErrorCode::kTruncated, "LEVL: the range-coded stream ends at correction " + std::to_string(i));
+      if (r.magnitude > 32768 || (r.magnitude == 32768 && !r.negative))
+        return Status(ErrorCode::kBadSymbol, "LEVL: correction " + std::to_string(i) + " has an offset of " +
+                                                 (r.negative ? "-" : "") + std::to_string(r.magnitude) +
+                                                 ", outside -32768 .. 32767 (sections 12.7.2, 13.5.6)");
+      c.offset[a] = r.negative ? -int32_t(r.magnitude) : int32_t(r.magnitude);
+    }
+    code->corrections.push_back(c);
+  }
+  return Status::Ok();
+}
+
+// 12.7.1: code 2, range coded in contexts of the edges' ends; 12.7.2: code
+// 4, the same followed by `corrections` vertex corrections.
+Status decode_range_code(ByteReader* in, const LoopEdges& edges, uint32_t coarse_vertices, uint64_t corrections,
+                         LevelCode* code) {
   const uint32_t edge_count = edges.edge_count();
   if (!range_stream_justifies(edge_count, in->remaining()))
     return Status(ErrorCode::kLimitExceeded, "LEVL: " + std::to_string(edge_count) + " edges for " +
@@ -108,6 +145,9 @@ Status decode_range_code(ByteReader* in, const LoopEdges& edges, uint32_t coarse
     last[a] = last[b] = int8_t(m);
     previous = m;
   }
+  if (corrections > 0)
+    if (Status s = decode_corrections(&rc, corrections, uint64_t(coarse_vertices) + edge_count, code); !s.ok())
+      return s;
   if (rc.unread() != 0)
     return bad_payload("LEVL", std::to_string(rc.unread()) + " bytes after the range-coded data (section 13.5.2)");
   return Status::Ok();
@@ -124,9 +164,9 @@ Status decode_level_code(const uint8_t* payload, size_t size, uint8_t expected_l
     return bad_payload("LEVL", "level field " + (size ? std::to_string(level) : std::string("missing")) +
                                    ", expected " + std::to_string(expected_level));
   if (!in.get_u8(&method)) return bad_payload("LEVL", "code field missing");
-  if (method != 0 && method != 2)
+  if (method != 0 && method != 2 && method != 4)
     return Status(ErrorCode::kUnsupportedFeature, "LEVL: displacement code " + std::to_string(method) +
-                                                      " is not defined (section 12.1 knows 0 and 2)");
+                                                      " is not defined (section 12.1 knows 0, 2 and 4)");
   uint64_t declared = 0;
   if (!in.get_varint(&declared)) return bad_payload("LEVL", "edge_count missing or malformed");
   if (declared != edge_count)
@@ -136,7 +176,20 @@ Status decode_level_code(const uint8_t* payload, size_t size, uint8_t expected_l
   if (!in.get_f64le(&code->step)) return bad_payload("LEVL", "step missing");
   if (!std::isfinite(code->step) || !(code->step > 0))
     return bad_payload("LEVL", "step is not a finite number greater than zero");
-  return method == 0 ? decode_bit_code(&in, edge_count, code) : decode_range_code(&in, edges, coarse_vertices, code);
+  if (method == 0) return decode_bit_code(&in, edge_count, code);
+  uint64_t corrections = 0;
+  if (method == 4) {
+    if (!in.get_f64le(&code->correction_step)) return bad_payload("LEVL", "correction_step missing");
+    if (!std::isfinite(code->correction_step) || !(code->correction_step > 0))
+      return bad_payload("LEVL", "correction_step is not a finite number greater than zero");
+    if (!in.get_varint(&corrections)) return bad_payload("LEVL", "correction_count missing or malformed");
+    const uint64_t fine_vertices = uint64_t(coarse_vertices) + edge_count;
+    if (corrections > fine_vertices)
+      return bad_payload("LEVL", "correction_count " + std::to_string(corrections) + " but level " +
+                                     std::to_string(expected_level) + " has " + std::to_string(fine_vertices) +
+                                     " vertices (section 12.1)");
+  }
+  return decode_range_code(&in, edges, coarse_vertices, corrections, code);
 }
 
 void displace_edge_points(const std::vector<double>& normals, const LevelCode& code, uint32_t coarse_vertices,
@@ -146,6 +199,14 @@ void displace_edge_points(const std::vector<double>& normals, const LevelCode& c
     const double w = mul(double(code.m[e]), code.step);
     double* x = &fine->positions[3 * (size_t(coarse_vertices) + e)];
     for (int k = 0; k < 3; ++k) x[k] = x[k] + mul(w, normals[3 * e + k]);
+  }
+}
+
+void correct_vertices(const LevelCode& code, LoopMesh* fine) {
+  for (const VertexCorrection& c : code.corrections) {
+    double* x = &fine->positions[3 * size_t(c.vertex)];
+    for (int k = 0; k < 3; ++k)
+      if (c.offset[k] != 0) x[k] = x[k] + mul(double(c.offset[k]), code.correction_step);  // 12.7.2: only if r != 0
   }
 }
 
@@ -169,11 +230,13 @@ Status decode_level(const uint8_t* payload, size_t size, uint8_t expected_level,
   std::vector<double> normals;
   edge_point_normals(*fine, coarse_edges, coarse.vertex_count(), &normals);
   displace_edge_points(normals, code, coarse.vertex_count(), fine);
+  correct_vertices(code, fine);
   if (Status s = check_level_range(*fine, expected_level); !s.ok()) return s;
   fine->step = code.step;
   fine->edge_points = coarse_edges.edge_count();
   fine->zero_displacements = 0;
   for (int8_t m : code.m) fine->zero_displacements += m == 0;
+  fine->corrected_vertices = uint32_t(code.corrections.size());
   return Status::Ok();
 }
 

@@ -75,6 +75,10 @@ Status validate_options(const EncodeOptions& options) {
     return invalid("quad coding must be -1 (smallest) or 0.." + std::to_string(kQuadCodingCount - 1));
   if (!(options.finest_step_scale >= 1 && options.finest_step_scale <= 64))
     return invalid("the finest level's step scale must be in 1..64 (12.10)");
+  if (!(options.max_deviation >= 0 && options.max_deviation < 1))
+    return invalid("the max deviation must be 0 (none) or a fraction of the diagonal below 1 (12.7.2)");
+  if (options.max_deviation > 0 && options.progressive_levels == 0)
+    return invalid("a max deviation corrects progressive levels (12.7.2): give progressive levels too");
   return Status::Ok();
 }
 

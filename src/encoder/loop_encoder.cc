@@ -15,6 +15,7 @@
 #include "decoder/loop_subdivision.h"
 #include "encoder/chunk_writer.h"
 #include "encoder/encoder_internal.h"
+#include "geometry/deviation_fit.h"
 #include "geometry/level_distance.h"
 #include "geometry/loop_fitting.h"
 #include "encoder/loop_level_encoder.h"
@@ -193,6 +194,45 @@ void pipeline_targets(const TargetContext& c, TargetRule rule, int j, const Loop
   std::copy(level.positions.begin() + 3 * std::ptrdiff_t(coarse_vertices), level.positions.end(), targets->begin());
 }
 
+// 12.7.2: rounds of the deviation fit, and the correction step as a share
+// of the deviation asked for: a quarter keeps each rounded offset within an
+// eighth of it per axis.
+constexpr int kDeviationRounds = 10;
+constexpr double kCorrectionStepsPerDeviation = 4;
+
+// The corrections that move `level` to fit_to_max_deviation's positions,
+// rounded to the correction step; *ls gets the two-sided deviation before
+// and after (relative to the diagonal).
+Status deviation_corrections(const TriangleBvh& surface, const std::vector<Vec3d>& samples, double max_deviation,
+                             const LoopMesh& level, LevelCode* code, LoopEncodeStats* ls) {
+  const double diagonal = surface.bbox_diagonal(), deviation = max_deviation * diagonal;
+  ls->deviation_before = two_sided_deviation(surface, samples, level) / diagonal;
+  ls->deviation_after = ls->deviation_before;
+  if (!(ls->deviation_before > max_deviation)) return Status::Ok();
+  std::vector<double> fitted;
+  DeviationFitStats fit;
+  if (Status s = fit_to_max_deviation(surface, samples, level, {deviation, kDeviationRounds}, &fitted, &fit); !s.ok())
+    return s;
+  code->correction_step = deviation / kCorrectionStepsPerDeviation;
+  code->corrections.clear();
+  for (uint32_t v = 0; v < level.vertex_count(); ++v) {
+    VertexCorrection c;
+    c.vertex = v;
+    bool moved = false;
+    for (int a = 0; a < 3; ++a) {
+      const double r = std::nearbyint((fitted[3 * size_t(v) + a] - level.positions[3 * size_t(v) + a]) /
+                                      code->correction_step);
+      c.offset[a] = int32_t(std::clamp(r, double(-kMaxCorrectionOffset), double(kMaxCorrectionOffset)));
+      moved = moved || c.offset[a] != 0;
+    }
+    if (moved) code->corrections.push_back(c);
+  }
+  LoopMesh corrected = level;
+  correct_vertices(*code, &corrected);
+  ls->deviation_after = two_sided_deviation(surface, samples, corrected) / diagonal;
+  return Status::Ok();
+}
+
 LevelTargets targets_by(const TargetContext& c, TargetRule rule) {
   return [c, rule](int j, const LoopMesh& fine, const std::vector<double>& normals, uint32_t coarse_vertices,
                    std::vector<double>* targets) { pipeline_targets(c, rule, j, fine, normals, coarse_vertices, targets); };
@@ -211,6 +251,7 @@ struct ProgressiveEncoder::Prepared {
   bool surface_fitted = false;
   std::unique_ptr<TriangleBvh> surface;
   std::unique_ptr<LevelDistance> distance;  // of a level to the input (12.10's closed loop)
+  std::vector<Vec3d> deviation_samples;     // of the input, for max_deviation (12.7.2)
   EncodeStats stats;  // the base connectivity's and the pipeline's
 };
 
@@ -273,6 +314,7 @@ Status ProgressiveEncoder::prepare(const Mesh& mesh, const EncodeOptions& option
   if (Status s = remesh(original, *p->surface, base, p->levels, &p->control, &remesh_stats); !s.ok()) return s;
   p->base_positions = p->surface_fitted ? base.positions : p->control[0].positions;
   p->distance = std::make_unique<LevelDistance>(*p->surface, original, kJudgedInputSamples);
+  p->deviation_samples = deviation_samples(original);
   ls.seconds_remesh = seconds_since(start);
   prepared_ = std::move(p);
   return Status::Ok();
@@ -298,8 +340,15 @@ Status ProgressiveEncoder::code(const EncodeOptions& options, std::vector<uint8_
   judge.distance = [&p](const LoopMesh& level) { return (*p.distance)(level); };
   for (TargetRule rule : {TargetRule::kStayOnMiss, TargetRule::kFarReach, TargetRule::kClosestPoint, TargetRule::kStay})
     judge.alternatives.push_back({uint8_t(rule), targets_by(context, rule)});
+  const LevelCorrector corrector = [&](int j, const LoopMesh& level, LevelCode* code) {
+    if (j < p.levels) return Status::Ok();  // the finest level only: the ones below are refined further
+    const Clock::time_point fit_start = Clock::now();
+    Status s = deviation_corrections(*p.surface, p.deviation_samples, options.max_deviation, level, code, &ls);
+    ls.seconds_deviation = seconds_since(fit_start);
+    return s;
+  };
   if (Status s = write_loop_file(p.conn, p.base_positions, p.levels, options, targets_by(context, TargetRule::kEncoder),
-                                 &judge, out, &st);
+                                 &judge, options.max_deviation > 0 ? &corrector : nullptr, out, &st);
       !s.ok())
     return s;
   ls.seconds_code = seconds_since(start);

@@ -137,7 +137,8 @@ double level_step_scale(const EncodeOptions& options, int level, int levels) {
 
 std::vector<uint8_t> encode_level(uint8_t level, const LoopEdges& coarse_edges, uint32_t coarse_vertices,
                                   const std::vector<double>& normals, const std::vector<double>& targets,
-                                  int code_choice, double step_scale, LoopMesh* fine, LevelCodeStats* stats) {
+                                  int code_choice, double step_scale, LoopMesh* fine, LevelCodeStats* stats,
+                                  LevelCode* kept) {
   const Projection p = project(coarse_vertices, *fine, normals, targets);
   LevelCode code;
   code.step = choose_step(p) * step_scale;
@@ -168,6 +169,40 @@ std::vector<uint8_t> encode_level(uint8_t level, const LoopEdges& coarse_edges, 
   put_varint(&payload, p.r.size());
   put_f64le(&payload, code.step);
   payload.insert(payload.end(), stream.begin(), stream.end());
+  if (kept) *kept = std::move(code);
+  return payload;
+}
+
+std::vector<uint8_t> corrected_level_payload(uint8_t level, const LoopEdges& coarse_edges, uint32_t coarse_vertices,
+                                             const LevelCode& code) {
+  std::vector<int8_t> last(coarse_vertices, 0);
+  std::vector<DisplacementModel> displacements(1);
+  RangeEncoder rc;
+  int previous = 0;
+  for (size_t e = 0; e < code.m.size(); ++e) {
+    const uint32_t a = coarse_edges.a[e], b = coarse_edges.b[e];
+    code_displacement(&rc, &displacements[0], DisplacementContext(last[a], last[b], previous), code.m[e]);
+    last[a] = last[b] = code.m[e];
+    previous = code.m[e];
+  }
+  std::vector<CorrectionModel> corrections(1);
+  const int32_t none[3] = {0, 0, 0};
+  for (size_t i = 0; i < code.corrections.size(); ++i) {
+    const VertexCorrection& c = code.corrections[i];
+    code_correction_gap(&rc, &corrections[0], i == 0 ? c.vertex : c.vertex - code.corrections[i - 1].vertex - 1);
+    const int32_t* before = i == 0 ? none : code.corrections[i - 1].offset;
+    for (int a = 0; a < 3; ++a)
+      code_correction_offset(&rc, &corrections[0], correction_bucket(before, c.offset, a), a, c.offset[a]);
+  }
+  const std::vector<uint8_t> stream = rc.finish();
+  std::vector<uint8_t> payload;
+  put_u8(&payload, level);
+  put_u8(&payload, 4);
+  put_varint(&payload, code.m.size());
+  put_f64le(&payload, code.step);
+  put_f64le(&payload, code.correction_step);
+  put_varint(&payload, code.corrections.size());
+  payload.insert(payload.end(), stream.begin(), stream.end());
   return payload;
 }
 
@@ -177,6 +212,7 @@ namespace {
 struct CodedLevel {
   LoopMesh fine;
   std::vector<uint8_t> payload;
+  LevelCode code;
   LevelCodeStats stats;
   double distance = 0;  // to the input, when judged
   uint8_t targets = 0;  // 0: `targets`, else the id of the judge's alternative
@@ -190,7 +226,8 @@ CodedLevel code_level(int j, int levels, const EncodeOptions& options, const Loo
   std::vector<double> level_targets;
   targets(j, c.fine, normals, current.vertex_count(), &level_targets);
   c.payload = encode_level(uint8_t(j), edges, current.vertex_count(), normals, level_targets,
-                           options.displacement_code, level_step_scale(options, j, levels), &c.fine, &c.stats);
+                           options.displacement_code, level_step_scale(options, j, levels), &c.fine, &c.stats,
+                           &c.code);
   return c;
 }
 
@@ -217,11 +254,33 @@ CodedLevel choose_level(int j, int levels, const EncodeOptions& options, const L
   return best;
 }
 
+// 12.7.2: level j with the corrector's corrections, code 4, unless there
+// are none or they leave it no nearer the input than the level below
+// (`previous`, with a judge).
+Status correct_level(uint8_t j, const LoopEdges& edges, uint32_t coarse_vertices, const LevelCorrector& corrector,
+                     const LevelJudge* judge, double previous, CodedLevel* level) {
+  LevelCode code = level->code;
+  if (Status s = corrector(j, level->fine, &code); !s.ok()) return s;
+  if (code.corrections.empty()) return Status::Ok();
+  LoopMesh corrected = level->fine;
+  correct_vertices(code, &corrected);
+  const double distance = judge ? judge->distance(corrected) : 0;
+  if (judge && !(distance < previous)) return Status::Ok();
+  std::vector<uint8_t> payload = corrected_level_payload(j, edges, coarse_vertices, code);
+  if (!range_stream_justifies(code.m.size(), payload.size())) return Status::Ok();
+  level->fine = std::move(corrected);
+  level->payload = std::move(payload);
+  level->distance = distance;
+  level->stats.code = 4;
+  level->code = std::move(code);
+  return Status::Ok();
+}
+
 }  // namespace
 
 Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& base_positions, int levels,
                        const EncodeOptions& options, const LevelTargets& targets, const LevelJudge* judge,
-                       std::vector<uint8_t>* out, EncodeStats* st) {
+                       const LevelCorrector* corrector, std::vector<uint8_t>* out, EncodeStats* st) {
   LoopEncodeStats& ls = st->loop;
   // The base keeps section 6.1's per-axis grid, which both POSN methods
   // carry (method 1 with grid 1 outputs the same positions); the method is
@@ -243,18 +302,23 @@ Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& 
   ls.levels.push_back({current.vertex_count(), current.face_count(), 0, 0, 0, 0,
                        24 + conn.payload.size() + positions_payload.size()});
   std::vector<std::vector<uint8_t>> level_payloads;
-  bool format_1_5 = st->positions.method >= 1;
+  bool format_1_5 = st->positions.method >= 1, format_1_14 = false;
   double previous = judge ? judge->distance(current) : 0;
   for (int j = 1; j <= levels; ++j) {
     CodedLevel level = choose_level(j, levels, options, current, edges, targets, judge, previous);
+    if (corrector)
+      if (Status s = correct_level(uint8_t(j), edges, current.vertex_count(), *corrector, judge, previous, &level);
+          !s.ok())
+        return s;
     if (Status s = check_level_range(level.fine, uint8_t(j)); !s.ok())
       return Status(ErrorCode::kInvalidArgument, "level " + std::to_string(j) + " leaves the binary32 range");
     const LevelCodeStats& code_stats = level.stats;
     format_1_5 = format_1_5 || code_stats.code == 2;
+    format_1_14 = format_1_14 || code_stats.code == 4;
     level_payloads.push_back(std::move(level.payload));
     ls.levels.push_back({level.fine.vertex_count(), level.fine.face_count(), code_stats.edge_points,
                          code_stats.zeros, code_stats.clamped, code_stats.step, 12 + level_payloads.back().size(),
-                         code_stats.code, level.targets});
+                         code_stats.code, uint32_t(level.code.corrections.size()), level.targets});
     if (j < levels)
       if (Status s = number_loop_edges(level.fine, &edges); !s.ok())
         return Status(ErrorCode::kInvalidArgument, "internal: level " + std::to_string(j) + ": " + s.message());
@@ -264,7 +328,8 @@ Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& 
   // The lowest minor version that defines everything in the file (4.1).
   out->clear();
   write_signature(out);
-  const uint8_t minor = std::max<uint8_t>(minor_version_for(conn, st->positions.method), format_1_5 ? 5 : 3);
+  const uint8_t minor = std::max<uint8_t>(minor_version_for(conn, st->positions.method),
+                                          format_1_14 ? 14 : format_1_5 ? 5 : 3);
   add_chunk(out, st, kChunkHeader, {kFormatMajor, minor});
   for (const std::string& text : options.texts)
     add_chunk(out, st, kChunkText, std::vector<uint8_t>(text.begin(), text.end()));

@@ -23,7 +23,7 @@ void predict_level(const LoopMesh& coarse, const LoopEdges& coarse_edges, LoopMe
 struct LevelCodeStats {
   uint32_t edge_points = 0, zeros = 0, clamped = 0;
   double step = 0;
-  uint8_t code = 0;  // the displacement code written (12.7 or 12.7.1)
+  uint8_t code = 0;  // the displacement code written (12.7, 12.7.1 or 12.7.2)
 };
 
 // 12.10: what the least-error step of `level` (1..levels) is multiplied by:
@@ -38,10 +38,22 @@ double level_step_scale(const EncodeOptions& options, int level, int levels);
 // m for edge-point targets (3 doubles per coarse edge), applies them to
 // `fine` exactly as the decoder will, and returns the LEVL payload:
 // displacement code 0 (12.7), 2 (12.7.1), or with code = -1 the smaller of
-// the two.
+// the two. `kept`, if not null, receives the step and the integers.
 std::vector<uint8_t> encode_level(uint8_t level, const LoopEdges& coarse_edges, uint32_t coarse_vertices,
                                   const std::vector<double>& normals, const std::vector<double>& targets,
-                                  int code, double step_scale, LoopMesh* fine, LevelCodeStats* stats);
+                                  int code, double step_scale, LoopMesh* fine, LevelCodeStats* stats,
+                                  LevelCode* kept = nullptr);
+
+// 12.7.2: the LEVL payload of displacement code 4, `code`'s displacements
+// range coded as 12.7.1 codes them, then its corrections (vertices
+// increasing, offsets within -32767 .. 32767).
+std::vector<uint8_t> corrected_level_payload(uint8_t level, const LoopEdges& coarse_edges, uint32_t coarse_vertices,
+                                             const LevelCode& code);
+
+// 12.7.2: vertex corrections for the decoder's reconstruction of level j
+// (1 .. K, displaced), their step in code->correction_step and the
+// corrections in code->corrections (none: the level is coded as it is).
+using LevelCorrector = std::function<Status(int j, const LoopMesh& level, LevelCode* code)>;
 
 // Where the edge points of `level` should go: given the decoder's
 // subdivided level (before displacement) and the edge-point normals (3 per
@@ -67,9 +79,11 @@ struct LevelJudge {
 // whose displacements aim at `targets`, each computed from the decoder's own
 // reconstruction of the level below. With a `judge`, a level that `targets`
 // would leave less than 1 % nearer the input than the level below takes the
-// first alternative that is, or else the nearest of them all.
+// first alternative that is, or else the nearest of them all. With a
+// `corrector`, each level takes the corrections it gives (code 4) unless,
+// with a judge, they would leave it no nearer the input than the level below.
 Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& base_positions, int levels,
                        const EncodeOptions& options, const LevelTargets& targets, const LevelJudge* judge,
-                       std::vector<uint8_t>* out, EncodeStats* stats);
+                       const LevelCorrector* corrector, std::vector<uint8_t>* out, EncodeStats* stats);
 
 }  // namespace qmc

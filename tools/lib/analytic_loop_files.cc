@@ -1,6 +1,7 @@
 // Progressive files aiming at analytic surfaces (see the header).
 #include "analytic_loop_files.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "encoder/encoder_internal.h"
@@ -50,9 +51,29 @@ LevelTargets unit_sphere_targets() { return per_point(on_sphere, {}); }
 LevelTargets torus_targets(double R, double r) { return per_point(on_torus, {R, r}); }
 LevelTargets height_field_targets() { return per_point(on_height_field, {}); }
 
+LevelCorrector sphere_corrections(int every, double step, std::vector<int> levels, bool list_unmoved) {
+  return [=](int j, const LoopMesh& level, LevelCode* code) {
+    code->correction_step = step;
+    code->corrections.clear();
+    if (std::find(levels.begin(), levels.end(), j) == levels.end()) return Status::Ok();
+    for (uint32_t v = 0; v < level.vertex_count(); v += uint32_t(every)) {
+      const double* p = &level.positions[3 * size_t(v)];
+      double target[3];
+      on_sphere(p, target, nullptr);
+      VertexCorrection c;
+      c.vertex = v;
+      for (int a = 0; a < 3; ++a)
+        c.offset[a] = int32_t(std::clamp(std::nearbyint((target[a] - p[a]) / step),
+                                         double(-kMaxCorrectionOffset), double(kMaxCorrectionOffset)));
+      if (list_unmoved || c.offset[0] != 0 || c.offset[1] != 0 || c.offset[2] != 0) code->corrections.push_back(c);
+    }
+    return Status::Ok();
+  };
+}
+
 Status make_loop_file(const Mesh& base, int levels, const LevelTargets& targets, int bits, std::vector<uint8_t>* out,
                       EncodeStats* stats, PositionMethod base_positions, int displacement_code,
-                      bool context_coded_faces, const LevelJudge* judge) {
+                      bool context_coded_faces, const LevelJudge* judge, const LevelCorrector* corrector) {
   EncodeOptions options;
   options.position_bits = bits;
   options.position_grid = PositionGrid::kPerAxis;  // LEVL's arithmetic starts from section 6.1's grid
@@ -71,7 +92,7 @@ Status make_loop_file(const Mesh& base, int levels, const LevelTargets& targets,
   positions.reserve(base.positions.size());
   for (uint32_t v : conn.file_vertex)
     for (int k = 0; k < 3; ++k) positions.push_back(base.positions[3 * size_t(v) + k]);
-  return write_loop_file(conn, positions, levels, options, targets, judge, out, &st);
+  return write_loop_file(conn, positions, levels, options, targets, judge, corrector, out, &st);
 }
 
 }  // namespace qmc::tools
