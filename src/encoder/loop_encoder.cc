@@ -251,7 +251,7 @@ struct ProgressiveEncoder::Prepared {
   bool surface_fitted = false;
   std::unique_ptr<TriangleBvh> surface;
   std::unique_ptr<LevelDistance> distance;  // of a level to the input (12.10's closed loop)
-  std::vector<Vec3d> deviation_samples;     // of the input, for max_deviation (12.7.2)
+  LoopMesh original;                        // the input made manifold: max_deviation's samples (12.7.2)
   EncodeStats stats;  // the base connectivity's and the pipeline's
 };
 
@@ -314,7 +314,7 @@ Status ProgressiveEncoder::prepare(const Mesh& mesh, const EncodeOptions& option
   if (Status s = remesh(original, *p->surface, base, p->levels, &p->control, &remesh_stats); !s.ok()) return s;
   p->base_positions = p->surface_fitted ? base.positions : p->control[0].positions;
   p->distance = std::make_unique<LevelDistance>(*p->surface, original, kJudgedInputSamples);
-  p->deviation_samples = deviation_samples(original);
+  p->original = std::move(original);
   ls.seconds_remesh = seconds_since(start);
   prepared_ = std::move(p);
   return Status::Ok();
@@ -343,7 +343,8 @@ Status ProgressiveEncoder::code(const EncodeOptions& options, std::vector<uint8_
   const LevelCorrector corrector = [&](int j, const LoopMesh& level, LevelCode* code) {
     if (j < p.levels) return Status::Ok();  // the finest level only: the ones below are refined further
     const Clock::time_point fit_start = Clock::now();
-    Status s = deviation_corrections(*p.surface, p.deviation_samples, options.max_deviation, level, code, &ls);
+    Status s = deviation_corrections(*p.surface, deviation_samples(p.original), options.max_deviation, level, code,
+                                     &ls);
     ls.seconds_deviation = seconds_since(fit_start);
     return s;
   };
