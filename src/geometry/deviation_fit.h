@@ -33,8 +33,10 @@ struct DeviationFitStats {
 };
 
 // The input points the fit measures the level against: every vertex a
-// triangle of `surface` uses, its edge midpoints and its centroids (a fixed,
-// even cover of thin triangles too, unlike random area samples).
+// triangle of `surface` uses, its edge midpoints and its centroids, and on a
+// triangle more than twice as long as the median a grid as fine as that (a
+// fixed cover of thin and of large triangles too, unlike random area
+// samples).
 std::vector<Vec3d> deviation_samples(const LoopMesh& surface);
 
 // The largest distance from a sample to `level`'s triangles and from a
