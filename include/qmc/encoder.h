@@ -270,9 +270,9 @@ struct LoopEncodeStats {
   // hit the input within the reach, and those that missed it.
   uint32_t ray_hits = 0, ray_misses = 0;
   // With max_deviation: the finest level's largest distance to the input and
-  // the input's to it, over the fit's samples (the input's vertices, edge
-  // midpoints and centroids; the level's vertices, edge midpoints and
-  // centroids), relative to the diagonal, before and after the corrections.
+  // the input's to it, over the fit's samples (deviation_fit.h: points of
+  // each surface as dense as the level's edges), relative to the diagonal,
+  // before and after the corrections.
   double deviation_before = 0, deviation_after = 0;
   double seconds_simplify = 0, seconds_fit = 0, seconds_remesh = 0, seconds_code = 0, seconds_deviation = 0;
 };

@@ -345,8 +345,8 @@ Status ProgressiveEncoder::code(const EncodeOptions& options, std::vector<uint8_
   const LevelCorrector corrector = [&](int j, const LoopMesh& level, LevelCode* code) {
     if (j < p.levels) return Status::Ok();  // the finest level only: the ones below are refined further
     const Clock::time_point fit_start = Clock::now();
-    Status s = deviation_corrections(*p.surface, deviation_samples(p.original), options.max_deviation, level, code,
-                                     &ls);
+    Status s = deviation_corrections(*p.surface, deviation_samples(p.original, sample_spacing(level)),
+                                     options.max_deviation, level, code, &ls);
     ls.seconds_deviation = seconds_since(fit_start);
     return s;
   };

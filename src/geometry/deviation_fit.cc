@@ -4,6 +4,7 @@
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "geometry/loop_fitting.h"
@@ -32,10 +33,56 @@ constexpr int kFreeRings = 1;
 // A tiny diagonal term, so that a vertex no pull reaches stays solvable.
 constexpr double kAnchorWeight = 1e-6;
 
-// The level points sampled per triangle, as barycentric weights: corners,
-// edge midpoints, centroid.
-constexpr double kLevelPoints[7][3] = {{1, 0, 0},     {0, 1, 0},     {0, 0, 1},          {0.5, 0.5, 0},
-                                       {0, 0.5, 0.5}, {0.5, 0, 0.5}, {1. / 3, 1. / 3, 1. / 3}};
+// Both surfaces are sampled as densely as the level's edges: a triangle up
+// to `spacing` long, twice the median of the level's longest edges, at its
+// corners, edge midpoints and centroid; a longer one on a grid as fine, of n
+// steps per side, n at most kMostSteps (the input's large triangles at
+// stanford-bunny's holes, a level triangle stretched across one, a cube's
+// faces under a level of many small triangles would otherwise go unseen
+// between samples).
+constexpr uint32_t kMostSteps = 32;
+
+double longest_edge(const Triangle3d& t) {
+  return std::sqrt(std::max({dot(t.b - t.a, t.b - t.a), dot(t.c - t.b, t.c - t.b), dot(t.a - t.c, t.a - t.c)}));
+}
+
+// Per triangle, the grid's n for `spacing` (1: corners, midpoints and centroid).
+std::vector<uint32_t> sample_steps(const std::vector<Triangle3d>& triangles, double spacing) {
+  std::vector<uint32_t> steps(triangles.size(), 1);
+  if (!(spacing > 0)) return steps;
+  for (size_t f = 0; f < triangles.size(); ++f)
+    steps[f] = uint32_t(std::clamp(std::ceil(longest_edge(triangles[f]) / spacing), 1.0, double(kMostSteps)));
+  return steps;
+}
+
+using Weights = std::array<double, 3>;
+
+// The barycentric weights of the grid of n steps per side (its points a
+// half step apart: n = 1 gives the edge midpoints) and of the centroid; the
+// corners only `with_corners`.
+std::vector<Weights> grid_weights(uint32_t n, bool with_corners) {
+  std::vector<Weights> out;
+  const uint32_t m = 2 * n;
+  for (uint32_t i = 0; i <= m; ++i)
+    for (uint32_t j = 0; i + j <= m; ++j) {
+      const bool corner = i == m || j == m || i + j == 0;
+      if (corner && !with_corners) continue;
+      const double b = double(i) / m, c = double(j) / m;
+      out.push_back({1 - b - c, b, c});
+    }
+  out.push_back({1. / 3, 1. / 3, 1. / 3});
+  return out;
+}
+
+// grid_weights(n, true) for n = 1 .. kMostSteps, made once.
+const std::vector<Weights>& level_weights(uint32_t n) {
+  static const std::vector<std::vector<Weights>> all = [] {
+    std::vector<std::vector<Weights>> w(kMostSteps + 1);
+    for (uint32_t k = 1; k <= kMostSteps; ++k) w[k] = grid_weights(k, true);
+    return w;
+  }();
+  return all[n];
+}
 
 // sum_k w[k] x P[v[k]] should move to `target`, with a weight.
 struct Pull {
@@ -45,7 +92,7 @@ struct Pull {
   double weight;
 };
 
-Vec3d level_point(const LoopMesh& level, uint32_t f, const double* w) {
+Vec3d level_point(const LoopMesh& level, uint32_t f, const Weights& w) {
   const uint32_t* t = &level.triangles[3 * size_t(f)];
   return position_of(level.positions, t[0]) * w[0] + position_of(level.positions, t[1]) * w[1] +
          position_of(level.positions, t[2]) * w[2];
@@ -95,8 +142,8 @@ class DeviationFit {
  public:
   DeviationFit(const TriangleBvh& surface, const std::vector<Vec3d>& samples, LoopMesh* level, double aim)
       : surface_(surface), samples_(samples), level_(*level), ring_(vertex_neighbours(*level)), aim2_(aim * aim),
-        core_(level->vertex_count(), 0), moved_(level->vertex_count(), 1), far_face_(level->face_count(), 0),
-        closest_(samples.size()) {}
+        steps_(sample_steps(loop_mesh_triangles(*level), sample_spacing(*level))), core_(level->vertex_count(), 0),
+        moved_(level->vertex_count(), 1), far_face_(level->face_count(), 0), closest_(samples.size()) {}
 
   // False when nothing is far (no round was needed).
   Status round(DeviationFitStats* stats, bool* far) {
@@ -129,7 +176,8 @@ class DeviationFit {
     for (uint32_t f = 0; f < level_.face_count(); ++f) {
       if (first_ || touches_moved(f)) {
         far_face_[f] = 0;
-        for (const double* w : kLevelPoints) far_face_[f] += surface_.distance_squared(level_point(level_, f, w)) > aim2_;
+        for (const Weights& w : level_weights(steps_[f]))
+          far_face_[f] += surface_.distance_squared(level_point(level_, f, w)) > aim2_;
       }
       if (far_face_[f]) stats->far_level_points += far_face_[f], mark(f);
     }
@@ -166,7 +214,7 @@ class DeviationFit {
     for (uint32_t f = 0; f < level_.face_count(); ++f) {
       const uint32_t* t = &level_.triangles[3 * size_t(f)];
       if (!inside(region, t)) continue;
-      for (const double* w : kLevelPoints) {
+      for (const Weights& w : level_weights(steps_[f])) {
         const SurfacePoint s = surface_.closest_point(level_point(level_, f, w));
         pulls->push_back({{t[0], t[1], t[2]}, {w[0], w[1], w[2]}, s.point, s.distance_squared > aim2_ ? 1.0 : kNearWeight});
       }
@@ -217,52 +265,34 @@ class DeviationFit {
   LoopMesh& level_;
   const std::vector<std::vector<uint32_t>> ring_;
   const double aim2_;
+  const std::vector<uint32_t> steps_;  // per triangle, its sampling grid (of the level given)
   std::vector<char> core_, moved_;
-  std::vector<uint8_t> far_face_;  // far points of each triangle, as of its last measure
+  std::vector<uint32_t> far_face_;  // far points of each triangle, as of its last measure
   std::vector<SurfacePoint> closest_;
   bool first_ = true;
 };
 
-// Twice the median of the triangles' longest edges: a triangle up to that
-// long is sampled at its edge midpoints and centroid, a longer one on a grid
-// as fine (a hole closed by a few large triangles would otherwise go unseen
-// between its samples: stanford-bunny's base).
-double sample_spacing(const std::vector<Triangle3d>& triangles) {
+}  // namespace
+
+double sample_spacing(const LoopMesh& level) {
   std::vector<double> longest;
-  longest.reserve(triangles.size());
-  for (const Triangle3d& t : triangles)
-    longest.push_back(std::sqrt(std::max({dot(t.b - t.a, t.b - t.a), dot(t.c - t.b, t.c - t.b), dot(t.a - t.c, t.a - t.c)})));
+  for (const Triangle3d& t : loop_mesh_triangles(level)) longest.push_back(longest_edge(t));
   if (longest.empty()) return 0;
   std::nth_element(longest.begin(), longest.begin() + std::ptrdiff_t(longest.size() / 2), longest.end());
   return 2 * longest[longest.size() / 2];
 }
 
-// The points of a grid of n steps per side over t, corners left out (the
-// vertices are samples of their own), and its centroid.
-void add_triangle_samples(const Triangle3d& t, uint32_t n, std::vector<Vec3d>* out) {
-  const uint32_t m = 2 * n;  // n = 1: the edge midpoints
-  for (uint32_t i = 0; i <= m; ++i)
-    for (uint32_t j = 0; i + j <= m; ++j) {
-      if (i == m || j == m || i + j == 0) continue;
-      out->push_back(t.a + (t.b - t.a) * (double(i) / m) + (t.c - t.a) * (double(j) / m));
-    }
-  out->push_back((t.a + t.b + t.c) * (1.0 / 3));
-}
-
-}  // namespace
-
-std::vector<Vec3d> deviation_samples(const LoopMesh& surface) {
+std::vector<Vec3d> deviation_samples(const LoopMesh& surface, double spacing) {
   std::vector<Vec3d> out;
   std::vector<char> used(surface.vertex_count(), 0);
   for (uint32_t v : surface.triangles) used[v] = 1;
   for (uint32_t v = 0; v < surface.vertex_count(); ++v)
     if (used[v]) out.push_back(position_of(surface.positions, v));
   const std::vector<Triangle3d> triangles = loop_mesh_triangles(surface);
-  const double spacing = sample_spacing(triangles);
-  for (const Triangle3d& t : triangles) {
-    const double longest =
-        std::sqrt(std::max({dot(t.b - t.a, t.b - t.a), dot(t.c - t.b, t.c - t.b), dot(t.a - t.c, t.a - t.c)}));
-    add_triangle_samples(t, spacing > 0 ? std::max<uint32_t>(1, uint32_t(std::ceil(longest / spacing))) : 1, &out);
+  const std::vector<uint32_t> steps = sample_steps(triangles, spacing);
+  for (size_t f = 0; f < triangles.size(); ++f) {
+    const Triangle3d& t = triangles[f];
+    for (const Weights& w : grid_weights(steps[f], false)) out.push_back(t.a * w[0] + t.b * w[1] + t.c * w[2]);
   }
   return out;
 }
@@ -271,8 +301,10 @@ double two_sided_deviation(const TriangleBvh& surface, const std::vector<Vec3d>&
   const TriangleBvh near(loop_mesh_triangles(level));
   double most = 0;
   for (const Vec3d& x : samples) most = std::max(most, near.distance_squared(x));
+  const std::vector<uint32_t> steps = sample_steps(loop_mesh_triangles(level), sample_spacing(level));
   for (uint32_t f = 0; f < level.face_count(); ++f)
-    for (const double* w : kLevelPoints) most = std::max(most, surface.distance_squared(level_point(level, f, w)));
+    for (const Weights& w : level_weights(steps[f]))
+      most = std::max(most, surface.distance_squared(level_point(level, f, w)));
   return std::sqrt(most);
 }
 

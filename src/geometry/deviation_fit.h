@@ -32,15 +32,19 @@ struct DeviationFitStats {
   size_t far_level_points = 0;   // of the level's vertices, edge midpoints and centroids, likewise
 };
 
+// Twice the median of the longest edges of `level`'s triangles: how densely
+// the fit samples both surfaces.
+double sample_spacing(const LoopMesh& level);
+
 // The input points the fit measures the level against: every vertex a
-// triangle of `surface` uses, its edge midpoints and its centroids, and on a
-// triangle more than twice as long as the median a grid as fine as that (a
-// fixed cover of thin and of large triangles too, unlike random area
-// samples).
-std::vector<Vec3d> deviation_samples(const LoopMesh& surface);
+// triangle of `surface` uses, and per triangle its edge midpoints and
+// centroid, or for a triangle longer than `spacing` a grid as fine (a fixed
+// cover of thin and of large triangles too, unlike random area samples).
+std::vector<Vec3d> deviation_samples(const LoopMesh& surface, double spacing);
 
 // The largest distance from a sample to `level`'s triangles and from a
-// point of `level` (its vertices, edge midpoints and centroids) to
+// point of `level` (its vertices, edge midpoints and centroids, and a grid as
+// deviation_samples's on its triangles longer than sample_spacing(level)) to
 // `surface`: the measure the fit works to.
 double two_sided_deviation(const TriangleBvh& surface, const std::vector<Vec3d>& samples, const LoopMesh& level);
 
