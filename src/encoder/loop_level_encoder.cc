@@ -111,20 +111,37 @@ std::vector<uint8_t> bit_code_stream(const std::vector<int8_t>& m) {
   return bits.finish();
 }
 
-// 12.7.1: code 2, range coded in contexts of the edges' ends.
-std::vector<uint8_t> range_code_stream(const std::vector<int8_t>& m, const LoopEdges& edges,
-                                       uint32_t coarse_vertices) {
+// 12.7.1: the displacements in contexts of the edges' ends, into `rc`
+// (codes 2 and 4).
+void code_displacements(const std::vector<int8_t>& m, const LoopEdges& edges, uint32_t coarse_vertices,
+                        RangeEncoder* rc) {
   std::vector<int8_t> last(coarse_vertices, 0);
   std::vector<DisplacementModel> model(1);
-  RangeEncoder rc;
   int previous = 0;
   for (size_t e = 0; e < m.size(); ++e) {
     const uint32_t a = edges.a[e], b = edges.b[e];
-    code_displacement(&rc, &model[0], DisplacementContext(last[a], last[b], previous), m[e]);
+    code_displacement(rc, &model[0], DisplacementContext(last[a], last[b], previous), m[e]);
     last[a] = last[b] = m[e];
     previous = m[e];
   }
+}
+
+// 12.7.1: code 2's stream.
+std::vector<uint8_t> range_code_stream(const std::vector<int8_t>& m, const LoopEdges& edges,
+                                       uint32_t coarse_vertices) {
+  RangeEncoder rc;
+  code_displacements(m, edges, coarse_vertices, &rc);
   return rc.finish();
+}
+
+// 12.1: a LEVL payload's level, code, edge_count and step.
+std::vector<uint8_t> level_payload_head(uint8_t level, uint8_t code, size_t edges, double step) {
+  std::vector<uint8_t> payload;
+  put_u8(&payload, level);
+  put_u8(&payload, code);
+  put_varint(&payload, edges);
+  put_f64le(&payload, step);
+  return payload;
 }
 
 }  // namespace
@@ -163,11 +180,7 @@ std::vector<uint8_t> encode_level(uint8_t level, const LoopEdges& coarse_edges, 
       stats->code = 2;
     }
   }
-  std::vector<uint8_t> payload;
-  put_u8(&payload, level);
-  put_u8(&payload, stats->code);
-  put_varint(&payload, p.r.size());
-  put_f64le(&payload, code.step);
+  std::vector<uint8_t> payload = level_payload_head(level, stats->code, p.r.size(), code.step);
   payload.insert(payload.end(), stream.begin(), stream.end());
   if (kept) *kept = std::move(code);
   return payload;
@@ -175,16 +188,8 @@ std::vector<uint8_t> encode_level(uint8_t level, const LoopEdges& coarse_edges, 
 
 std::vector<uint8_t> corrected_level_payload(uint8_t level, const LoopEdges& coarse_edges, uint32_t coarse_vertices,
                                              const LevelCode& code) {
-  std::vector<int8_t> last(coarse_vertices, 0);
-  std::vector<DisplacementModel> displacements(1);
   RangeEncoder rc;
-  int previous = 0;
-  for (size_t e = 0; e < code.m.size(); ++e) {
-    const uint32_t a = coarse_edges.a[e], b = coarse_edges.b[e];
-    code_displacement(&rc, &displacements[0], DisplacementContext(last[a], last[b], previous), code.m[e]);
-    last[a] = last[b] = code.m[e];
-    previous = code.m[e];
-  }
+  code_displacements(code.m, coarse_edges, coarse_vertices, &rc);
   std::vector<CorrectionModel> corrections(1);
   const int32_t none[3] = {0, 0, 0};
   for (size_t i = 0; i < code.corrections.size(); ++i) {
@@ -195,11 +200,7 @@ std::vector<uint8_t> corrected_level_payload(uint8_t level, const LoopEdges& coa
       code_correction_offset(&rc, &corrections[0], correction_bucket(before, c.offset, a), a, c.offset[a]);
   }
   const std::vector<uint8_t> stream = rc.finish();
-  std::vector<uint8_t> payload;
-  put_u8(&payload, level);
-  put_u8(&payload, 4);
-  put_varint(&payload, code.m.size());
-  put_f64le(&payload, code.step);
+  std::vector<uint8_t> payload = level_payload_head(level, 4, code.m.size(), code.step);
   put_f64le(&payload, code.correction_step);
   put_varint(&payload, code.corrections.size());
   payload.insert(payload.end(), stream.begin(), stream.end());

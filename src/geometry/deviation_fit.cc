@@ -19,15 +19,14 @@ namespace {
 constexpr double kAimedShare = 0.7;
 // Weights of a point's pull: 1 where it is farther than the aim,
 // kNearWeight where it is near already (it keeps the fitted triangles on
-// the input); the membrane term per edge; the share of each round's
-// solution applied. Measured on stanford-bunny at K = 2 (8 bits, step scale
+// the input); the membrane term per edge. Each round applies the whole of
+// its solution. Measured on stanford-bunny at K = 2 (8 bits, step scale
 // 5.66, max deviation 7.65e-4 of the diagonal): with 0.8 of each solution
 // applied the Hausdorff distance after ten rounds was 1.03e-3 of the
 // diagonal, with all of it 9.58e-4; a near weight of 0.3 instead of 0.15
 // gave the same distance for 176 more bytes.
 constexpr double kNearWeight = 0.15;
 constexpr double kMembraneWeight = 0.1;
-constexpr double kDamping = 1.0;
 // Rings of neighbours around the far points' vertices that may move too.
 constexpr int kFreeRings = 1;
 // A tiny diagonal term, so that a vertex no pull reaches stays solvable.
@@ -46,6 +45,16 @@ double longest_edge(const Triangle3d& t) {
   return std::sqrt(std::max({dot(t.b - t.a, t.b - t.a), dot(t.c - t.b, t.c - t.b), dot(t.a - t.c, t.a - t.c)}));
 }
 
+// Twice the median of the triangles' longest edges (0 for none).
+double spacing_of(const std::vector<Triangle3d>& triangles) {
+  std::vector<double> longest;
+  longest.reserve(triangles.size());
+  for (const Triangle3d& t : triangles) longest.push_back(longest_edge(t));
+  if (longest.empty()) return 0;
+  std::nth_element(longest.begin(), longest.begin() + std::ptrdiff_t(longest.size() / 2), longest.end());
+  return 2 * longest[longest.size() / 2];
+}
+
 // Per triangle, the grid's n for `spacing` (1: corners, midpoints and centroid).
 std::vector<uint32_t> sample_steps(const std::vector<Triangle3d>& triangles, double spacing) {
   std::vector<uint32_t> steps(triangles.size(), 1);
@@ -57,19 +66,13 @@ std::vector<uint32_t> sample_steps(const std::vector<Triangle3d>& triangles, dou
 
 using Weights = std::array<double, 3>;
 
-// The barycentric weights of the grid of n steps per side (its points a
-// half step apart: n = 1 gives the edge midpoints) and of the centroid; the
-// corners only `with_corners`.
+// The barycentric weights of the grid of n steps per side (the lattice of
+// order 2 n, its points a half step apart: n = 1 gives the edge midpoints)
+// and of the centroid; the corners (a weight of 1) only `with_corners`.
 std::vector<Weights> grid_weights(uint32_t n, bool with_corners) {
   std::vector<Weights> out;
-  const uint32_t m = 2 * n;
-  for (uint32_t i = 0; i <= m; ++i)
-    for (uint32_t j = 0; i + j <= m; ++j) {
-      const bool corner = i == m || j == m || i + j == 0;
-      if (corner && !with_corners) continue;
-      const double b = double(i) / m, c = double(j) / m;
-      out.push_back({1 - b - c, b, c});
-    }
+  for (const Weights& w : lattice_points(2 * n))
+    if (with_corners || (w[0] != 1 && w[1] != 1 && w[2] != 1)) out.push_back(w);
   out.push_back({1. / 3, 1. / 3, 1. / 3});
   return out;
 }
@@ -82,6 +85,12 @@ const std::vector<Weights>& level_weights(uint32_t n) {
     return w;
   }();
   return all[n];
+}
+
+// Per triangle of `level`, its grid's n at the level's own spacing.
+std::vector<uint32_t> level_steps(const LoopMesh& level) {
+  const std::vector<Triangle3d> triangles = loop_mesh_triangles(level);
+  return sample_steps(triangles, spacing_of(triangles));
 }
 
 // sum_k w[k] x P[v[k]] should move to `target`, with a weight.
@@ -114,38 +123,26 @@ void barycentric(const Triangle3d& t, const Vec3d& x, double w[3]) {
   for (int k = 0; k < 3; ++k) w[k] /= sum;
 }
 
-std::vector<std::vector<uint32_t>> vertex_neighbours(const LoopMesh& level) {
-  std::vector<std::vector<uint32_t>> out(level.vertex_count());
-  for (size_t k = 0; k < level.triangles.size(); ++k) {
-    const uint32_t a = level.triangles[k], b = level.triangles[k % 3 == 2 ? k - 2 : k + 1];
-    out[a].push_back(b);
-    out[b].push_back(a);
-  }
-  for (auto& n : out) {
-    std::sort(n.begin(), n.end());
-    n.erase(std::unique(n.begin(), n.end()), n.end());
-  }
-  return out;
-}
-
 bool inside(const std::vector<char>& region, const uint32_t* t) { return region[t[0]] && region[t[1]] && region[t[2]]; }
 
 // The rounds of the fit over one level. Each round marks the vertices of
 // far points of either side in `core` (kept from round to round), frees them
 // and kFreeRings around them, pulls every sample that lands on a free
-// triangle and every level point of one, and moves the free vertices by
-// kDamping of the least-squares solution. Between rounds only what a move
+// triangle and every level point of one, and moves the free vertices by the
+// least-squares solution. Between rounds only what a move
 // can change is measured again: the level points of triangles with a moved
 // vertex, and the samples that were far or whose nearest triangle moved (a
 // sample near an unmoved triangle stays near).
 class DeviationFit {
  public:
-  DeviationFit(const TriangleBvh& surface, const std::vector<Vec3d>& samples, LoopMesh* level, double aim)
-      : surface_(surface), samples_(samples), level_(*level), ring_(vertex_neighbours(*level)), aim2_(aim * aim),
-        steps_(sample_steps(loop_mesh_triangles(*level), sample_spacing(*level))), core_(level->vertex_count(), 0),
-        moved_(level->vertex_count(), 1), far_face_(level->face_count(), 0), closest_(samples.size()) {}
+  // `edges`: the level's (number_loop_edges), for its vertices' neighbours.
+  DeviationFit(const TriangleBvh& surface, const std::vector<Vec3d>& samples, const LoopEdges& edges,
+               LoopMesh* level, double aim)
+      : surface_(surface), samples_(samples), edges_(edges), level_(*level), aim2_(aim * aim),
+        steps_(level_steps(*level)), core_(level->vertex_count(), 0), moved_(level->vertex_count(), 1),
+        far_face_(level->face_count(), 0), closest_(samples.size()) {}
 
-  // False when nothing is far (no round was needed).
+  // *far: whether a point was far; if none was, nothing moved.
   Status round(DeviationFitStats* stats, bool* far) {
     const std::vector<Triangle3d> triangles = loop_mesh_triangles(level_);
     const TriangleBvh near(triangles);
@@ -184,6 +181,10 @@ class DeviationFit {
     first_ = false;
   }
 
+  // The neighbours of vertex v.
+  const uint32_t* ring_begin(uint32_t v) const { return edges_.neighbours.data() + edges_.neighbour_offset[v]; }
+  const uint32_t* ring_end(uint32_t v) const { return edges_.neighbours.data() + edges_.neighbour_offset[v + 1]; }
+
   void mark(uint32_t f) {
     for (int k = 0; k < 3; ++k) core_[level_.triangles[3 * size_t(f) + k]] = 1;
   }
@@ -193,7 +194,7 @@ class DeviationFit {
       std::vector<char> next = region;
       for (uint32_t v = 0; v < region.size(); ++v)
         if (region[v])
-          for (uint32_t u : ring_[v]) next[u] = 1;
+          for (const uint32_t* u = ring_begin(v); u != ring_end(v); ++u) next[*u] = 1;
       region.swap(next);
     }
     return region;
@@ -242,9 +243,9 @@ class DeviationFit {
       }
     }
     for (int i = 0; i < n; ++i) {
-      for (uint32_t u : ring_[free[size_t(i)]]) {
+      for (const uint32_t* u = ring_begin(free[size_t(i)]); u != ring_end(free[size_t(i)]); ++u) {
         entries.emplace_back(i, i, kMembraneWeight);
-        if (index[u] >= 0) entries.emplace_back(i, index[u], -kMembraneWeight);
+        if (index[*u] >= 0) entries.emplace_back(i, index[*u], -kMembraneWeight);
       }
       entries.emplace_back(i, i, kAnchorWeight);
     }
@@ -255,15 +256,15 @@ class DeviationFit {
       return Status(ErrorCode::kInvalidArgument, "internal: the deviation fit's system has no factorisation");
     const Eigen::MatrixXd moves = solver.solve(rhs);
     for (int i = 0; i < n; ++i)
-      for (int a = 0; a < 3; ++a) level_.positions[3 * size_t(free[size_t(i)]) + size_t(a)] += kDamping * moves(i, a);
+      for (int a = 0; a < 3; ++a) level_.positions[3 * size_t(free[size_t(i)]) + size_t(a)] += moves(i, a);
     stats->free_vertices = uint32_t(n);
     return Status::Ok();
   }
 
   const TriangleBvh& surface_;
   const std::vector<Vec3d>& samples_;
+  const LoopEdges& edges_;
   LoopMesh& level_;
-  const std::vector<std::vector<uint32_t>> ring_;
   const double aim2_;
   const std::vector<uint32_t> steps_;  // per triangle, its sampling grid (of the level given)
   std::vector<char> core_, moved_;
@@ -274,13 +275,7 @@ class DeviationFit {
 
 }  // namespace
 
-double sample_spacing(const LoopMesh& level) {
-  std::vector<double> longest;
-  for (const Triangle3d& t : loop_mesh_triangles(level)) longest.push_back(longest_edge(t));
-  if (longest.empty()) return 0;
-  std::nth_element(longest.begin(), longest.begin() + std::ptrdiff_t(longest.size() / 2), longest.end());
-  return 2 * longest[longest.size() / 2];
-}
+double sample_spacing(const LoopMesh& level) { return spacing_of(loop_mesh_triangles(level)); }
 
 std::vector<Vec3d> deviation_samples(const LoopMesh& surface, double spacing) {
   std::vector<Vec3d> out;
@@ -298,10 +293,11 @@ std::vector<Vec3d> deviation_samples(const LoopMesh& surface, double spacing) {
 }
 
 double two_sided_deviation(const TriangleBvh& surface, const std::vector<Vec3d>& samples, const LoopMesh& level) {
-  const TriangleBvh near(loop_mesh_triangles(level));
+  const std::vector<Triangle3d> triangles = loop_mesh_triangles(level);
+  const TriangleBvh near(triangles);
   double most = 0;
   for (const Vec3d& x : samples) most = std::max(most, near.distance_squared(x));
-  const std::vector<uint32_t> steps = sample_steps(loop_mesh_triangles(level), sample_spacing(level));
+  const std::vector<uint32_t> steps = sample_steps(triangles, spacing_of(triangles));
   for (uint32_t f = 0; f < level.face_count(); ++f)
     for (const Weights& w : level_weights(steps[f]))
       most = std::max(most, surface.distance_squared(level_point(level, f, w)));
@@ -314,8 +310,11 @@ Status fit_to_max_deviation(const TriangleBvh& surface, const std::vector<Vec3d>
   *stats = DeviationFitStats{};
   if (!(options.max_deviation > 0) || options.rounds < 1)
     return Status(ErrorCode::kInvalidArgument, "the deviation fit needs a positive deviation and rounds");
+  LoopEdges edges;
+  if (Status s = number_loop_edges(level, &edges); !s.ok())
+    return Status(ErrorCode::kInvalidArgument, "internal: the level's edges: " + s.message());
   LoopMesh fitted = level;
-  DeviationFit fit(surface, samples, &fitted, kAimedShare * options.max_deviation);
+  DeviationFit fit(surface, samples, edges, &fitted, kAimedShare * options.max_deviation);
   for (int r = 0; r < options.rounds; ++r) {
     bool far = false;
     if (Status s = fit.round(stats, &far); !s.ok()) return s;

@@ -337,13 +337,6 @@ void grid_triangles_over_pixels(uint32_t width, uint32_t height, const std::vect
 
 namespace {
 
-std::vector<std::array<double, 3>> lattice_points(uint32_t s) {
-  std::vector<std::array<double, 3>> out;
-  for (uint32_t i = 0; i <= s; ++i)
-    for (uint32_t j = 0; i + j <= s; ++j) out.push_back({double(s - i - j) / s, double(i) / s, double(j) / s});
-  return out;
-}
-
 // Compressed lists: items of list i are items[start[i] .. start[i + 1]).
 struct Csr {
   std::vector<uint32_t> start{0}, items;

@@ -277,6 +277,13 @@ void TriangleBvh::build(const std::vector<Triangle3d>& triangles) {
   }
 }
 
+std::vector<std::array<double, 3>> lattice_points(uint32_t s) {
+  std::vector<std::array<double, 3>> out;
+  for (uint32_t i = 0; i <= s; ++i)
+    for (uint32_t j = 0; i + j <= s; ++j) out.push_back({double(s - i - j) / s, double(i) / s, double(j) / s});
+  return out;
+}
+
 double TriangleBvh::bbox_diagonal() const {
   if (nodes_.empty()) return 0;
   double sum = 0;

@@ -15,6 +15,7 @@
 // triangles. Building and both searches are iterative.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -43,6 +44,10 @@ struct Triangle3d {
 };
 
 inline constexpr uint32_t kNoTriangle = UINT32_MAX;
+
+// The barycentric lattice of order s >= 1 over a triangle: the (s + 1)(s + 2)
+// / 2 weights ((s - i - j) / s, i / s, j / s), i outer, j inner.
+std::vector<std::array<double, 3>> lattice_points(uint32_t s);
 
 // Squared Euclidean distance from p to the closed triangle abc; the closest
 // point goes to *closest if it is not null. Decides which Voronoi region of
