@@ -118,7 +118,21 @@ for vector in "$vectors"/invalid_*.qmc; do
 done
 if [ -z "$info_crashed" ]; then passed=$((passed + 1)); else
   failed=$((failed + 1)); echo "FAIL info-invalid-vectors:$info_crashed"; fi
-check format-1.15-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f115.qmc" --format 1.15
+check format-1.16-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f116.qmc" --format 1.16
+# Spec 14.12: an irregular triangulation takes POSN method 11 (format 1.15); --format 1.14 keeps method 10 or below.
+"$meshgen" jittered-sphere 3 11 "$work/jittered.obj" >/dev/null
+check format-1.15 0 "$qmc" encode "$work/jittered.obj" "$work/f115.qmc" --quiet
+check format-1.15-info 0 "$qmc" info "$work/f115.qmc"
+contains format-1.15-written "$work/out" "format 1.15"
+contains format-1.15-method-11 "$work/out" "method 11: geometry order.*parallelograms sheared by [0-9]*/16"
+check format-1.15-info-json 0 "$qmc" info --json "$work/f115.qmc"
+contains format-1.15-shear "$work/out" '"position_method":11,.*"position_shear":[1-9][0-9]*,'
+check format-1.14-jittered 0 "$qmc" encode "$work/jittered.obj" "$work/f114j.qmc" --quiet --format 1.14
+check format-1.14-jittered-info 0 "$qmc" info "$work/f114j.qmc"
+contains format-1.14-jittered-method-4 "$work/out" "predicted (spec 14, method 4: geometry order)"
+if [ "$(stat -c %s "$work/f115.qmc")" -ge "$(stat -c %s "$work/f114j.qmc")" ]; then
+  failed=$((failed + 1)); echo "FAIL format-1.15-smaller: method 11's file is not smaller than the 1.14 file"; fi
+check verify-method-11 0 "$qmc" verify "$work/jittered.obj" "$work/f115.qmc"
 check format-1.010-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f112.qmc" --format 1.010
 "$meshgen" torus 40 30 "$work/torus1200.obj" >/dev/null  # 1,200 vertices of quads: method 4 or 5, never 1 (14.5)
 check format-1.9 0 "$qmc" encode "$work/torus1200.obj" "$work/f19.qmc" --quiet --format 1.11
@@ -157,7 +171,7 @@ check soup-encode 0 "$qmc" encode "$work/soup.off" "$work/soup.qmc" -q 16 --text
 check soup-verify 0 "$qmc" verify "$work/soup.off" "$work/soup.qmc"
 check verify-wrong-mesh 1 "$qmc" verify "$work/soup.off" "$work/torus.qmc"
 check help 0 "$qmc" --help
-contains help-version "$work/out" "format version 1.14, spec/qmc-format.md"
+contains help-version "$work/out" "format version 1.15, spec/qmc-format.md"
 check encode-help 0 "$qmc" encode --help
 contains help-default-bits "$work/out" "1/4096"
 check no-args 2 "$qmc"
@@ -354,7 +368,7 @@ check decode-groups-off-refused 3 "$qmc" decode "$work/groups.qmc" "$work/groups
 { echo "v 0 0 0 1 0 0"; echo "v 1 0 0 0 1 0"; echo "v 0 1 0 0 0 1 1"; echo "f 1 2 3"; echo "l 1 2"; } >"$work/colours.obj"
 check encode-colours-refused 3 "$qmc" encode "$work/colours.obj" "$work/colours.qmc"
 contains encode-colours-refused-names-flag "$work/err" "pass --drop-unsupported"
-contains encode-colours-refused-names-format "$work/err" "holds what format 1.14 cannot carry yet"
+contains encode-colours-refused-names-format "$work/err" "holds what format 1.15 cannot carry yet"
 contains encode-colours-refused-colours "$work/err" "  ignored per-vertex colours on v lines of 7 numbers: 1"
 contains encode-colours-refused-partial "$work/err" "  ignored per-vertex colours on v lines: only 2 of 3 vertices have one"
 check encode-colours-refused-no-output 0 test ! -e "$work/colours.qmc"

@@ -844,5 +844,118 @@ TEST(TriangleTwist, EncoderWritesMethodEightWhereItPays) {
 }
 
 
+// Spec 14.12's example: 14.3.4's triangles on the file's grid, vertex 3
+// predicted across the edge (2, 1) from o = 0, whose offset from the edge's
+// middle is 0.1 of e = q[1] - q[2].
+TEST(Shear, SpecExample) {
+  const Mesh two = faces({3, 3}, {0, 1, 2, 2, 1, 3});
+  const std::vector<uint32_t> q = {0, 0, 0, 10, 0, 0, 5, 10, 0, 16, 9, 0};
+  VertexCorners corners;
+  corners.build(4, two.face_sizes, two.corners);
+  const std::vector<uint32_t> order = geometry_order(4, two.face_sizes, two.corners);
+  ASSERT_EQ(order, (std::vector<uint32_t>{0, 1, 2, 3}));
+  const std::vector<uint32_t> activity(4, 0);
+  const auto predicted = [&](int k) {
+    VertexPrediction p;
+    predict_vertex_in_order(corners, order.data(), order.data(), 3, q.data(), activity.data(), kTop, &p, nullptr,
+                            false, false, k);
+    EXPECT_EQ(p.candidates, 1);
+    EXPECT_EQ(p.scale, 10u);  // 14.3.1's difference b - o, unsheared
+    return p;
+  };
+  VertexPrediction p = predicted(16);  // f = floor(2^15 x 25 / 125) = 6553
+  EXPECT_EQ(p.candidate[0][0], 15 * kOne + 32765);  // floor(16 x 6553 x 5 / 16)
+  EXPECT_EQ(p.candidate[0][1], 10 * kOne - 65530);  // floor(16 x 6553 x -10 / 16)
+  EXPECT_EQ(p.candidate[0][2], 0);
+  select_candidates(&p, 1, kTop);
+  EXPECT_EQ(p.value[0], 15);
+  EXPECT_EQ(p.value[1], 9);  // 9.00009 rounded half up; the vertex is at (16, 9)
+  p = predicted(8);
+  EXPECT_EQ(p.candidate[0][0], 15 * kOne + 16382);  // floor(8 x 6553 x 5 / 16) = floor(16382.5)
+  EXPECT_EQ(p.candidate[0][1], 10 * kOne - 32765);
+  select_candidates(&p, 1, kTop);
+  EXPECT_EQ(p.value[1], 10);  // 9.50004 rounds up
+  p = predicted(0);  // no shear: 14.3.4's parallelogram
+  EXPECT_EQ(p.candidate[0][0], 15 * kOne);
+  EXPECT_EQ(p.candidate[0][1], 10 * kOne);
+}
+
+// The fraction is clamped to +-2 (o far along a short edge), and grid
+// integers up to 2^30 are shifted into 15 bits before the products (15.12's
+// shift) without changing a fraction they give exactly.
+TEST(Shear, FractionClampedAndLargeIntegersShifted) {
+  const Mesh two = faces({3, 3}, {0, 1, 2, 2, 1, 3});
+  const std::vector<uint32_t> order = {0, 1, 2, 3};
+  VertexCorners corners;
+  corners.build(4, two.face_sizes, two.corners);
+  const std::vector<uint32_t> activity(4, 0);
+  const uint32_t top[3] = {(1u << 30) - 1, (1u << 30) - 1, (1u << 30) - 1};
+  VertexPrediction p;
+  // e = (1, 0, 0), g = 2 o - a - b = (999, 10, 0): t / (2 ee) = 499.5, clamped to 2.
+  const std::vector<uint32_t> short_edge = {600, 5, 0, 101, 0, 0, 100, 0, 0, 0, 0, 0};
+  predict_vertex_in_order(corners, order.data(), order.data(), 3, short_edge.data(), activity.data(), top, &p,
+                          nullptr, false, false, 16);
+  ASSERT_EQ(p.candidates, 1);
+  EXPECT_EQ(p.candidate[0][0], (100 + 101 - 600 + 2) * kOne);
+  EXPECT_EQ(p.candidate[0][1], -5 * kOne);
+  // e = (2^29, 0, 0), g = (2^28, 2^29, 0): shifted by 16, f = 2^14 (o a quarter of e from the middle).
+  const uint32_t big = 1u << 27;
+  const std::vector<uint32_t> large = {3 * big, 2 * big, 0, 4 * big, 0, 0, 0, 0, 0, 0, 0, 0};
+  predict_vertex_in_order(corners, order.data(), order.data(), 3, large.data(), activity.data(), top, &p, nullptr,
+                          false, false, 16);
+  ASSERT_EQ(p.candidates, 1);
+  EXPECT_EQ(p.candidate[0][0], int64_t(2 * big) * kOne);  // a + b - o = big, plus e / 4 = big
+  EXPECT_EQ(p.candidate[0][1], -int64_t(2 * big) * kOne);
+}
+
+// The encoder writes method 11 where the shear codes smaller (an irregular
+// triangulation), the same integers, and keeps its earlier method where it
+// does not (a regular one) and under 1,000 vertices.
+TEST(Shear, EncoderWritesMethodElevenWhereItPays) {
+  const Mesh sphere = tools::make_jittered_sphere(3, 0.3f, 11);
+  const WithAndWithout r = with_and_without(sphere, EncodeOptions{}, &EncodeOptions::shear);
+  EXPECT_EQ(r.with.quantization.method, 11);
+  EXPECT_GE(r.with.quantization.shear, 1);
+  EXPECT_LE(r.with.quantization.shear, 16);
+  EXPECT_EQ(r.with.version_minor, 15);
+  EXPECT_NE(r.without.quantization.method, 11);
+  EXPECT_EQ(r.with.quantized, r.without.quantized);
+  EXPECT_LT(r.with_bytes.size() * 100, r.without_bytes.size() * 99);  // more than 1 % smaller (1.9 %)
+  const Mesh torus = tools::triangulated(tools::make_torus(48, 32));
+  EXPECT_NE(decode_all(encode_with(torus, EncodeOptions{})).quantization.method, 11);
+  const Mesh small = tools::make_jittered_sphere(1, 0.3f, 11);  // 242 vertices
+  EXPECT_NE(decode_all(encode_with(small, EncodeOptions{})).quantization.method, 11);
+}
+
+// Method 11 over each kind of plane, and the shear with every feature,
+// decodes to the integers it was given.
+TEST(Shear, RoundTripsEveryPlaneAndFeature) {
+  const Mesh sphere = tools::make_jittered_sphere(3, 0.3f, 5);
+  VertexCorners corners;
+  QuantizedPositions grid;
+  ASSERT_TRUE(quantize_positions(sphere.positions, EncodeOptions{}, &grid).ok());
+  for (const int k : {1, 7, 16})
+    for (int features = 0; features < 8; ++features)
+      for (int plane = 0; plane < 3; ++plane) {
+        const MirrorPlane mirror{0, grid.top[0], plane == 2};
+        const std::vector<uint8_t> payload = encode_predicted_positions(
+            grid, sphere, nullptr, CandidateChoice::kFewestBits, ClassStart::kFlat, PredictionOrder::kGeometry,
+            features & kQuadTwistFeature, features & kMaskContextsFeature, features & kTriangleTwistFeature,
+            plane == 0 ? nullptr : &mirror, k);
+        QuantizationInfo info;
+        std::vector<uint32_t> q;
+        std::vector<float> positions;
+        ASSERT_TRUE(decode_positions(payload.data(), payload.size(), sphere, sphere.vertex_count(), &info, &q,
+                                     &positions)
+                        .ok());
+        EXPECT_EQ(info.method, 11);
+        EXPECT_EQ(info.shear, k);
+        EXPECT_EQ(info.features, features);
+        EXPECT_EQ(info.mirror_axis, plane == 0 ? -1 : 0);
+        EXPECT_EQ(info.near_images, plane == 2);
+        EXPECT_EQ(q, grid.q) << "k " << k << " features " << features << " plane " << plane;
+      }
+}
+
 }  // namespace
 }  // namespace qmc

@@ -160,14 +160,15 @@ double max_quantization_step(const QuantizationInfo& q) {
   return std::max({q.step[0], q.step[1], q.step[2]});
 }
 
-std::string position_method_traits(int method, int features) {
+std::string position_method_traits(int method, int features, int mirror, int shear) {
   if (method < 4) return "";
   std::string traits = ": geometry order";
   if (features & kQuadTwistFeature) traits += ", quads' twist";
   if (features & kTriangleTwistFeature) traits += ", triangles' twist";
   if (features & kMaskContextsFeature) traits += ", candidate contexts";
-  if (method == 9) traits += ", mirror images";
-  if (method == 10) traits += ", mirror images a step away";
+  if (mirror == 1) traits += ", mirror images";
+  if (mirror == 2) traits += ", mirror images a step away";
+  if (shear > 0) traits += ", parallelograms sheared by " + std::to_string(shear) + "/16";
   return traits;
 }
 

@@ -50,7 +50,7 @@ void print_predicted_positions(const DecodedFile& f, bool decoded) {
   const bool uniform = q.step[0] == q.step[1] && q.step[1] == q.step[2];
   const double bound = 0.5 * std::sqrt(q.step[0] * q.step[0] + q.step[1] * q.step[1] + q.step[2] * q.step[2]);
   std::printf("positions    predicted (spec 14, method %d%s%s), %s grid, step %.9g", q.method,
-              position_method_traits(q.method, q.features).c_str(), q.graded_start ? ": graded start" : "",
+              position_method_traits(q.method, q.features, q.mirror_axis < 0 ? 0 : q.near_images ? 2 : 1, q.shear).c_str(), q.graded_start ? ": graded start" : "",
               uniform ? "uniform" : "per-axis", q.step[0]);
   if (!uniform) std::printf(" %.9g %.9g", q.step[1], q.step[2]);
   std::printf(", tops %u %u %u, origin (%g %g %g); error bound %.6g\n", q.top[0], q.top[1], q.top[2], q.min[0],
@@ -62,13 +62,13 @@ void print_predicted_positions(const DecodedFile& f, bool decoded) {
   grid.top = q.top;
   grid.q = f.quantized;
   PositionStats stats;
-  const MirrorPlane plane{q.mirror_axis, q.mirror_sum};
+  const MirrorPlane plane{q.mirror_axis, q.mirror_sum, q.near_images};
   const size_t payload =
       encode_predicted_positions(grid, f.mesh, &stats, CandidateChoice::kFewestBits,
                                  q.graded_start ? ClassStart::kGraded : ClassStart::kFlat,
                                  q.method >= 4 ? PredictionOrder::kGeometry : PredictionOrder::kLabels,
                                  q.features & 1, q.features & 2, q.features & 4,
-                                 q.mirror_axis >= 0 ? &plane : nullptr)
+                                 q.mirror_axis >= 0 ? &plane : nullptr, q.shear)
           .size();
   static const char* const kKinds[5] = {"previous vertex", "neighbour mean", "one rule", "several rules",
                                          "mirror"};
@@ -188,6 +188,8 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
   // Spec 14.10's plane (methods 9 and 10): the axis, or -1, and the sum.
   std::printf("\"position_mirror_axis\":%d,\"position_mirror_sum\":%u,", f.quantization.mirror_axis,
               f.quantization.mirror_sum);
+  // Spec 14.12's shear weight k (method 11), or 0.
+  std::printf("\"position_shear\":%d,", f.quantization.shear);
   std::printf("\"order_restored\":%s,\"order_flags\":%u,", f.order_restored ? "true" : "false", f.order_flags);
   std::printf("\"loop_levels\":%u,\"levels\":[", f.loop_level_count);
   for (size_t j = 0; j < f.levels.size(); ++j) {

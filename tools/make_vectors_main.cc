@@ -54,6 +54,13 @@ namespace {
 // The vectors published up to format 1.6 were written with POSN method 1
 // where they predict positions (format 1.7's method 3 and 1.8's method 4
 // came later); they stay so.
+// POSN method 11 (14.12) came after every vector but the posn11 ones, which
+// encode through encode_sheared: the others keep the encoder's choices of before.
+qmc::EncodeOptions without_shear(qmc::EncodeOptions options) {
+  options.shear = false;
+  return options;
+}
+
 qmc::EncodeOptions format_1_6_options() {
   qmc::EncodeOptions options;
   options.mask_contexts = false;  // POSN methods 6 and 7 (14.8) came after these vectors
@@ -103,7 +110,7 @@ std::vector<uint8_t> encode(const Mesh& mesh, int bits, std::vector<std::string>
   options.connectivity = connectivity;
   options.texts = std::move(texts);
   std::vector<uint8_t> out;
-  if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
+  if (qmc::Status s = qmc::encode(mesh, without_shear(options), &out); !s.ok()) {
     std::fprintf(stderr, "qmc-make-vectors: %s\n", s.to_string().c_str());
     std::exit(3);
   }
@@ -475,7 +482,7 @@ std::vector<uint8_t> encode_structured(const Mesh& mesh, qmc::ConnectivityChoice
   options.quad_coding = choice == qmc::ConnectivityChoice::kQuad ? coding : -1;
   options.polygon_coding = choice == qmc::ConnectivityChoice::kPolygon ? coding : -1;
   std::vector<uint8_t> out;
-  if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
+  if (qmc::Status s = qmc::encode(mesh, without_shear(options), &out); !s.ok()) {
     std::fprintf(stderr, "qmc-make-vectors: %s\n", s.to_string().c_str());
     std::exit(3);
   }
@@ -793,7 +800,7 @@ std::vector<uint8_t> encode_keeping_order(const Mesh& mesh, qmc::ConnectivityCho
   options.connectivity = connectivity;
   options.keep_order = true;
   std::vector<uint8_t> out;
-  if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
+  if (qmc::Status s = qmc::encode(mesh, without_shear(options), &out); !s.ok()) {
     std::fprintf(stderr, "qmc-make-vectors: %s\n", s.to_string().c_str());
     std::exit(3);
   }
@@ -1452,7 +1459,7 @@ qmc::EncodeOptions on_unit_grid(qmc::EncodeOptions options) {
 std::vector<uint8_t> encode_posn_method(const Mesh& mesh, const qmc::EncodeOptions& options, int method) {
   std::vector<uint8_t> out;
   qmc::EncodeStats stats;
-  if (qmc::Status s = qmc::encode(mesh, options, &out, &stats); !s.ok() || stats.positions.method != method) {
+  if (qmc::Status s = qmc::encode(mesh, without_shear(options), &out, &stats); !s.ok() || stats.positions.method != method) {
     std::fprintf(stderr, "qmc-make-vectors: POSN method %d: %s\n", method, s.to_string().c_str());
     std::exit(3);
   }
@@ -1757,7 +1764,7 @@ void write_context_coded_valid(VectorWriter* w) {
   options.candidate_choice = qmc::CandidateChoice::kFewestBits;
   options.polygon_coding = qmc::kPolygonContextCoded;
   std::vector<uint8_t> bytes;
-  if (qmc::Status s = qmc::encode(sphere, options, &bytes); !s.ok()) {
+  if (qmc::Status s = qmc::encode(sphere, without_shear(options), &bytes); !s.ok()) {
     std::fprintf(stderr, "qmc-make-vectors: coding 7 with POSN 1: %s\n", s.to_string().c_str());
     std::exit(3);
   }
@@ -1888,7 +1895,7 @@ void write_context_coded_errors(VectorWriter* w) {
 
 std::vector<uint8_t> encode_with(const Mesh& mesh, const qmc::EncodeOptions& options, const char* what) {
   std::vector<uint8_t> out;
-  if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
+  if (qmc::Status s = qmc::encode(mesh, without_shear(options), &out); !s.ok()) {
     std::fprintf(stderr, "qmc-make-vectors: %s: %s\n", what, s.to_string().c_str());
     std::exit(3);
   }
@@ -3635,6 +3642,179 @@ void write_posn10_vectors(VectorWriter* w) {
              with_posn(std::vector<uint8_t>(payload.begin(), payload.end() - 64)), ErrorCode::kTruncated);
 }
 
+// 14.10's plane of a file's positions (with near, 14.11's counting too);
+// the generator stops if they have none.
+qmc::MirrorPlane mirror_plane_of(const std::vector<uint8_t>& file, bool near) {
+  Mesh faces;
+  qmc::QuantizedPositions grid;
+  decode_grid(split_chunks(file), &faces, &grid);
+  qmc::MirrorPlane plane;
+  if (!qmc::find_mirror_plane(grid, &plane, near)) {
+    std::fprintf(stderr, "qmc-make-vectors: a file to rewrite with a mirror plane has none\n");
+    std::exit(3);
+  }
+  return plane;
+}
+
+// A file's POSN recoded as method 11 (14.12) with shear k over method 8's
+// features and, if given, a mirror plane (plane 1 or 2 by its near_images).
+std::vector<uint8_t> rewritten_with_shear(const std::vector<uint8_t>& file, uint8_t features, int k,
+                                          const qmc::MirrorPlane* plane = nullptr) {
+  Chunks c = split_chunks(file);
+  Mesh faces;
+  qmc::QuantizedPositions grid;
+  decode_grid(c, &faces, &grid);
+  const qmc::ClassStart start =
+      grid.q.size() / 3 < qmc::kGradedStartBelow ? qmc::ClassStart::kGraded : qmc::ClassStart::kFlat;
+  c[find_chunk(c, qmc::kChunkPositions)].payload = qmc::encode_predicted_positions(
+      grid, faces, nullptr, qmc::CandidateChoice::kFewestBits, start, qmc::PredictionOrder::kGeometry,
+      features & qmc::kQuadTwistFeature, features & qmc::kMaskContextsFeature,
+      features & qmc::kTriangleTwistFeature, plane, k);
+  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, 15};
+  return join_chunks(c);
+}
+
+// 14.3.4's two triangles (0, 1, 2) and (2, 1, 3) at these positions: vertex
+// 3 predicted across the edge (2, 1) from vertex 0 (14.12's a, b and o are
+// vertices 2, 1 and 0).
+Mesh two_triangles(std::vector<float> positions) {
+  Mesh m;
+  m.positions = std::move(positions);
+  m.face_sizes.assign(2, 3);
+  m.corners = {0, 1, 2, 2, 1, 3};
+  return m;
+}
+
+// Spec 14.12's example: vertex 3 a step beyond where the sheared
+// parallelogram (k = 16) puts it, on x.
+Mesh shear_example() { return two_triangles({10, 10, 5, 20, 10, 5, 15, 20, 5, 26, 19, 5}); }
+
+// Vertex 3 of the example's two triangles where floor(k f e_y / 16) is
+// floor(-32768.75) (k = 5, f = -26215, e = (-12, 4, 0)): a prediction of
+// 34.49998 rounds to 34, where truncating would give 35; a fifth vertex no
+// face uses, decoded last, widens the grid beyond 35.
+Mesh shear_floor_example() { return two_triangles({15, 9, 5, 8, 24, 5, 20, 20, 5, 15, 34, 5, 30, 40, 5}); }
+
+// e = (1, 0, 0) and g = (-3, -20000, 0): 14.12's shift by 1 takes e to 0,
+// so E = 0 and the candidate (12, 20000, 0) is not sheared (tested on the
+// unshifted e, f would be -3 / 2 and move it by -1.5 steps on x).
+Mesh shear_edge_lost_to_the_shift() { return two_triangles({9, 0, 0, 11, 10000, 0, 10, 10000, 0, 12, 20000, 0}); }
+
+// The example with vertex 2 on vertex 1: vertex 3's parallelogram has an
+// edge of length 0, E = 0, and is not sheared.
+Mesh shear_example_without_edge() {
+  Mesh m = shear_example();
+  std::copy(m.positions.begin() + 3, m.positions.begin() + 6, m.positions.begin() + 6);
+  return m;
+}
+
+// What `qmc encode` writes with options, which must be POSN method 11.
+std::vector<uint8_t> encode_sheared(const Mesh& mesh, const qmc::EncodeOptions& options) {
+  std::vector<uint8_t> out;
+  qmc::EncodeStats stats;
+  if (qmc::Status s = qmc::encode(mesh, options, &out, &stats); !s.ok() || stats.positions.method != 11) {
+    std::fprintf(stderr, "qmc-make-vectors: POSN method 11: %s, method %d\n", s.to_string().c_str(),
+                 stats.positions.method);
+    std::exit(3);
+  }
+  return out;
+}
+
+void write_posn11_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  const qmc::EncodeOptions unit = on_unit_grid(options);
+  const Mesh example = shear_example();
+  w->valid("valid_posn11_example", rewritten_with_shear(encode_with(example, unit, "shear example"), 0, 16),
+           &example);
+  // 14.10's kite with the shear, its plane with method 9's image vertices
+  // (plane 1), and 14.11's with method 10's (plane 2).
+  const Mesh kite = mirror_kite();
+  const qmc::MirrorPlane exact{0, 12, false};
+  w->valid("valid_posn11_kite_plane_1", rewritten_with_shear(encode_with(kite, unit, "kite"), 0, 8, &exact), &kite);
+  Mesh near_kite = mirror_kite();
+  near_kite.positions[3 * 3] = 11;
+  const qmc::MirrorPlane near{0, 12, true};
+  w->valid("valid_posn11_kite_plane_2", rewritten_with_shear(encode_with(near_kite, unit, "kite"), 0, 4, &near),
+           &near_kite);
+  const Mesh no_edge = shear_example_without_edge();
+  w->valid("valid_posn11_edge_of_length_0",
+           rewritten_with_shear(encode_with(no_edge, unit, "shear example"), 0, 16), &no_edge);
+  const Mesh floored = shear_floor_example();
+  w->valid("valid_posn11_floor_of_a_negative_shear",
+           rewritten_with_shear(encode_with(floored, unit, "shear example"), 0, 5), &floored);
+  const Mesh lost = shear_edge_lost_to_the_shift();
+  w->valid("valid_posn11_edge_lost_to_the_shift",
+           rewritten_with_shear(encode_with(lost, unit, "shear example"), 0, 16), &lost);
+  // Edges longer than 2^14 steps, shifted before the products (a coarse
+  // sphere on a 24-bit grid), with every feature and 14.11's plane on a
+  // mirrored lumpy sphere, and beside polygon runs and strips (the torus
+  // half in quads, with 14.7's twist of quads too).
+  const Mesh coarse = qmc::tools::make_jittered_sphere(1, 0.3f, 3);
+  qmc::EncodeOptions fine = options;
+  fine.position_bits = 24;
+  w->valid("valid_posn11_long_edges_24_bits", rewritten_with_shear(encode_with(coarse, fine, "coarse"), 0, 12),
+           &coarse);
+  const Mesh mirrored = lumpy_mirrored_sphere(2);
+  const std::vector<uint8_t> mirrored_file = encode_with(mirrored, options, "mirrored");
+  const qmc::MirrorPlane near_plane = mirror_plane_of(mirrored_file, true);
+  const std::vector<uint8_t> all_features = rewritten_with_shear(mirrored_file, 7, 10, &near_plane);
+  w->valid("valid_posn11_every_feature_and_plane", all_features, &mirrored);
+  const Mesh mirrored_exactly = qmc::tools::make_mirrored_across_x(qmc::tools::make_jittered_sphere(2, 0.3f, 7));
+  const std::vector<uint8_t> exact_file = encode_with(mirrored_exactly, options, "mirrored");
+  const qmc::MirrorPlane exact_plane = mirror_plane_of(exact_file, false);
+  w->valid("valid_posn11_plane_1_triangle_twist", rewritten_with_shear(exact_file, 4, 12, &exact_plane),
+           &mirrored_exactly);
+  const Mesh half = half_triangulated_torus();
+  w->valid("valid_posn11_quads_and_triangles", rewritten_with_shear(encode_with(half, options, "half torus"), 7, 16),
+           &half);
+  // What the encoder writes on an irregular triangulation, at 12 and 16 bits.
+  const Mesh sphere = qmc::tools::make_jittered_sphere(3, 0.3f, 11);
+  options.position_bits = 12;
+  const std::vector<uint8_t> file = encode_sheared(sphere, options);
+  w->valid("valid_posn11_irregular_sphere_12_bits", file, &sphere);
+  qmc::EncodeOptions sixteen = options;
+  sixteen.position_bits = 16;
+  w->valid("valid_posn11_irregular_sphere_16_bits", encode_sheared(sphere, sixteen), &sphere);
+  // Texture coordinates over method 11's positions: their values take no shear (15.4).
+  Mesh textured = sphere;
+  qmc::tools::add_chart_texcoords(&textured);
+  w->valid("valid_posn11_with_texcoords", encode_sheared(textured, options), &textured);
+
+  // 14.1's checks of method 11's two bytes, and 14.4's end of stream.
+  const ChunkReplacer with_posn(file, qmc::kChunkPositions);
+  const std::vector<uint8_t> payload = with_posn.payload();
+  std::vector<uint8_t> count;
+  qmc::put_varint(&count, sphere.vertex_count());
+  const size_t shear = count.size() + 3, plane = shear + 1;  // after selector, start and features
+  std::vector<uint8_t> p = payload;
+  p[shear] = 0;
+  w->invalid("invalid_posn11_shear_0", with_posn(p), ErrorCode::kBadChunkPayload);
+  p[shear] = 17;
+  w->invalid("invalid_posn11_shear_17", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  p[plane] = 3;
+  w->invalid("invalid_posn11_plane_3", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn11_shear_missing", with_posn(std::vector<uint8_t>(payload.begin(), payload.begin() + long(shear))),
+             ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn11_plane_missing", with_posn(std::vector<uint8_t>(payload.begin(), payload.begin() + long(plane))),
+             ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn11_truncated_stream",
+             with_posn(std::vector<uint8_t>(payload.begin(), payload.end() - 64)), ErrorCode::kTruncated);
+  // 14.10's checks of the plane, after method 11's bytes.
+  const ChunkReplacer with_plane(all_features, qmc::kChunkPositions);
+  const std::vector<uint8_t> planed = with_plane.payload();
+  count.clear();
+  qmc::put_varint(&count, mirrored.vertex_count());
+  const size_t axis = count.size() + 5;  // after selector, start, features, shear and plane
+  p = planed;
+  p[axis] = 3;
+  w->invalid("invalid_posn11_axis_3", with_plane(p), ErrorCode::kBadChunkPayload);
+  p = std::vector<uint8_t>(planed.begin(), planed.begin() + long(axis + 1));
+  qmc::put_varint(&p, (uint64_t(1) << 31));
+  w->invalid("invalid_posn11_sum_2_31", with_plane(p), ErrorCode::kBadChunkPayload);
+}
+
 // Section 15.9: aTTR coding 4, what `qmc encode` writes when it is the
 // smaller; the generator fails if the encoder kept coding 0 instead.
 std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, const char* what) {
@@ -3651,7 +3831,7 @@ std::vector<uint8_t> encode_coding4(const Mesh& mesh, bool posn_geometry_order, 
   options.angle_weighted_normals = false;       // and coding 8 (15.13)
   std::vector<uint8_t> out;
   qmc::EncodeStats stats;
-  if (qmc::Status s = qmc::encode(mesh, options, &out, &stats);
+  if (qmc::Status s = qmc::encode(mesh, without_shear(options), &out, &stats);
       !s.ok() || stats.attributes.empty() || !stats.attributes[0].geometry_order) {
     std::fprintf(stderr, "qmc-make-vectors: %s: not aTTR coding 4 (%s)\n", what, s.to_string().c_str());
     std::exit(3);
@@ -3717,7 +3897,7 @@ std::vector<uint8_t> encode_attribute_coding(const Mesh& mesh, const qmc::Encode
                                              const char* what) {
   std::vector<uint8_t> out;
   qmc::DecodedFile file;
-  if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
+  if (qmc::Status s = qmc::encode(mesh, without_shear(options), &out); !s.ok()) {
     std::fprintf(stderr, "qmc-make-vectors: %s: %s\n", what, s.to_string().c_str());
     std::exit(3);
   }
@@ -4264,7 +4444,7 @@ void write_attribute_coding8_vectors(VectorWriter* w) {
 std::vector<uint8_t> encode_mapping3(const Mesh& mesh, const qmc::EncodeOptions& options, const char* what) {
   std::vector<uint8_t> out;
   qmc::DecodedFile file;
-  if (qmc::Status s = qmc::encode(mesh, options, &out); !s.ok()) {
+  if (qmc::Status s = qmc::encode(mesh, without_shear(options), &out); !s.ok()) {
     std::fprintf(stderr, "qmc-make-vectors: %s: %s\n", what, s.to_string().c_str());
     std::exit(3);
   }
@@ -4421,6 +4601,7 @@ int main(int argc, char** argv) {
   write_posn9_vectors(&w);
   write_posn10_vectors(&w);
   write_levl4_vectors(&w);
+  write_posn11_vectors(&w);
   w.finish();
   return 0;
 }

@@ -21,6 +21,8 @@ const char kUsage[] =
     "  deltoidal                the 60-quad sphere (deltoidal hexecontahedron)\n"
     "  sphere-series LEVELS     it after LEVELS Catmull-Clark steps, on the unit sphere (0..10)\n"
     "  terraces N STEPS         an N x N grid of triangles in STEPS flat rings with cliffs between\n"
+    "  jittered-sphere LEVELS SEED  sphere-series LEVELS in triangles, each vertex moved along the\n"
+    "                           sphere by up to 0.3 of an edge: an irregular triangulation\n"
     "  catmull-clark IN         IN (a mesh file) after one Catmull-Clark step\n";
 
 int param(int argc, char** argv, int i) {
@@ -74,6 +76,8 @@ int main(int argc, char** argv) {
   else if (kind == "soup") mesh = make_random_soup(uint64_t(param(argc, argv, 2)), RandomSoupOptions{});
   else if (kind == "deltoidal") mesh = make_deltoidal_hexecontahedron();
   else if (kind == "sphere-series") mesh = make_refined_sphere(levels_param(argc, argv, 2));
+  else if (kind == "jittered-sphere")
+    mesh = make_jittered_sphere(levels_param(argc, argv, 2), 0.3f, uint64_t(param(argc, argv, 3)));
   else if (kind == "terraces") mesh = make_terraces(uint32_t(param(argc, argv, 2)), uint32_t(param(argc, argv, 3)), 9);
   else if (kind == "catmull-clark") {
     if (argc != 4) {

@@ -51,13 +51,16 @@ class PredictionVisit {
   // POSN method 8 (14.9): triangle candidates carry their twists; geometry order only.
   void twist_triangles(bool on = true) { triangle_twist_ = on && !order_.empty(); }
   bool twists_triangles() const { return triangle_twist_; }
+  // POSN method 11 (14.12): parallelogram candidates sheared by k / 16 (0: not); geometry order only.
+  void shear(int k) { shear_ = order_.empty() ? 0 : k; }
+  int shear() const { return shear_; }
   // 14.3 for item(i), in order i = 0, 1, ... (the guide's orientation carries on).
   void predict(uint32_t i, const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
                VertexPrediction* out) const {
     PositionGuide* guide = guided_ ? &guide_ : nullptr;
     if (order_.empty()) return predict_vertex(mesh_, i, q, activity, top, out, guide);
     predict_vertex_in_order(mesh_, order_.data(), rank_.data(), i, q, activity, top, out, guide, twist_,
-                            triangle_twist_);
+                            triangle_twist_, shear_);
   }
 
  private:
@@ -66,6 +69,7 @@ class PredictionVisit {
   bool guided_ = false;
   bool twist_ = false;
   bool triangle_twist_ = false;
+  int shear_ = 0;
   std::vector<uint32_t> order_, rank_;  // empty in label order
 };
 

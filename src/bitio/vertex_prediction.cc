@@ -62,6 +62,7 @@ template <class Order>
 struct Visit {
   Order order;
   uint32_t v, key;  // the vertex predicted and order.key(v)
+  int shear = 0;    // 14.12's weight k of the parallelograms' shear (POSN method 11), 0: none
   bool before(uint32_t u) const { return order.key(u) < key; }
 };
 
@@ -130,9 +131,30 @@ void add_triangle_twists(const VertexCorners& m, uint32_t ka, uint32_t a, uint32
   for (int x = 0; x < 3; ++x) c->triangle_twist[k][x] = kOne / n * sum[x];
 }
 
+// 14.12: adds to the parallelogram candidate a + b - o (2^-16 units) k / 16
+// of o's offset from the middle of (a, b) along b - a, f e with f the
+// offset's fraction of e = b - a in 2^-16 units (clamped to +-2): on an
+// irregular triangulation the parallelogram's reflection of o overshoots
+// along the edge.
+void add_shear(const uint32_t* q, uint32_t a, uint32_t b, uint32_t o, int k, int64_t candidate[3]) {
+  int64_t e[3], g[3];
+  for (int x = 0; x < 3; ++x) {
+    e[x] = int64_t(q[3 * size_t(b) + x]) - int64_t(q[3 * size_t(a) + x]);
+    g[x] = 2 * int64_t(q[3 * size_t(o) + x]) - int64_t(q[3 * size_t(a) + x]) - int64_t(q[3 * size_t(b) + x]);
+  }
+  int64_t es[3] = {e[0], e[1], e[2]}, gs[3] = {g[0], g[1], g[2]};
+  shift_into_15_bits(es, gs);
+  const int64_t ee = es[0] * es[0] + es[1] * es[1] + es[2] * es[2];
+  if (ee == 0) return;
+  const int64_t t = gs[0] * es[0] + gs[1] * es[1] + gs[2] * es[2];
+  constexpr int64_t kLargest = int64_t(1) << 17;  // 2 in units of 2^-16
+  const int64_t f = std::clamp<int64_t>(floor_div(t * (int64_t(1) << 15), ee), -kLargest, kLargest);
+  for (int x = 0; x < 3; ++x) candidate[x] += floor_shift(int64_t(k) * f * e[x], 4);
+}
+
 // 14.3.1, across-edge parallelogram: the triangles over the edge (a, b)
 // opposite v's corner, o being their third vertex; with 14.9's twist, each
-// candidate's twist summed.
+// candidate's twist summed; with 14.12's shear, each candidate sheared.
 template <class Order>
 void add_parallelograms(const VertexCorners& m, uint32_t corner, const VertexCorners::Sides& sides,
                         const Visit<Order>& at, const uint32_t* q, VertexPrediction* c) {
@@ -142,6 +164,7 @@ void add_parallelograms(const VertexCorners& m, uint32_t corner, const VertexCor
     if (at.before(o) && o != a && o != b) {
       const int before = c->candidates;
       add_candidate(c, kWeightParallelogram, q, a, b, o, kOne);
+      if (at.shear != 0 && c->candidates > before) add_shear(q, a, b, o, at.shear, c->candidate[before]);
       if constexpr (Order::kTriangleTwist)
         if (c->candidates > before) add_triangle_twists(m, ka, a, b, o, at, q, c);
     }
@@ -400,12 +423,14 @@ void predict_vertex(const VertexCorners& m, uint32_t v, const uint32_t* q, const
 
 void predict_vertex_in_order(const VertexCorners& m, const uint32_t* order, const uint32_t* rank, uint32_t i,
                              const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
-                             VertexPrediction* out, PositionGuide* guide, bool quad_twist, bool triangle_twist) {
+                             VertexPrediction* out, PositionGuide* guide, bool quad_twist, bool triangle_twist,
+                             int shear) {
   const uint32_t* previous = i > 0 ? &order[i - 1] : nullptr;
   if (triangle_twist)
-    predict(m, Visit<TwistedRankOrder>{{{rank}}, order[i], i}, previous, q, activity, top, guide, quad_twist, out);
+    predict(m, Visit<TwistedRankOrder>{{{rank}}, order[i], i, shear}, previous, q, activity, top, guide, quad_twist,
+            out);
   else
-    predict(m, Visit<RankOrder>{{rank}, order[i], i}, previous, q, activity, top, guide, quad_twist, out);
+    predict(m, Visit<RankOrder>{{rank}, order[i], i, shear}, previous, q, activity, top, guide, quad_twist, out);
 }
 
 namespace {

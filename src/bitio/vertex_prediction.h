@@ -241,11 +241,12 @@ void predict_vertex(const VertexCorners& mesh, uint32_t v, const uint32_t* q, co
 // the previous vertex. Gives what predict_vertex gives for vertex i of the
 // faces renamed by rank, without renaming them. With quad_twist, a quad's
 // run carries the twist of its neighbours (POSN method 5, 14.7); with
-// triangle_twist, out gets the triangle candidates' twists (14.9).
+// triangle_twist, out gets the triangle candidates' twists (14.9); with a
+// shear k (1..16), the parallelogram candidates are sheared (14.12).
 void predict_vertex_in_order(const VertexCorners& mesh, const uint32_t* order, const uint32_t* rank, uint32_t i,
                              const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
                              VertexPrediction* out, PositionGuide* guide = nullptr, bool quad_twist = false,
-                             bool triangle_twist = false);
+                             bool triangle_twist = false, int shear = 0);
 
 // 14.3.3: the prediction from the candidates whose bit is set in mask (the
 // weighted mean), or the fallback if none is.

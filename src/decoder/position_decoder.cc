@@ -25,11 +25,14 @@ Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadCh
 
 // Section 14.1: the byte after vertex_count selects the method.
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (14.1)
-// Methods 4 - 10 (14.1, 14.6 - 14.11), 0x84 .. 0x8A, all with the start
-// byte; methods 8 - 10 with the features byte of 14.9 after it, methods 9
-// and 10 with 14.10's plane after that.
-constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x8A;
+// Methods 4 - 11 (14.1, 14.6 - 14.12), 0x84 .. 0x8B, all with the start
+// byte; methods 8 - 11 with the features byte of 14.9 after it, method 11
+// with its shear and plane bytes after that (14.12), methods 9 and 10 and
+// method 11 with a plane with 14.10's plane last.
+constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x8B;
 constexpr uint8_t kFeaturesSelector = 0x88, kMirrorSelector = 0x89, kNearMirrorSelector = 0x8A;
+constexpr uint8_t kShearSelector = 0x8B;
+constexpr uint8_t kLargestShear = 16;
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
   for (int a = 0; a < 3; ++a)
@@ -72,7 +75,22 @@ Status read_grid(ByteReader* in, QuantizationInfo* info) {
   return Status::Ok();
 }
 
-// Section 14.10: the plane of methods 9 and 10, its axis byte and sum
+// Section 14.12: method 11's shear weight and the kind of its plane (0
+// none, 1 method 9's, 2 method 10's), before the plane itself.
+Status read_shear(ByteReader* in, QuantizationInfo* info, bool* mirrored) {
+  uint8_t shear = 0, plane = 0;
+  if (!in->get_u8(&shear)) return bad_payload("method 11's shear byte missing (section 14.12)");
+  if (shear < 1 || shear > kLargestShear)
+    return bad_payload("shear " + std::to_string(shear) + " outside 1..16 (section 14.12)");
+  if (!in->get_u8(&plane)) return bad_payload("method 11's plane byte missing (section 14.12)");
+  if (plane > 2) return bad_payload("plane " + std::to_string(plane) + " is not 0, 1 or 2 (section 14.12)");
+  info->shear = shear;
+  info->near_images = plane == 2;
+  *mirrored = plane != 0;
+  return Status::Ok();
+}
+
+// Section 14.10: the plane of methods 9 - 11, its axis byte and sum
 // (checked against the grid's top once read_grid has it).
 Status read_mirror_plane(ByteReader* in, QuantizationInfo* info) {
   const std::string method = "method " + std::to_string(info->method);
@@ -105,8 +123,9 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
       if (start > 1) return bad_payload("start " + std::to_string(start) + " is neither 0 nor 1 (section 14.1)");
       info->graded_start = start == 1;
     }
-    const bool mirrored = selector == kMirrorSelector || selector == kNearMirrorSelector;
-    if (selector == kFeaturesSelector || mirrored) {
+    bool mirrored = selector == kMirrorSelector || selector == kNearMirrorSelector;
+    info->near_images = selector == kNearMirrorSelector;
+    if (selector == kFeaturesSelector || mirrored || selector == kShearSelector) {
       const std::string method = "method " + std::to_string(info->method);
       uint8_t features = 0;
       if (!in->get_u8(&features)) return bad_payload(method + "'s features byte missing (section 14.9)");
@@ -114,6 +133,8 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
         return bad_payload(method + "'s features " + std::to_string(features) +
                            " has a bit above bit 2 set (section 14.9)");
       info->features = features;
+      if (selector == kShearSelector)
+        if (Status s = read_shear(in, info, &mirrored); !s.ok()) return s;
       if (mirrored)
         if (Status s = read_mirror_plane(in, info); !s.ok()) return s;
     } else {
@@ -128,7 +149,7 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
   if (selector >= 0x80)
     return Status(ErrorCode::kUnsupportedFeature,
                   "POSN: method " + std::to_string(selector - 0x80) +
-                      " is not defined (section 14.1 knows 0, 1 and 3 - 10)");
+                      " is not defined (section 14.1 knows 0, 1 and 3 - 11)");
   if (selector < 1 || selector > 30) return bad_payload("quantization bits " + std::to_string(selector) + " outside 1..30");
   info->method = 0;
   info->bits = selector;
@@ -242,7 +263,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
                              ClassStart start, PredictionOrder order, const PositionGuide* guide, bool quad_twist,
                              bool mask_contexts, bool triangle_twist, const MirrorPlane* mirror,
-                             const AttributeTwins* twins) {
+                             const AttributeTwins* twins, int shear) {
   if (!range_stream_justifies(count, size))  // section 14.1, before anything is reserved
     return Status(ErrorCode::kLimitExceeded, names.chunk + ": " + std::to_string(count) + " " + names.items +
                                                  " for " + std::to_string(size) +
@@ -254,6 +275,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   visit.guide_by(guide);
   visit.twist_quads(quad_twist);
   visit.twist_triangles(triangle_twist);
+  visit.shear(shear);
   TriangleTwistWeight twist_weight;
   std::vector<uint32_t> activity(count);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start, mask_contexts));
@@ -307,11 +329,11 @@ Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, 
     const PredictedGridNames names{"POSN", "vertex", "vertices", "axis"};
     const ClassStart start = info->graded_start ? ClassStart::kGraded : ClassStart::kFlat;
     const PredictionOrder order = info->method >= 4 ? PredictionOrder::kGeometry : PredictionOrder::kLabels;
-    const MirrorPlane plane{info->mirror_axis, info->mirror_sum, info->method == 10};
+    const MirrorPlane plane{info->mirror_axis, info->mirror_sum, info->near_images};
     if (Status s = decode_predicted_grid(in.cursor(), in.remaining(), faces, vertex_count, info->top.data(), names,
                                          quantized, start, order, nullptr, info->features & kQuadTwistFeature,
                                          info->features & kMaskContextsFeature, info->features & kTriangleTwistFeature,
-                                         info->mirror_axis >= 0 ? &plane : nullptr);
+                                         info->mirror_axis >= 0 ? &plane : nullptr, nullptr, info->shear);
         !s.ok())
       return s;
   } else {

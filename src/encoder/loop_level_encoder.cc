@@ -290,8 +290,8 @@ Status write_loop_file(const FileConnectivity& conn, const std::vector<double>& 
       quantize_positions(std::vector<float>(base_positions.begin(), base_positions.end()), options.position_bits);
   const std::vector<uint8_t> positions_payload =
       encode_positions(quantized, conn.mesh, options.position_method, options.candidate_choice, class_start(options),
-                       prediction_order(options), false, false, false, false, false,
-                       &st->positions);  // a base: no twist, no 14.8, no mirror
+                       prediction_order(options), false, false, false, false, false, false,
+                       &st->positions);  // a base: no twist, no 14.8, no mirror, no shear
   LoopMesh current;
   current.triangles = conn.mesh.corners;
   loop_base_positions(info_of(quantized), quantized.q, &current);

@@ -31,6 +31,7 @@ constexpr uint8_t kMaskContextSelectors[2] = {0x86, 0x87};               // meth
 constexpr uint8_t kFeaturesSelector = 0x88;                              // method 8 (14.1, 14.9)
 constexpr uint8_t kMirrorSelector = 0x89;                                // method 9 (14.1, 14.10)
 constexpr uint8_t kNearMirrorSelector = 0x8A;                            // method 10 (14.1, 14.11)
+constexpr uint8_t kShearSelector = 0x8B;                                 // method 11 (14.1, 14.12)
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
 
 void bounding_box(const std::vector<float>& positions, QuantizedPositions* out) {
@@ -308,7 +309,7 @@ bool code_mirror_choice(MeteredRangeEncoder* rc, PositionResidualModel* model, c
 std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t top[3], const PredictionVisit& visit,
                                   PositionStats* stats, CandidateChoice choice, ClassStart start,
                                   bool mask_contexts = false, const MirrorPlane* mirror = nullptr,
-                                  const AttributeTwins* twins = nullptr) {
+                                  const AttributeTwins* twins = nullptr, uint32_t limit = UINT32_MAX) {
   const uint32_t n = uint32_t(q.size() / 3);
   std::vector<uint32_t> activity(n);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start, mask_contexts));
@@ -321,7 +322,7 @@ std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t
   MirrorCandidates* images = nullptr;
   if (mirror) mirrors.reset(images = new MirrorCandidates(visit.mesh(), *mirror, top));
   if (twins) mirrors = std::make_unique<ValueTwins>(visit.mesh(), *twins, top);
-  for (uint32_t i = 0; i < n; ++i) {
+  for (uint32_t i = 0; i < std::min(n, limit); ++i) {
     const uint32_t v = visit.item(i);
     visit.predict(i, q.data(), activity.data(), top, &p);
     twist_weight.apply(&p);
@@ -351,12 +352,23 @@ size_t selector_offset(const QuantizedPositions& positions) {
 // when the vertices cost too little for 14.1's bound.
 std::vector<uint8_t> predicted_payload(const QuantizedPositions& positions, ClassStart start, PredictionOrder order,
                                        bool quad_twist, bool mask_contexts, bool triangle_twist,
-                                       const MirrorPlane* mirror, const std::vector<uint8_t>& stream) {
+                                       const MirrorPlane* mirror, const std::vector<uint8_t>& stream,
+                                       int shear = 0) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
   if (!range_stream_justifies(n, stream.size())) return {};
   std::vector<uint8_t> payload;
   put_varint(&payload, n);
-  if (order == PredictionOrder::kGeometry && (triangle_twist || mirror)) {
+  if (order == PredictionOrder::kGeometry && shear > 0) {  // method 11 (14.12)
+    put_u8(&payload, kShearSelector);
+    put_u8(&payload, start == ClassStart::kGraded ? 1 : 0);
+    put_u8(&payload, position_features(quad_twist, mask_contexts, triangle_twist));
+    put_u8(&payload, uint8_t(shear));
+    put_u8(&payload, !mirror ? 0 : mirror->near_images ? 2 : 1);
+    if (mirror) {
+      put_u8(&payload, uint8_t(mirror->axis));
+      put_varint(&payload, mirror->sum);
+    }
+  } else if (order == PredictionOrder::kGeometry && (triangle_twist || mirror)) {
     put_u8(&payload, !mirror ? kFeaturesSelector : mirror->near_images ? kNearMirrorSelector : kMirrorSelector);
     put_u8(&payload, start == ClassStart::kGraded ? 1 : 0);
     put_u8(&payload, position_features(quad_twist, mask_contexts, triangle_twist));
@@ -401,18 +413,19 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
                                                 PositionStats* stats, CandidateChoice choice, ClassStart start,
                                                 PredictionOrder order, bool quad_twist, bool mask_contexts,
-                                                bool triangle_twist, const MirrorPlane* mirror) {
+                                                bool triangle_twist, const MirrorPlane* mirror, int shear) {
   mask_contexts = mask_contexts && order == PredictionOrder::kGeometry;
   triangle_twist = triangle_twist && order == PredictionOrder::kGeometry;
-  if (order != PredictionOrder::kGeometry) mirror = nullptr;
+  if (order != PredictionOrder::kGeometry) mirror = nullptr, shear = 0;
   VertexCorners corners;
   corners.build(uint32_t(positions.q.size() / 3), faces.face_sizes, faces.corners);
   PredictionVisit visit(corners, order);
   visit.twist_quads(quad_twist);
   visit.twist_triangles(triangle_twist);
+  visit.shear(shear);
   return predicted_payload(
       positions, start, order, quad_twist, mask_contexts, triangle_twist, mirror,
-      encode_visit(positions.q, positions.top.data(), visit, stats, choice, start, mask_contexts, mirror));
+      encode_visit(positions.q, positions.top.data(), visit, stats, choice, start, mask_contexts, mirror), shear);
 }
 
 // find_mirror_plane's screen: every plane tried on about kMirrorScreen
@@ -671,6 +684,31 @@ bool triangle_twist_pays(const QuantizedPositions& positions, PredictionVisit* v
   return twist_cost < kTriangleTwistMargin * plain_cost;
 }
 
+
+// 14.12: the shear is weighed on meshes of this many vertices or more (on
+// the corpus it pays on none under 1,000: cathead's POSN 2 bytes smaller at
+// best, for more passes than its whole encode), over the first kShearPrefix
+// vertices of the order, where a weight must save kShearMargin of their
+// bits. The corpus's triangle meshes at 12 bits, the weight written and
+// POSN against method 10 or below: cow 12 (4.6 % smaller), lilium 8 (3.4 %),
+// bunny_small 8, fertility 8, armadillo 16 (1.6 - 1.9 %); stanford-bunny,
+// face, beetle and camelhead lose with any weight and stay as they were.
+constexpr uint32_t kShearFrom = 1000, kShearPrefix = 1024;
+constexpr double kShearMargin = 0.995;
+
+// The weight k of 14.12's shear for which bits(k), the cost of coding some
+// vertices with it, is smallest of 8, 12 and 16, or 0 if 8 does not save
+// kShearMargin of bits(0): 12 is tried if 8 saves, 16 if 12 saves more
+// (smaller weights never coded the corpus smallest).
+template <class Bits>
+int shear_weight(Bits bits) {
+  const double none = bits(0), half = bits(8);
+  if (!(half < kShearMargin * none)) return 0;
+  const double three_quarters = bits(12);
+  if (!(three_quarters < half)) return 8;
+  return bits(16) < three_quarters ? 16 : 12;
+}
+
 }  // namespace
 
 // The predicted payload of `order` (with 14.7's twist where twist_pays:
@@ -682,7 +720,7 @@ bool triangle_twist_pays(const QuantizedPositions& positions, PredictionVisit* v
 std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions, const Mesh& faces,
                                              CandidateChoice choice, ClassStart start, PredictionOrder order,
                                              bool quad_twist, bool mask_contexts, bool triangle_twist,
-                                             bool mirror, bool near_mirror, PositionStats* stats) {
+                                             bool mirror, bool near_mirror, bool shear, PositionStats* stats) {
   const PositionStats before = *stats;  // the coder adds its counts to stats
   // The corners, and 14.6's order, built once for every payload tried.
   VertexCorners corners;
@@ -700,10 +738,26 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   MirrorPlane plane;
   const bool mirrored =
       order == PredictionOrder::kGeometry && mirror && find_mirror_plane(positions, &plane, near_mirror);
+  // 14.12: the weight of the shear that codes the first vertices smallest,
+  // if one does (method 11); every payload below then shears by it.
+  int k = 0;
+  if (shear && order == PredictionOrder::kGeometry && positions.q.size() / 3 >= kShearFrom && has_triangles(faces)) {
+    k = shear_weight([&](int weight) {
+      PositionStats prefix;
+      visit.shear(weight);
+      encode_visit(positions.q, top, visit, &prefix, choice, start, contexts, mirrored ? &plane : nullptr, nullptr,
+                   kShearPrefix);
+      double bits = 0;
+      for (const double b : prefix.bits_by_kind) bits += b;
+      return bits;
+    });
+    visit.shear(k);
+  }
   std::vector<uint8_t> best =
       predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, mirrored ? &plane : nullptr,
                         encode_visit(positions.q, top, visit, stats, choice, start, contexts,
-                                     mirrored ? &plane : nullptr));
+                                     mirrored ? &plane : nullptr),
+                        k);
   int method = twisted ? 5 : order == PredictionOrder::kGeometry ? 4 : start == ClassStart::kGraded ? 3 : 1;
   if (contexts) method += 2;
   if (triangles_twisted) method = 8;
@@ -711,8 +765,10 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   if (mirrored) method = plane.near_images ? 10 : 9;
   if (method == 10 && stats->pairs_beside == before.pairs_beside && !best.empty()) {
     // No vertex paired beside its image: every decision is method 9's, and
-    // only the selector differs (14.11); a file 1.12 decoders read.
-    best[selector_offset(positions)] = kMirrorSelector;
+    // only the selector differs (14.11); a file 1.12 decoders read. (With
+    // the shear, method 11's plane byte, 14.12.)
+    if (k == 0) best[selector_offset(positions)] = kMirrorSelector;
+    if (k > 0) best[selector_offset(positions) + 4] = 1;  // after selector, start, features and shear
     method = 9;
   } else if (method == 10 && positions.q.size() / 3 < kGradedStartBelow) {
     // Under 1,000 vertices method 9's payload too, the smaller kept (9 on a
@@ -723,7 +779,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     exact.near_images = false;
     std::vector<uint8_t> exact_payload =
         predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, &exact,
-                          encode_visit(positions.q, top, visit, &exact_stats, choice, start, contexts, &exact));
+                          encode_visit(positions.q, top, visit, &exact_stats, choice, start, contexts, &exact), k);
     if (!exact_payload.empty() && exact_payload.size() <= best.size()) {
       best = std::move(exact_payload);
       *stats = exact_stats;
@@ -739,7 +795,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     PositionStats plain_stats = before;
     std::vector<uint8_t> plain =
         predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, nullptr,
-                          encode_visit(positions.q, top, visit, &plain_stats, choice, start, contexts));
+                          encode_visit(positions.q, top, visit, &plain_stats, choice, start, contexts), k);
     if (!plain.empty() && plain.size() <= best.size()) {
       best = std::move(plain);
       *stats = plain_stats;
@@ -760,6 +816,11 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
       method = start == ClassStart::kGraded ? 3 : 1;
     }
   }
+  if (method == 9 || method == 10) stats->mirror = method - 8;
+  if (k > 0 && method >= 4) {  // methods 4 - 10 with the shear (14.12)
+    stats->shear = k;
+    method = 11;
+  }
   stats->method = method;
   stats->features = method >= 4 ? position_features(twisted, contexts, triangles_twisted) : 0;
   stats->graded_start = start == ClassStart::kGraded;
@@ -769,7 +830,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces, PositionMethod method,
                                       CandidateChoice choice, ClassStart start, PredictionOrder order,
                                       bool quad_twist, bool mask_contexts, bool triangle_twist, bool mirror,
-                                      bool near_mirror, PositionStats* stats) {
+                                      bool near_mirror, bool shear, PositionStats* stats) {
   *stats = PositionStats{};
   stats->step = positions.step;
   stats->top = positions.top;
@@ -782,7 +843,7 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const
   PositionStats predicted_stats = *stats;
   std::vector<uint8_t> predicted =
       encode_predicted_choice(positions, faces, choice, start, order, quad_twist, mask_contexts, triangle_twist,
-                              mirror, near_mirror, &predicted_stats);
+                              mirror, near_mirror, shear, &predicted_stats);
   if (predicted.empty()) {
     // Only vertices that all coincide cost so little (section 14.1); on
     // one point method 0's per-axis grid gives the same positions.

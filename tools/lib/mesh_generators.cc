@@ -517,6 +517,23 @@ Mesh make_refined_sphere(int levels) {
   return mesh;
 }
 
+Mesh make_jittered_sphere(int levels, float jitter, uint64_t seed) {
+  Mesh sphere = triangulated(make_refined_sphere(levels));
+  double length = 0;
+  for (size_t k = 0; k < sphere.corners.size(); ++k) {
+    const float* p = &sphere.positions[3 * size_t(sphere.corners[k])];
+    const float* q = &sphere.positions[3 * size_t(sphere.corners[k % 3 == 2 ? k - 2 : k + 1])];
+    length += std::sqrt(double((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                               (p[2] - q[2]) * (p[2] - q[2])));
+  }
+  const float amount = jitter * float(length / double(std::max<size_t>(sphere.corners.size(), 1)));
+  SplitMix64 rng(seed);
+  for (size_t v = 0; v < sphere.vertex_count(); ++v)
+    for (int a = 0; a < 3; ++a) sphere.positions[3 * v + a] += amount * (float(rng.below(2001)) / 1000.f - 1.f);
+  project_to_unit_sphere(&sphere);
+  return sphere;
+}
+
 Mesh make_random_soup(uint64_t seed, const RandomSoupOptions& options) {
   SplitMix64 rng(seed);
   Mesh mesh;

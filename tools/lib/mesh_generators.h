@@ -65,6 +65,12 @@ qmc::Mesh make_deltoidal_hexecontahedron();
 // 983040). levels is clamped to [0, 10].
 qmc::Mesh make_refined_sphere(int levels);
 
+// make_refined_sphere(levels) cut into triangles, each vertex then moved by
+// up to `jitter` times the mean edge length along each axis and put back on
+// the unit sphere: an irregular triangulation, where a parallelogram's
+// reflection overshoots along its edge (POSN method 11, spec 14.12).
+qmc::Mesh make_jittered_sphere(int levels, float jitter, uint64_t seed);
+
 // n-sided prism: n quads around, two n-gon caps; 2n vertices, outward.
 // n < 3 is treated as 3.
 qmc::Mesh make_prism(int n);
