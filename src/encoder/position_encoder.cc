@@ -303,42 +303,94 @@ bool code_mirror_choice(MeteredRangeEncoder* rc, PositionResidualModel* model, c
   return used;
 }
 
+// 14.12: the shear is weighed on meshes of this many vertices or more (on
+// the corpus it pays on none under 1,000: cathead's POSN 2 bytes smaller at
+// best, for more passes than its whole encode), over the first kShearPrefix
+// vertices of the order, where a weight must save kShearMargin of their
+// bits (512 vertices choose as 1,024 do on the corpus at 12 and 16 bits,
+// 256 miss lilium's and fertility's weights at 16). The corpus's triangle
+// meshes at 12 bits, the weight written and POSN against method 10 or
+// below: cow 12 (4.6 % smaller), lilium 8 (3.4 %), bunny_small 8, fertility
+// 8, armadillo 16 (1.6 - 1.9 %); stanford-bunny, face, beetle and camelhead
+// lose with any weight and stay as they were.
+constexpr uint32_t kShearFrom = 1000, kShearPrefix = 512;
+constexpr double kShearMargin = 0.995;
+
 // 14.2 - 14.4 over a visit built for q's vertices (its order, guide and
-// twist set), with 14.8's mask contexts or not, with 14.10's mirror
-// candidate where a plane is given, with 15.14's twin candidate where twins are.
-std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t top[3], const PredictionVisit& visit,
+// twist set; 14.12's shear its own), with 14.8's mask contexts or not, with
+// 14.10's mirror candidate where a plane is given, with 15.14's twin
+// candidate where twins are; coded as far as asked, so that the encoder can
+// code the first vertices of a visit in several ways and carry on with the
+// one it keeps. Its statistics start from `stats`.
+class VisitCoder {
+ public:
+  VisitCoder(const std::vector<uint32_t>& q, const uint32_t top[3], PredictionVisit* visit, const PositionStats& stats,
+             CandidateChoice choice, ClassStart start, bool mask_contexts, const MirrorPlane* mirror,
+             const AttributeTwins* twins, int shear)
+      : q_(q), top_(top), visit_(visit), stats_(stats), choice_(choice), shear_(shear),
+        activity_(q.size() / 3), model_(top, start, mask_contexts) {
+    if (mirror) mirrors_.reset(images_ = new MirrorCandidates(visit->mesh(), *mirror, top));
+    if (twins) mirrors_ = std::make_unique<ValueTwins>(visit->mesh(), *twins, top);
+  }
+
+  // Codes the vertices up to the limit-th of the visit (all if it has fewer).
+  void code(uint32_t limit) {
+    visit_->shear(shear_);
+    for (const uint32_t n = std::min(uint32_t(q_.size() / 3), limit); next_ < n; ++next_) code_vertex(next_);
+  }
+  // The information content coded so far.
+  double bits() const { return rc_.meter.bits; }
+  int shear() const { return shear_; }
+  // Codes the rest; the stream, and the statistics of the whole visit.
+  std::vector<uint8_t> finish(PositionStats* stats) {
+    code(UINT32_MAX);
+    if (images_) stats_.pairs_beside += images_->pairs_beside();
+    if (stats) *stats = stats_;
+    return rc_.rc.finish();
+  }
+
+ private:
+  void code_vertex(uint32_t i) {
+    const uint32_t v = visit_->item(i);
+    visit_->predict(i, q_.data(), activity_.data(), top_, &p_);
+    twist_weight_.apply(&p_);
+    const double before = rc_.meter.bits;
+    unsigned mask = 0;
+    const bool mirrored =
+        mirrors_ && code_mirror_choice(&rc_, &model_, *mirrors_, v, q_, top_, choice_, &p_, &mask);
+    if (!mirrors_) mask = best_candidates(&q_[3 * size_t(v)], top_, &model_, choice_, mask_context(model_, p_), &p_);
+    if (!mirrored) code_candidate_mask(&rc_, &model_, p_.candidates, mask, mask_context(model_, p_));
+    activity_[v] = code_residuals(&rc_, &model_, p_, &q_[3 * size_t(v)]);
+    if (!mirrored) twist_weight_.learn(p_, &q_[3 * size_t(v)]);
+    if (mirrors_) mirrors_->decoded(v, q_.data());
+    ++stats_.vertices_by_kind[int(p_.kind)];
+    stats_.bits_by_kind[int(p_.kind)] += rc_.meter.bits - before;
+  }
+
+  const std::vector<uint32_t>& q_;
+  const uint32_t* top_;
+  PredictionVisit* visit_;
+  PositionStats stats_;
+  CandidateChoice choice_;
+  int shear_;
+  uint32_t next_ = 0;
+  std::vector<uint32_t> activity_;
+  PositionResidualModel model_;
+  MeteredRangeEncoder rc_;
+  VertexPrediction p_;
+  TriangleTwistWeight twist_weight_;  // 14.9: no correction without the triangle twist
+  std::unique_ptr<MirrorSource> mirrors_;
+  MirrorCandidates* images_ = nullptr;
+};
+
+// A whole visit, coded at once (VisitCoder); stats (may be null) gain its counts.
+std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t top[3], PredictionVisit& visit,
                                   PositionStats* stats, CandidateChoice choice, ClassStart start,
                                   bool mask_contexts = false, const MirrorPlane* mirror = nullptr,
-                                  const AttributeTwins* twins = nullptr, uint32_t limit = UINT32_MAX) {
-  const uint32_t n = uint32_t(q.size() / 3);
-  std::vector<uint32_t> activity(n);
-  std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start, mask_contexts));
-  MeteredRangeEncoder rc;
-  PositionStats local;
-  PositionStats& st = stats ? *stats : local;
-  VertexPrediction p;
-  TriangleTwistWeight twist_weight;  // 14.9: no correction without the triangle twist
-  std::unique_ptr<MirrorSource> mirrors;
-  MirrorCandidates* images = nullptr;
-  if (mirror) mirrors.reset(images = new MirrorCandidates(visit.mesh(), *mirror, top));
-  if (twins) mirrors = std::make_unique<ValueTwins>(visit.mesh(), *twins, top);
-  for (uint32_t i = 0; i < std::min(n, limit); ++i) {
-    const uint32_t v = visit.item(i);
-    visit.predict(i, q.data(), activity.data(), top, &p);
-    twist_weight.apply(&p);
-    const double before = rc.meter.bits;
-    unsigned mask = 0;
-    const bool mirrored = mirrors && code_mirror_choice(&rc, &model[0], *mirrors, v, q, top, choice, &p, &mask);
-    if (!mirrors) mask = best_candidates(&q[3 * size_t(v)], top, &model[0], choice, mask_context(model[0], p), &p);
-    if (!mirrored) code_candidate_mask(&rc, &model[0], p.candidates, mask, mask_context(model[0], p));
-    activity[v] = code_residuals(&rc, &model[0], p, &q[3 * size_t(v)]);
-    if (!mirrored) twist_weight.learn(p, &q[3 * size_t(v)]);
-    if (mirrors) mirrors->decoded(v, q.data());
-    ++st.vertices_by_kind[int(p.kind)];
-    st.bits_by_kind[int(p.kind)] += rc.meter.bits - before;
-  }
-  if (images) st.pairs_beside += images->pairs_beside();
-  return rc.rc.finish();
+                                  const AttributeTwins* twins = nullptr) {
+  VisitCoder coder(q, top, &visit, stats ? *stats : PositionStats{}, choice, start, mask_contexts, mirror, twins,
+                   visit.shear());
+  return coder.finish(stats);
 }
 
 // 14.1: where the selector is in a predicted POSN payload (after vertex_count).
@@ -685,24 +737,13 @@ bool triangle_twist_pays(const QuantizedPositions& positions, PredictionVisit* v
 }
 
 
-// 14.12: the shear is weighed on meshes of this many vertices or more (on
-// the corpus it pays on none under 1,000: cathead's POSN 2 bytes smaller at
-// best, for more passes than its whole encode), over the first kShearPrefix
-// vertices of the order, where a weight must save kShearMargin of their
-// bits. The corpus's triangle meshes at 12 bits, the weight written and
-// POSN against method 10 or below: cow 12 (4.6 % smaller), lilium 8 (3.4 %),
-// bunny_small 8, fertility 8, armadillo 16 (1.6 - 1.9 %); stanford-bunny,
-// face, beetle and camelhead lose with any weight and stay as they were.
-constexpr uint32_t kShearFrom = 1000, kShearPrefix = 1024;
-constexpr double kShearMargin = 0.995;
-
 // The weight k of 14.12's shear for which bits(k), the cost of coding some
 // vertices with it, is smallest of 8, 12 and 16, or 0 if 8 does not save
-// kShearMargin of bits(0): 12 is tried if 8 saves, 16 if 12 saves more
-// (smaller weights never coded the corpus smallest).
+// kShearMargin of `none`, their cost without it: 12 is tried if 8 saves, 16
+// if 12 saves more (smaller weights never coded the corpus smallest).
 template <class Bits>
-int shear_weight(Bits bits) {
-  const double none = bits(0), half = bits(8);
+int shear_weight(double none, Bits bits) {
+  const double half = bits(8);
   if (!(half < kShearMargin * none)) return 0;
   const double three_quarters = bits(12);
   if (!(three_quarters < half)) return 8;
@@ -738,26 +779,27 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   MirrorPlane plane;
   const bool mirrored =
       order == PredictionOrder::kGeometry && mirror && find_mirror_plane(positions, &plane, near_mirror);
-  // 14.12: the weight of the shear that codes the first vertices smallest,
-  // if one does (method 11); every payload below then shears by it.
+  const MirrorPlane* const planed = mirrored ? &plane : nullptr;
+  // 14.12: the first kShearPrefix vertices coded without the shear and with
+  // the weights shear_weight tries; the coder of the weight that codes them
+  // smallest, if one does (method 11), carries on to the end.
+  std::vector<VisitCoder> coders;
+  coders.reserve(4);  // at most 0, 8, 12 and 16
+  const auto coded_head = [&](int weight) {
+    coders.emplace_back(positions.q, top, &visit, *stats, choice, start, contexts, planed, nullptr, weight);
+    coders.back().code(kShearPrefix);
+    return coders.back().bits();
+  };
   int k = 0;
-  if (shear && order == PredictionOrder::kGeometry && positions.q.size() / 3 >= kShearFrom && has_triangles(faces)) {
-    k = shear_weight([&](int weight) {
-      PositionStats prefix;
-      visit.shear(weight);
-      encode_visit(positions.q, top, visit, &prefix, choice, start, contexts, mirrored ? &plane : nullptr, nullptr,
-                   kShearPrefix);
-      double bits = 0;
-      for (const double b : prefix.bits_by_kind) bits += b;
-      return bits;
-    });
-    visit.shear(k);
-  }
+  if (shear && order == PredictionOrder::kGeometry && positions.q.size() / 3 >= kShearFrom && has_triangles(faces))
+    k = shear_weight(coded_head(0), coded_head);
+  else
+    coders.emplace_back(positions.q, top, &visit, *stats, choice, start, contexts, planed, nullptr, 0);
+  VisitCoder& kept = *std::find_if(coders.begin(), coders.end(), [&](const VisitCoder& c) { return c.shear() == k; });
   std::vector<uint8_t> best =
-      predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, mirrored ? &plane : nullptr,
-                        encode_visit(positions.q, top, visit, stats, choice, start, contexts,
-                                     mirrored ? &plane : nullptr),
-                        k);
+      predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, planed, kept.finish(stats), k);
+  coders.clear();
+  visit.shear(k);  // the payloads below (none from kShearFrom vertices on) as this one
   int method = twisted ? 5 : order == PredictionOrder::kGeometry ? 4 : start == ClassStart::kGraded ? 3 : 1;
   if (contexts) method += 2;
   if (triangles_twisted) method = 8;
@@ -806,7 +848,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   // twins pay (the label order has none: on the corpus it never won then).
   if (order == PredictionOrder::kGeometry && positions.q.size() / 3 < kGradedStartBelow && method < 9) {
     PositionStats label_stats = before;
-    const PredictionVisit labels_visit(corners, PredictionOrder::kLabels);
+    PredictionVisit labels_visit(corners, PredictionOrder::kLabels);
     std::vector<uint8_t> labels =
         predicted_payload(positions, start, PredictionOrder::kLabels, false, false, false, nullptr,
                           encode_visit(positions.q, top, labels_visit, &label_stats, choice, start));
