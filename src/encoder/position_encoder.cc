@@ -750,6 +750,28 @@ int shear_weight(double none, Bits bits) {
   return bits(16) < three_quarters ? 16 : 12;
 }
 
+// 14.12: the stream of the visit with the weight *k of the shear that
+// codes its first kShearPrefix vertices smallest (0: none, or not weighed):
+// each weight shear_weight tries is coded that far, and the coder of the
+// best carries on to the end. stats gain the visit's counts.
+std::vector<uint8_t> code_weighing_shear(const QuantizedPositions& positions, PredictionVisit* visit, bool weigh,
+                                         PositionStats* stats, CandidateChoice choice, ClassStart start,
+                                         bool contexts, const MirrorPlane* plane, int* k) {
+  std::vector<VisitCoder> coders;
+  coders.reserve(4);  // at most 0, 8, 12 and 16
+  const auto coded_head = [&](int weight) {
+    coders.emplace_back(positions.q, positions.top.data(), visit, *stats, choice, start, contexts, plane, nullptr,
+                        weight);
+    coders.back().code(kShearPrefix);
+    return coders.back().bits();
+  };
+  *k = weigh ? shear_weight(coded_head(0), coded_head) : 0;
+  if (!weigh) coders.emplace_back(positions.q, positions.top.data(), visit, *stats, choice, start, contexts, plane,
+                                  nullptr, 0);
+  return std::find_if(coders.begin(), coders.end(), [&](const VisitCoder& c) { return c.shear() == *k; })
+      ->finish(stats);
+}
+
 }  // namespace
 
 // The predicted payload of `order` (with 14.7's twist where twist_pays:
@@ -780,25 +802,13 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   const bool mirrored =
       order == PredictionOrder::kGeometry && mirror && find_mirror_plane(positions, &plane, near_mirror);
   const MirrorPlane* const planed = mirrored ? &plane : nullptr;
-  // 14.12: the first kShearPrefix vertices coded without the shear and with
-  // the weights shear_weight tries; the coder of the weight that codes them
-  // smallest, if one does (method 11), carries on to the end.
-  std::vector<VisitCoder> coders;
-  coders.reserve(4);  // at most 0, 8, 12 and 16
-  const auto coded_head = [&](int weight) {
-    coders.emplace_back(positions.q, top, &visit, *stats, choice, start, contexts, planed, nullptr, weight);
-    coders.back().code(kShearPrefix);
-    return coders.back().bits();
-  };
+  const bool weigh_shear =
+      shear && order == PredictionOrder::kGeometry && positions.q.size() / 3 >= kShearFrom && has_triangles(faces);
   int k = 0;
-  if (shear && order == PredictionOrder::kGeometry && positions.q.size() / 3 >= kShearFrom && has_triangles(faces))
-    k = shear_weight(coded_head(0), coded_head);
-  else
-    coders.emplace_back(positions.q, top, &visit, *stats, choice, start, contexts, planed, nullptr, 0);
-  VisitCoder& kept = *std::find_if(coders.begin(), coders.end(), [&](const VisitCoder& c) { return c.shear() == k; });
+  const std::vector<uint8_t> stream =
+      code_weighing_shear(positions, &visit, weigh_shear, stats, choice, start, contexts, planed, &k);
   std::vector<uint8_t> best =
-      predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, planed, kept.finish(stats), k);
-  coders.clear();
+      predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, planed, stream, k);
   visit.shear(k);  // the payloads below (none from kShearFrom vertices on) as this one
   int method = twisted ? 5 : order == PredictionOrder::kGeometry ? 4 : start == ClassStart::kGraded ? 3 : 1;
   if (contexts) method += 2;
