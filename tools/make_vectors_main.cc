@@ -55,7 +55,7 @@ namespace {
 // where they predict positions (format 1.7's method 3 and 1.8's method 4
 // came later); they stay so.
 // POSN method 11 (14.12) came after every vector but the posn11 ones, which
-// encode through encode_sheared: the others keep the encoder's choices of before.
+// ask encode_posn_method for it: the others keep the encoder's choices of before.
 qmc::EncodeOptions without_shear(qmc::EncodeOptions options) {
   options.shear = false;
   return options;
@@ -1459,7 +1459,8 @@ qmc::EncodeOptions on_unit_grid(qmc::EncodeOptions options) {
 std::vector<uint8_t> encode_posn_method(const Mesh& mesh, const qmc::EncodeOptions& options, int method) {
   std::vector<uint8_t> out;
   qmc::EncodeStats stats;
-  if (qmc::Status s = qmc::encode(mesh, without_shear(options), &out, &stats); !s.ok() || stats.positions.method != method) {
+  if (qmc::Status s = qmc::encode(mesh, method == 11 ? options : without_shear(options), &out, &stats);
+      !s.ok() || stats.positions.method != method) {
     std::fprintf(stderr, "qmc-make-vectors: POSN method %d: %s\n", method, s.to_string().c_str());
     std::exit(3);
   }
@@ -3708,18 +3709,6 @@ Mesh shear_example_without_edge() {
   return m;
 }
 
-// What `qmc encode` writes with options, which must be POSN method 11.
-std::vector<uint8_t> encode_sheared(const Mesh& mesh, const qmc::EncodeOptions& options) {
-  std::vector<uint8_t> out;
-  qmc::EncodeStats stats;
-  if (qmc::Status s = qmc::encode(mesh, options, &out, &stats); !s.ok() || stats.positions.method != 11) {
-    std::fprintf(stderr, "qmc-make-vectors: POSN method 11: %s, method %d\n", s.to_string().c_str(),
-                 stats.positions.method);
-    std::exit(3);
-  }
-  return out;
-}
-
 void write_posn11_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   qmc::EncodeOptions options;  // what `qmc encode` writes
@@ -3771,15 +3760,15 @@ void write_posn11_vectors(VectorWriter* w) {
   // What the encoder writes on an irregular triangulation, at 12 and 16 bits.
   const Mesh sphere = qmc::tools::make_jittered_sphere(3, 0.3f, 11);
   options.position_bits = 12;
-  const std::vector<uint8_t> file = encode_sheared(sphere, options);
+  const std::vector<uint8_t> file = encode_posn_method(sphere, options, 11);
   w->valid("valid_posn11_irregular_sphere_12_bits", file, &sphere);
   qmc::EncodeOptions sixteen = options;
   sixteen.position_bits = 16;
-  w->valid("valid_posn11_irregular_sphere_16_bits", encode_sheared(sphere, sixteen), &sphere);
+  w->valid("valid_posn11_irregular_sphere_16_bits", encode_posn_method(sphere, sixteen, 11), &sphere);
   // Texture coordinates over method 11's positions: their values take no shear (15.4).
   Mesh textured = sphere;
   qmc::tools::add_chart_texcoords(&textured);
-  w->valid("valid_posn11_with_texcoords", encode_sheared(textured, options), &textured);
+  w->valid("valid_posn11_with_texcoords", encode_posn_method(textured, options, 11), &textured);
 
   // 14.1's checks of method 11's two bytes, and 14.4's end of stream.
   const ChunkReplacer with_posn(file, qmc::kChunkPositions);

@@ -819,8 +819,10 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     // No vertex paired beside its image: every decision is method 9's, and
     // only the selector differs (14.11); a file 1.12 decoders read. (With
     // the shear, method 11's plane byte, 14.12.)
-    if (k == 0) best[selector_offset(positions)] = kMirrorSelector;
-    if (k > 0) best[selector_offset(positions) + 4] = 1;  // after selector, start, features and shear
+    if (k == 0)
+      best[selector_offset(positions)] = kMirrorSelector;
+    else
+      best[selector_offset(positions) + 4] = 1;  // the plane byte, after selector, start, features and shear
     method = 9;
   } else if (method == 10 && positions.q.size() / 3 < kGradedStartBelow) {
     // Under 1,000 vertices method 9's payload too, the smaller kept (9 on a
