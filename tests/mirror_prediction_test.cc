@@ -10,6 +10,7 @@
 #include "bitio/mirror_prediction.h"
 #include "bitio/vertex_prediction.h"
 #include "decoder/position_decoder.h"
+#include "encoder/occupied_blocks.h"
 #include "encoder/position_encoder.h"
 #include "mesh_generators.h"
 #include "qmc/decoder.h"
@@ -124,6 +125,20 @@ TEST(MirrorCandidate, EncoderWritesMethodNineOnMirroredMeshes) {
   EXPECT_LT(dc.quantization.method, 9);
 }
 
+// A linear congruential generator (Knuth's MMIX constants), so that the
+// tests' points are the same on every platform.
+class Lcg {
+ public:
+  explicit Lcg(uint64_t seed) : state_(seed) {}
+  uint32_t below(uint32_t bound) {
+    state_ = state_ * 6364136223846793005ull + 1442695040888963407ull;
+    return uint32_t((state_ >> 33) % bound);
+  }
+
+ private:
+  uint64_t state_;
+};
+
 // Points paired across x = 1500 / 2 (sum 1500) and a third as many unpaired
 // beyond the pairs up to x = 4095, so the plane is far from the middle of
 // the box (sum 4095): the search finds it from the pairs' sums, with every
@@ -131,11 +146,8 @@ TEST(MirrorCandidate, EncoderWritesMethodNineOnMirroredMeshes) {
 QuantizedPositions lopsided_mirror_grid(uint32_t pairs) {
   QuantizedPositions grid;
   grid.top = {4095, 4095, 4095};
-  uint64_t state = 12345;
-  const auto next = [&](uint32_t bound) {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    return uint32_t((state >> 33) % bound);
-  };
+  Lcg random(12345);
+  const auto next = [&](uint32_t bound) { return random.below(bound); };
   for (uint32_t i = 0; i < pairs; ++i) {
     const uint32_t x = next(700), y = next(4096), z = next(4096);
     grid.q.insert(grid.q.end(), {x, y, z, 1500 - x, y, z});
@@ -153,6 +165,68 @@ TEST(MirrorCandidate, SearchFindsAPlaneAwayFromTheMiddleOfTheBox) {
     EXPECT_EQ(plane.axis, 0);
     EXPECT_EQ(plane.sum, 1500u);
   }
+}
+
+// 2,000 points paired across x = 4095 / 2 (sum 4095), each image moved on
+// all three axes: by -1, 0 or 1 on each (near = true; exactly at its
+// partner 1 time in 27), or by -2 or 2 on each (near = false: never within
+// a step). The search's second pass (from 1,000 vertices on) counts a
+// vertex within a step of the image on every axis, diagonal steps and steps
+// across its blocks of 4 points included, and nothing further.
+QuantizedPositions pairs_apart(bool near) {
+  QuantizedPositions grid;
+  grid.top = {4095, 4095, 4095};
+  Lcg random(777);
+  const auto next = [&](uint32_t bound) { return random.below(bound); };
+  const auto offset = [&] { return near ? int(next(3)) - 1 : 4 * int(next(2)) - 2; };
+  for (int i = 0; i < 1000; ++i) {
+    const int x = 10 + int(next(1900)), y = 10 + int(next(4000)), z = 10 + int(next(4000));
+    const int dx = offset(), dy = offset(), dz = offset();
+    for (const int value : {x, y, z, 4095 - x + dx, y + dy, z + dz}) grid.q.push_back(uint32_t(value));
+  }
+  return grid;
+}
+
+// OccupiedBlocks against a look at each of the 27 points: points of a
+// 13-point cube (blocks of 4 cut it at 4, 8 and 12), every point of the
+// cube and one beyond asked, 0 included (nothing lies below it).
+TEST(MirrorCandidate, OccupiedBlocksFindWhatTheTwentySevenPointsHold) {
+  Lcg random(99);
+  for (int round = 0; round < 20; ++round) {
+    std::vector<uint32_t> q;
+    std::vector<bool> held(14 * 14 * 14, false);
+    for (int i = 0; i < 1 + round * 5; ++i) {
+      uint32_t p[3];
+      for (uint32_t& c : p) c = random.below(13);
+      q.insert(q.end(), p, p + 3);
+      held[p[0] + 14 * (p[1] + 14 * p[2])] = true;
+    }
+    const OccupiedBlocks blocks(q);
+    for (int x = 0; x <= 13; ++x)
+      for (int y = 0; y <= 13; ++y)
+        for (int z = 0; z <= 13; ++z) {
+          bool expected = false;
+          for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy)
+              for (int dz = -1; dz <= 1; ++dz) {
+                const int a = x + dx, b = y + dy, c = z + dz;
+                if (a >= 0 && b >= 0 && c >= 0 && a < 14 && b < 14 && c < 14 && held[a + 14 * (b + 14 * c)])
+                  expected = true;
+              }
+          const uint32_t point[3] = {uint32_t(x), uint32_t(y), uint32_t(z)};
+          ASSERT_EQ(blocks.near(point), expected) << "round " << round << " at " << x << " " << y << " " << z;
+        }
+  }
+}
+
+TEST(MirrorCandidate, SearchCountsImagesAStepAwayOnEveryAxis) {
+  MirrorPlane plane;
+  EXPECT_FALSE(find_mirror_plane(pairs_apart(true), &plane, false));  // 1 in 27 exact: too few
+  ASSERT_TRUE(find_mirror_plane(pairs_apart(true), &plane, true));
+  EXPECT_EQ(plane.axis, 0);
+  EXPECT_TRUE(plane.near_images);
+  EXPECT_EQ(plane.sum, 4095u);
+  EXPECT_FALSE(find_mirror_plane(pairs_apart(false), &plane, true));
 }
 
 // Method 10 (14.11): a lumpy sphere mirrored across x (its lumps break the

@@ -19,6 +19,7 @@
 #include "bitio/position_coding.h"
 #include "bitio/range_coder.h"
 #include "bitio/vertex_prediction.h"
+#include "encoder/occupied_blocks.h"
 #include "encoder/residual_costs.h"
 
 namespace qmc {
@@ -544,23 +545,6 @@ std::vector<uint32_t> candidate_sums(const QuantizedPositions& positions, int ax
   return sums;
 }
 
-// For the plane search's second pass: a vertex at `image` or at any of the
-// 26 points around it (the halves of a scanned mesh, quantized, are often a
-// step apart on any axis; method 10's twins then are the ones a step
-// beside the image along the axis, 14.11).
-uint32_t near_vertex(const GridPointTable& points, const uint32_t image[3]) {
-  uint32_t vertex = points.find(image);
-  for (int dx = -1; dx <= 1 && vertex == GridPointTable::kNone; ++dx)
-    for (int dy = -1; dy <= 1 && vertex == GridPointTable::kNone; ++dy)
-      for (int dz = -1; dz <= 1 && vertex == GridPointTable::kNone; ++dz) {
-        // below 0 wraps above 2^31: no vertex is there
-        const uint32_t point[3] = {uint32_t(int64_t(image[0]) + dx), uint32_t(int64_t(image[1]) + dy),
-                                   uint32_t(int64_t(image[2]) + dz)};
-        vertex = points.find(point);
-      }
-  return vertex;
-}
-
 }  // namespace
 
 bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, bool near) {
@@ -568,11 +552,15 @@ bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, 
   if (n < 16) return false;
   GridPointTable points(n);
   for (uint32_t v = 0; v < n; ++v) points.insert(&positions.q[3 * size_t(v)], v);
-  bool near_hits = false;  // the second pass: a vertex within a step of the image counts too
+  // The second pass: a vertex within a step of the image on every axis
+  // counts too (the halves of a scanned mesh, quantized, are often a step
+  // apart on any axis; method 10's twins then are the ones a step beside the
+  // image along the axis, 14.11).
+  bool near_hits = false;
+  std::unique_ptr<OccupiedBlocks> occupied;
   // Of every stride-th vertex, how many have a vertex at their image (in
   // the second pass, near it), counting no further than `enough`.
-  const auto hits = [&](MirrorPlane candidate, uint32_t stride,
-                        uint32_t enough = std::numeric_limits<uint32_t>::max()) {
+  const auto count_images = [&](MirrorPlane candidate, uint32_t stride, uint32_t enough, auto found) {
     uint32_t count = 0;
     for (uint32_t v = 0; v < n && count < enough; v += stride) {
       uint32_t image[3];
@@ -580,9 +568,16 @@ bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, 
       const int64_t m = int64_t(candidate.sum) - int64_t(image[candidate.axis]);
       if (m < 0 || m > int64_t(positions.top[size_t(candidate.axis)])) continue;
       image[candidate.axis] = uint32_t(m);
-      count += (near_hits ? near_vertex(points, image) : points.find(image)) != GridPointTable::kNone;
+      count += found(image);
     }
     return count;
+  };
+  const auto hits = [&](MirrorPlane candidate, uint32_t stride,
+                        uint32_t enough = std::numeric_limits<uint32_t>::max()) {
+    if (near_hits)
+      return count_images(candidate, stride, enough, [&](const uint32_t* image) { return occupied->near(image); });
+    return count_images(candidate, stride, enough,
+                        [&](const uint32_t* image) { return points.find(image) != GridPointTable::kNone; });
   };
   const uint32_t sample_stride = std::max<uint32_t>(1, n / kMirrorSample);
   // Under kGradedStartBelow vertices the encoder codes the positions without
@@ -590,12 +585,13 @@ bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, 
   const uint32_t divisor = n < kGradedStartBelow ? 2 * kMirroredShareDivisor : kMirroredShareDivisor;
   // The second pass (method 10) from kGradedStartBelow vertices on: it
   // finds the planes of scanned halves (camelhead at 16 bits), which small
-  // meshes, modelled, rarely have, and costs 27 look-ups a vertex screened.
-  // It screens a quarter as many vertices.
+  // meshes, modelled, rarely have, and costs up to 8 look-ups (of blocks) a
+  // vertex screened. It screens a quarter as many vertices.
   std::vector<uint32_t> sums[3];
   for (int axis = 0; axis < 3; ++axis) sums[axis] = candidate_sums(positions, axis);
   for (int pass = 0; pass < (near && n >= kGradedStartBelow ? 2 : 1); ++pass) {
     near_hits = pass == 1;
+    if (near_hits) occupied = std::make_unique<OccupiedBlocks>(positions.q);
     const uint32_t screen_stride = std::max<uint32_t>(1, n / (near_hits ? kMirrorScreen / 4 : kMirrorScreen));
     const uint32_t screened = (n + screen_stride - 1) / screen_stride;
     uint32_t best = 0;
