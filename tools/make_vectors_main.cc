@@ -3605,6 +3605,23 @@ void write_levl4_vectors(VectorWriter* w) {
   w->invalid("invalid_levl4_edges_unjustified", join_chunks(e), ErrorCode::kLimitExceeded);
 }
 
+// What the encoder writes with POSN `method` on `mesh` at options' bits and
+// at 16 bits, and on `textured` (the mesh with texture coordinates) at
+// options' bits: valid_FAMILY_SHAPE_B_bits, valid_FAMILY_SHAPE_16_bits and
+// valid_FAMILY_with_texcoords, in that order. Returns the first file.
+std::vector<uint8_t> write_encoder_files(VectorWriter* w, const std::string& family, const std::string& shape,
+                                         const Mesh& mesh, const Mesh& textured, const qmc::EncodeOptions& options,
+                                         int method) {
+  const std::vector<uint8_t> file = encode_posn_method(mesh, options, method);
+  const std::string prefix = "valid_" + family + "_";
+  w->valid(prefix + shape + "_" + std::to_string(options.position_bits) + "_bits", file, &mesh);
+  qmc::EncodeOptions sixteen = options;
+  sixteen.position_bits = 16;
+  w->valid(prefix + shape + "_16_bits", encode_posn_method(mesh, sixteen, method), &mesh);
+  w->valid(prefix + "with_texcoords", encode_posn_method(textured, options, method), &textured);
+  return file;
+}
+
 void write_posn10_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   qmc::EncodeOptions options;  // what `qmc encode` writes
@@ -3619,14 +3636,9 @@ void write_posn10_vectors(VectorWriter* w) {
   // coordinates (aTTR coding 9 over method 10's positions).
   const Mesh sphere = lumpy_mirrored_sphere(3);
   options.position_bits = 14;
-  const std::vector<uint8_t> file = encode_posn_method(sphere, options, 10);
-  w->valid("valid_posn10_sphere_14_bits", file, &sphere);
-  qmc::EncodeOptions sixteen = options;
-  sixteen.position_bits = 16;
-  w->valid("valid_posn10_sphere_16_bits", encode_posn_method(sphere, sixteen, 10), &sphere);
   Mesh textured = sphere;
   qmc::tools::add_mirrored_texcoords(&textured, 16, 9);
-  w->valid("valid_posn10_with_texcoords", encode_posn_method(textured, options, 10), &textured);
+  const std::vector<uint8_t> file = write_encoder_files(w, "posn10", "sphere", sphere, textured, options, 10);
 
   // 14.1's checks of the plane on method 10's path, and 14.4's.
   const ChunkReplacer with_posn(file, qmc::kChunkPositions);
@@ -3760,15 +3772,11 @@ void write_posn11_vectors(VectorWriter* w) {
   // What the encoder writes on an irregular triangulation, at 12 and 16 bits.
   const Mesh sphere = qmc::tools::make_jittered_sphere(3, 0.3f, 11);
   options.position_bits = 12;
-  const std::vector<uint8_t> file = encode_posn_method(sphere, options, 11);
-  w->valid("valid_posn11_irregular_sphere_12_bits", file, &sphere);
-  qmc::EncodeOptions sixteen = options;
-  sixteen.position_bits = 16;
-  w->valid("valid_posn11_irregular_sphere_16_bits", encode_posn_method(sphere, sixteen, 11), &sphere);
   // Texture coordinates over method 11's positions: their values take no shear (15.4).
   Mesh textured = sphere;
   qmc::tools::add_chart_texcoords(&textured);
-  w->valid("valid_posn11_with_texcoords", encode_posn_method(textured, options, 11), &textured);
+  const std::vector<uint8_t> file =
+      write_encoder_files(w, "posn11", "irregular_sphere", sphere, textured, options, 11);
 
   // 14.1's checks of method 11's two bytes, and 14.4's end of stream.
   const ChunkReplacer with_posn(file, qmc::kChunkPositions);

@@ -27,8 +27,8 @@ Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadCh
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (14.1)
 // Methods 4 - 11 (14.1, 14.6 - 14.12), 0x84 .. 0x8B, all with the start
 // byte; methods 8 - 11 with the features byte of 14.9 after it, method 11
-// with its shear and plane bytes after that (14.12), methods 9 and 10 and
-// method 11 with a plane with 14.10's plane last.
+// with its shear and plane bytes after that (14.12); methods 9, 10 and 11
+// with a plane end with 14.10's plane.
 constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x8B;
 constexpr uint8_t kFeaturesSelector = 0x88, kMirrorSelector = 0x89, kNearMirrorSelector = 0x8A;
 constexpr uint8_t kShearSelector = 0x8B;
