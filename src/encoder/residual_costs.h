@@ -43,8 +43,9 @@ class CostMeter {
 // What code_position_residual would cost each residual of one vertex whose
 // prediction uses a candidate (14.4's third group), under probabilities that
 // do not change while 14.5 compares the vertex's masks: the class decisions
-// of each (bucket, axis) are added up once, on first use, so that a residual
-// costs a few lookups instead of one per class decision.
+// of a bucket are added up once, on first use and only as far as a class
+// asks, so that a residual costs a few lookups instead of one per class
+// decision.
 class ResidualCosts {
  public:
   explicit ResidualCosts(const PositionResidualModel& model) : m_(model) {}
@@ -55,7 +56,7 @@ class ResidualCosts {
     const int bucket = position_bucket(p.neighbour_activity + p.scale / 8, magnitude, axis);
     const uint32_t value = magnitude[axis];
     const int c = bit_length(value);
-    double bits = classes(bucket, axis)[c];
+    double bits = class_bits(bucket, c, m_.max_class[axis]);
     if (c == 0) return bits;
     bits += CostMeter::cost(negative, m_.sign[axis]);
     if (c >= 2) {
@@ -69,25 +70,20 @@ class ResidualCosts {
  private:
   static constexpr int kGroup = 2;  // 14.4: a prediction from candidates
 
-  // [c]: the bits of the class decisions that code class c (13.5.6's unary
-  // "c > i" for i < c, then "c > c" unless c is the largest, k).
-  const double* classes(int bucket, int axis) {
-    double* cost = cost_[bucket][axis];
-    if (ready_[bucket][axis]) return cost;
-    const int k = m_.max_class[axis];
+  // The bits of the class decisions that code class c <= k (13.5.6's unary
+  // "c > i" for i < c, then "c > c" unless c is k, the axis's largest). The
+  // decisions "c > i" do not depend on k, so the axes share their sums.
+  double class_bits(int bucket, int c, int k) {
+    double* above = above_[bucket];  // above[c]: the "c > i" decisions of every i below c
     const uint16_t* cls = m_.cls[kGroup][bucket];
-    double above = 0;  // the "c > i" decisions of every i below c
-    for (int c = 0; c <= k; ++c) {
-      cost[c] = c < k ? above + CostMeter::cost(0, cls[c]) : above;
-      if (c < k) above += CostMeter::cost(1, cls[c]);
-    }
-    ready_[bucket][axis] = true;
-    return cost;
+    for (int& built = built_[bucket]; built <= c; ++built)
+      above[built] = built == 0 ? 0 : above[built - 1] + CostMeter::cost(1, cls[built - 1]);
+    return c < k ? above[c] + CostMeter::cost(0, cls[c]) : above[c];
   }
 
   const PositionResidualModel& m_;
-  bool ready_[kPositionBuckets][3] = {};
-  double cost_[kPositionBuckets][3][kPositionMaxClass + 1];
+  int built_[kPositionBuckets] = {};  // entries of above_[bucket] computed
+  double above_[kPositionBuckets][kPositionMaxClass + 1];
 };
 
 }  // namespace qmc
