@@ -435,21 +435,35 @@ void predict_vertex_in_order(const VertexCorners& m, const uint32_t* order, cons
 
 namespace {
 
-// floor(n / w) for a total weight w of 14.3.3 (1 .. 8: at most four
-// candidates of weight 1 or 2), each case a division by a constant, which
-// the compiler turns into a multiplication: a 64-bit division takes tens of
-// cycles, and the encoder selects up to 15 subsets a vertex (14.5).
-int64_t floor_div_by_weight(int64_t n, int64_t w) {
+// floor(n[a] / W) for the three axes, W a constant: a division by a
+// constant, which the compiler turns into a multiplication (a 64-bit
+// division takes tens of cycles, and the encoder selects up to 15 subsets a
+// vertex, 14.5), or a shift for a power of two.
+template <int64_t W>
+void floor_div_axes(const int64_t n[3], int64_t out[3]) {
+  for (int a = 0; a < 3; ++a) {
+    if constexpr (W == 1) out[a] = n[a];
+    else if constexpr (W == 2) out[a] = floor_shift(n[a], 1);
+    else if constexpr (W == 4) out[a] = floor_shift(n[a], 2);
+    else if constexpr (W == 8) out[a] = floor_shift(n[a], 3);
+    else out[a] = floor_div(n[a], W);
+  }
+}
+
+// The same for a total weight w of 14.3.3 (1 .. 8: at most four candidates
+// of weight 1 or 2), one dispatch for the three axes.
+void floor_div_by_weight(const int64_t n[3], int64_t w, int64_t out[3]) {
   switch (w) {
-    case 1: return n;
-    case 2: return floor_shift(n, 1);
-    case 3: return floor_div(n, 3);
-    case 4: return floor_shift(n, 2);
-    case 5: return floor_div(n, 5);
-    case 6: return floor_div(n, 6);
-    case 7: return floor_div(n, 7);
-    case 8: return floor_shift(n, 3);
-    default: return floor_div(n, w);
+    case 1: return floor_div_axes<1>(n, out);
+    case 2: return floor_div_axes<2>(n, out);
+    case 3: return floor_div_axes<3>(n, out);
+    case 4: return floor_div_axes<4>(n, out);
+    case 5: return floor_div_axes<5>(n, out);
+    case 6: return floor_div_axes<6>(n, out);
+    case 7: return floor_div_axes<7>(n, out);
+    case 8: return floor_div_axes<8>(n, out);
+    default:
+      for (int a = 0; a < 3; ++a) out[a] = floor_div(n[a], w);
   }
 }
 
@@ -477,20 +491,20 @@ void select_candidates(VertexPrediction* p, unsigned mask, const uint32_t top[3]
   // 14.3.3's floor((2 S + W 2^16) / (2 W 2^16)), as floor(floor(x / 2^17) / W),
   // plus 14.9's correction floor((lambda T + 2^23) / 2^24), T = floor(twist_sum / W):
   // 0 but in POSN method 8 with the triangle twist.
-  int64_t correction[3] = {0, 0, 0};
+  int64_t correction[3] = {0, 0, 0}, rounded_sum[3];
   for (int a = 0; a < 3; ++a) {
-    p->mean[a] = floor_div_by_weight(floor_shift(2 * sum[a] + weight * kOne, 17), weight);
+    rounded_sum[a] = floor_shift(2 * sum[a] + weight * kOne, 17);
     p->twist_mean[a] = 0;
   }
+  floor_div_by_weight(rounded_sum, weight, p->mean);
   if (const unsigned twisted = p->triangle_twisted & mask; twisted != 0) {
     int64_t twist_sum[3] = {0, 0, 0};
     for (int i = 0; i < p->candidates; ++i)
       if (twisted >> i & 1)
         for (int a = 0; a < 3; ++a) twist_sum[a] += p->weight[i] * p->triangle_twist[i][a];
-    for (int a = 0; a < 3; ++a) {
-      p->twist_mean[a] = floor_div_by_weight(twist_sum[a], weight);
+    floor_div_by_weight(twist_sum, weight, p->twist_mean);
+    for (int a = 0; a < 3; ++a)
       correction[a] = floor_shift(p->twist_weight * p->twist_mean[a] + (int64_t(1) << 23), 24);
-    }
   }
   for (int a = 0; a < 3; ++a) p->value[a] = std::clamp<int64_t>(p->mean[a] + correction[a], 0, top[a]);
   p->kind = used > 1 ? PredictionKind::kSeveral : PredictionKind::kSingle;
