@@ -214,11 +214,13 @@ class MeteredRangeEncoder {
 // and the others after it in ascending order: a mask stops being costed once
 // it cannot win (costs only add up), and a good first bound stops most of
 // them after an axis or two. The choice is the same as in ascending order.
+// all_selected: p already holds the selection of every candidate (the
+// mirror candidate's reference, 14.10), which is not made again.
 unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidualModel* model, CandidateChoice choice,
-                         int context, VertexPrediction* p) {
+                         int context, VertexPrediction* p, bool all_selected = false) {
   if (p->candidates < 2) {
     const unsigned only = p->candidates == 1 ? 1u : 0u;
-    select_candidates(p, only, top);
+    if (!all_selected) select_candidates(p, only, top);
     return only;
   }
   const unsigned all = (1u << p->candidates) - 1;
@@ -232,7 +234,7 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
     const unsigned mask = k == 0 ? all : k;
     // Against a higher mask (only `all` is costed before a lower one) a tie wins.
     const auto wins = [&](double cost) { return cost < best_cost || (cost == best_cost && mask < best); };
-    select_candidates(p, mask, top);
+    if (mask != all || !all_selected) select_candidates(p, mask, top);
     CostMeter meter;
     double distance = 0;
     const auto cost = [&] { return fewest_bits ? meter.bits : distance; };
@@ -285,7 +287,7 @@ bool code_mirror_choice(MeteredRangeEncoder* rc, PositionResidualModel* model, c
   const bool has_candidate = mirrors.find(v, q.data(), *p, candidate);
   const int mirror = has_candidate ? mirror_context(candidate, p->value) : 0;
   const int context = mask_context(*model, *p);
-  *mask = best_candidates(&q[3 * size_t(v)], top, model, choice, context, p);
+  *mask = best_candidates(&q[3 * size_t(v)], top, model, choice, context, p, true);
   if (!has_candidate) return false;
   // best_candidates changed only what the mirror candidate replaces (value,
   // mean, kind); the bucket's inputs (activity, scale) are v's.
