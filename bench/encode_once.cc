@@ -66,11 +66,8 @@ int main(int argc, char** argv) {
   const long faults = minor_faults() - faults_before;
   std::vector<double> again;
   for (int r = 0; r < repeat; ++r) again.push_back(encode_ms(mesh, options, &bytes));
-  std::sort(again.begin(), again.end());
-  const double median = again.empty() ? 0
-                        : again.size() % 2 ? again[again.size() / 2]
-                                           : (again[again.size() / 2 - 1] + again[again.size() / 2]) / 2;
+  const double least = again.empty() ? 0.0 : *std::min_element(again.begin(), again.end());
   std::printf("first %.3f ms, %ld minor faults; repeats median %.3f ms, least %.3f ms; %zu bytes\n", first, faults,
-              median, again.empty() ? 0.0 : again.front(), bytes);
+              qmc::bench::median(again), least, bytes);
   return 0;
 }
