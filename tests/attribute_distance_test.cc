@@ -46,6 +46,9 @@ const AttributeDistance& named(const AttributeComparison& c, const std::string& 
   static const AttributeDistance none;
   return none;
 }
+// The reference named() returns lives in c: a comparison that dies with the
+// statement would leave it dangling.
+const AttributeDistance& named(AttributeComparison&& c, const std::string& name) = delete;
 
 // Renumbers the vertices backwards, lists the faces backwards and starts
 // each face at its second corner, carrying every corner's value indices.
@@ -144,7 +147,8 @@ TEST(AttributeDistance, TextureScaledTwiceAlongUStretchesEveryTriangleByTwo) {
     largest_u = std::max(largest_u, std::fabs(double(uv.values[2 * i])));
     uv.values[2 * i] *= 2;
   }
-  const AttributeDistance& d = named(compare(a, b), "texcoord");
+  const AttributeComparison c = compare(a, b);
+  const AttributeDistance& d = named(c, "texcoord");
   // J = diag(2, 1): s1 = 2, s2 = 1, L2 = sqrt((4 + 1) / 2).
   EXPECT_NEAR(d.stretch_l2, std::sqrt(2.5), 1e-9);
   EXPECT_NEAR(d.stretch_max, 2, 1e-9);
@@ -158,7 +162,8 @@ TEST(AttributeDistance, MirroredTextureFlipsEveryTriangle) {
   Mesh b = a;
   MeshAttribute& uv = attribute(&b, "texcoord");
   for (size_t i = 0; i < uv.value_count(); ++i) uv.values[2 * i] = -uv.values[2 * i];
-  const AttributeDistance& d = named(compare(a, b), "texcoord");
+  const AttributeComparison c = compare(a, b);
+  const AttributeDistance& d = named(c, "texcoord");
   EXPECT_EQ(d.flipped, d.stretch_triangles);
   EXPECT_NEAR(d.stretch_l2, 1, 1e-9);  // a reflection neither stretches nor squeezes
 }
@@ -173,7 +178,8 @@ TEST(AttributeDistance, NormalsTurnedTenDegreesAreTenDegreesOff) {
     n.values[3 * i] = float(std::cos(t) * x - std::sin(t) * y);
     n.values[3 * i + 1] = float(std::sin(t) * x + std::cos(t) * y);
   }
-  const AttributeDistance& d = named(compare(a, b), "normal");
+  const AttributeComparison c = compare(a, b);
+  const AttributeDistance& d = named(c, "normal");
   // Each normal turns about z by 10 degrees: its angle to itself is 10
   // degrees times its length in the xy plane, at most 10.
   EXPECT_LE(d.angle_max_degrees, 10 + 1e-4);
