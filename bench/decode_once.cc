@@ -5,8 +5,6 @@
 // process, so the first decode always starts from an empty heap.
 //
 //   qmc_decode_once FILE.qmc [REPEAT]
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -16,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "first_and_repeats.h"
 #include "qmc/decoder.h"
 
 namespace {
@@ -31,12 +30,6 @@ double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   const size_t n = values.size();
   return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
-}
-
-long minor_faults() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_minflt;
 }
 
 // Milliseconds of one decode; exits on a decoding error.
@@ -57,12 +50,8 @@ int main(int argc, char** argv) {
   if (!in) fail(std::string("cannot read ") + argv[1]);
   const std::vector<uint8_t> file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const int repeat = argc == 3 ? std::atoi(argv[2]) : 0;
-  const long faults_before = minor_faults();
-  const double first = decode_ms(file);
-  const long faults = minor_faults() - faults_before;
-  std::vector<double> again;
-  for (int r = 0; r < repeat; ++r) again.push_back(decode_ms(file));
-  std::printf("first %.3f ms, %ld minor faults; repeats median %.3f ms\n", first, faults,
-              median(again));
+  const qmc::bench::FirstAndRepeats t = qmc::bench::first_and_repeats(repeat, [&] { return decode_ms(file); });
+  std::printf("first %.3f ms, %ld minor faults; repeats median %.3f ms\n", t.first_ms, t.first_faults,
+              median(t.repeat_ms));
   return 0;
 }

@@ -12,8 +12,6 @@
 //   GLIBC_TUNABLES=glibc.malloc.trim_threshold=1073741824:glibc.malloc.mmap_threshold=1073741824
 //
 //   qmc_encode_once MESH BITS [REPEAT]
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -22,6 +20,7 @@
 #include <vector>
 
 #include "bench_common.h"
+#include "first_and_repeats.h"
 #include "qmc/encoder.h"
 
 namespace {
@@ -29,12 +28,6 @@ namespace {
 [[noreturn]] void fail(const std::string& message) {
   std::fprintf(stderr, "qmc_encode_once: %s\n", message.c_str());
   std::exit(3);
-}
-
-long minor_faults() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return usage.ru_minflt;
 }
 
 // Milliseconds of one encode; exits on an encoding error.
@@ -61,13 +54,10 @@ int main(int argc, char** argv) {
   options.position_bits = std::atoi(argv[2]);
   const int repeat = argc == 4 ? std::atoi(argv[3]) : 0;
   size_t bytes = 0;
-  const long faults_before = minor_faults();
-  const double first = encode_ms(mesh, options, &bytes);
-  const long faults = minor_faults() - faults_before;
-  std::vector<double> again;
-  for (int r = 0; r < repeat; ++r) again.push_back(encode_ms(mesh, options, &bytes));
-  const double least = again.empty() ? 0.0 : *std::min_element(again.begin(), again.end());
-  std::printf("first %.3f ms, %ld minor faults; repeats median %.3f ms, least %.3f ms; %zu bytes\n", first, faults,
-              qmc::bench::median(again), least, bytes);
+  const qmc::bench::FirstAndRepeats t =
+      qmc::bench::first_and_repeats(repeat, [&] { return encode_ms(mesh, options, &bytes); });
+  const double least = t.repeat_ms.empty() ? 0.0 : *std::min_element(t.repeat_ms.begin(), t.repeat_ms.end());
+  std::printf("first %.3f ms, %ld minor faults; repeats median %.3f ms, least %.3f ms; %zu bytes\n", t.first_ms,
+              t.first_faults, qmc::bench::median(t.repeat_ms), least, bytes);
   return 0;
 }
