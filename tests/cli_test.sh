@@ -48,7 +48,7 @@ check compare-missing 3 "$qmc" compare "$work/torus.obj" "$work/nope.obj"
 check info 0 "$qmc" info "$work/torus.qmc"
 contains info-chunks "$work/out" "CONN"
 contains info-method "$work/out" "polygon coder (spec 5.4)"
-contains info-predicted "$work/out" "predicted (spec 14, method 10: geometry order, quads' twist, mirror images a step away: graded start), uniform grid"
+contains info-predicted "$work/out" "predicted (spec 14, method 12: geometry order, quads' twist, mirror images a step away, edges extrapolated: graded start), uniform grid"
 check info-json 0 "$qmc" info --json "$work/torus.qmc"
 contains info-json-valid "$work/out" '"connectivity":"polygon"'
 # Spec 14.1's grids as a user states them.
@@ -118,7 +118,20 @@ for vector in "$vectors"/invalid_*.qmc; do
 done
 if [ -z "$info_crashed" ]; then passed=$((passed + 1)); else
   failed=$((failed + 1)); echo "FAIL info-invalid-vectors:$info_crashed"; fi
-check format-1.16-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f116.qmc" --format 1.16
+check format-1.17-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f117.qmc" --format 1.17
+# Spec 14.13: an open grid of quads, whose boundary the geometry order walks first, takes POSN method 12
+# (format 1.16); --format 1.15 keeps method 11 or below, in a larger file.
+"$meshgen" grid 24 16 "$work/grid.obj" >/dev/null
+check format-1.16 0 "$qmc" encode "$work/grid.obj" "$work/f116.qmc" --quiet
+check format-1.16-info 0 "$qmc" info "$work/f116.qmc"
+contains format-1.16-written "$work/out" "format 1.16"
+contains format-1.16-method-12 "$work/out" "method 12: geometry order.*edges extrapolated"
+check format-1.15-grid 0 "$qmc" encode "$work/grid.obj" "$work/f115g.qmc" --quiet --format 1.15
+check format-1.15-grid-info 0 "$qmc" info "$work/f115g.qmc"
+contains format-1.15-grid-no-method-12 "$work/out" 'format 1\.\([4-9]\|1[0-5]\)$'
+if [ "$(stat -c %s "$work/f116.qmc")" -ge "$(stat -c %s "$work/f115g.qmc")" ]; then
+  failed=$((failed + 1)); echo "FAIL format-1.16-smaller: method 12's file is not smaller than the 1.15 file"; fi
+check verify-method-12 0 "$qmc" verify "$work/grid.obj" "$work/f116.qmc"
 # Spec 14.12: an irregular triangulation takes POSN method 11 (format 1.15); --format 1.14 keeps method 10 or below.
 "$meshgen" jittered-sphere 3 11 "$work/jittered.obj" >/dev/null
 check format-1.15 0 "$qmc" encode "$work/jittered.obj" "$work/f115.qmc" --quiet
@@ -171,7 +184,7 @@ check soup-encode 0 "$qmc" encode "$work/soup.off" "$work/soup.qmc" -q 16 --text
 check soup-verify 0 "$qmc" verify "$work/soup.off" "$work/soup.qmc"
 check verify-wrong-mesh 1 "$qmc" verify "$work/soup.off" "$work/torus.qmc"
 check help 0 "$qmc" --help
-contains help-version "$work/out" "format version 1.15, spec/qmc-format.md"
+contains help-version "$work/out" "format version 1.16, spec/qmc-format.md"
 check encode-help 0 "$qmc" encode --help
 contains help-default-bits "$work/out" "1/4096"
 check no-args 2 "$qmc"
@@ -368,7 +381,7 @@ check decode-groups-off-refused 3 "$qmc" decode "$work/groups.qmc" "$work/groups
 { echo "v 0 0 0 1 0 0"; echo "v 1 0 0 0 1 0"; echo "v 0 1 0 0 0 1 1"; echo "f 1 2 3"; echo "l 1 2"; } >"$work/colours.obj"
 check encode-colours-refused 3 "$qmc" encode "$work/colours.obj" "$work/colours.qmc"
 contains encode-colours-refused-names-flag "$work/err" "pass --drop-unsupported"
-contains encode-colours-refused-names-format "$work/err" "holds what format 1.15 cannot carry yet"
+contains encode-colours-refused-names-format "$work/err" "holds what format 1.16 cannot carry yet"
 contains encode-colours-refused-colours "$work/err" "  ignored per-vertex colours on v lines of 7 numbers: 1"
 contains encode-colours-refused-partial "$work/err" "  ignored per-vertex colours on v lines: only 2 of 3 vertices have one"
 check encode-colours-refused-no-output 0 test ! -e "$work/colours.qmc"

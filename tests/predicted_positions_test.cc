@@ -342,6 +342,7 @@ TEST(PredictedPositions, RoundTripsGeneratedMeshes) {
       options.graded_class_start = bits != 12;
       options.geometry_order = bits != 12;
       options.mirror_symmetry = false;  // the torus is symmetric: method 9 (14.10) has tests of its own
+      options.edge_extrapolation = false;  // method 12 (14.13) too
       EncodeStats stats;
       const DecodedFile file = decode_all(encode_with(meshes[i], options, &stats));
       const bool small = meshes[i].vertex_count() < 1000;
@@ -954,6 +955,107 @@ TEST(Shear, RoundTripsEveryPlaneAndFeature) {
         EXPECT_EQ(info.mirror_axis, plane == 0 ? -1 : 0);
         EXPECT_EQ(info.near_images, plane == 2);
         EXPECT_EQ(q, grid.q) << "k " << k << " features " << features << " plane " << plane;
+      }
+}
+
+// Spec 14.13's example: two quads over two pairs of triangles, with the
+// labels CONN gives them. Vertex 2 has no candidate of 14.3.1; the rule
+// continues the edges (7, 1) and (6, 1) through 1, skips the pairs it has
+// met and the w near 2, and leaves vertex 3 to the fallback. Without the
+// rule (method 11 and before) vertex 2 has no candidate either.
+TEST(EdgeExtrapolation, SpecExample) {
+  const Mesh mesh = faces({4, 4, 3, 3, 3, 3}, {0, 1, 2, 3, 1, 4, 5, 2, 6, 7, 1, 6, 1, 0, 7, 8, 4, 7, 4, 1});
+  const std::vector<uint32_t> q = {0, 10, 0, 11, 10, 1, 11, 20, 1, 0, 20, 0, 21, 10, 0,
+                                   21, 20, 0, 0, 0, 0, 11, 0, 1, 21, 0, 0};
+  VertexCorners corners;
+  corners.build(9, mesh.face_sizes, mesh.corners);
+  const std::vector<uint32_t> order = geometry_order(9, mesh.face_sizes, mesh.corners);
+  ASSERT_EQ(order, (std::vector<uint32_t>{0, 1, 6, 7, 4, 8, 2, 3, 5}));
+  std::vector<uint32_t> rank(9);
+  for (uint32_t i = 0; i < 9; ++i) rank[order[i]] = i;
+  const std::vector<uint32_t> activity(9, 0);
+  const auto predicted = [&](uint32_t i, bool extrapolate) {
+    VertexPrediction p;
+    predict_vertex_in_order(corners, order.data(), rank.data(), i, q.data(), activity.data(), kTop, &p, nullptr,
+                            false, false, 0, extrapolate);
+    return p;
+  };
+  VertexPrediction p = predicted(6, true);  // vertex 2
+  ASSERT_EQ(p.candidates, 2);
+  EXPECT_EQ(p.candidate[0][0], 11 * kOne);  // 2 q[1] - q[7]
+  EXPECT_EQ(p.candidate[0][1], 20 * kOne);
+  EXPECT_EQ(p.candidate[0][2], 1 * kOne);
+  EXPECT_EQ(p.candidate[1][0], 22 * kOne);  // 2 q[1] - q[6]
+  EXPECT_EQ(p.candidate[1][1], 20 * kOne);
+  EXPECT_EQ(p.candidate[1][2], 2 * kOne);
+  EXPECT_EQ(p.weight[0], 1);
+  EXPECT_EQ(p.weight[1], 1);
+  EXPECT_EQ(p.scale, 16u);  // floor((10 + 22) / 2)
+  EXPECT_EQ(predicted(6, false).candidates, 0);
+  // Vertex 6, the third: its decoded neighbours 1 and 0 offer only w near
+  // it (0 and 1 again, across its triangles) or not decoded: the fallback.
+  VertexPrediction fallback = predicted(2, true);
+  EXPECT_EQ(fallback.candidates, 0);
+  select_candidates(&fallback, 0, kTop);
+  EXPECT_EQ(fallback.kind, PredictionKind::kNeighbours);
+  // A vertex with a candidate of 14.3.1 (vertex 3: face 0's run) is left as it was.
+  const VertexPrediction with = predicted(7, true), without = predicted(7, false);
+  ASSERT_EQ(without.candidates, 1);
+  ASSERT_EQ(with.candidates, 1);
+  EXPECT_EQ(with.candidate[0][0], without.candidate[0][0]);
+  EXPECT_EQ(with.weight[0], 2);
+}
+
+// The encoder writes method 12 where vertices without candidates code
+// smaller with the rule (a bent open grid of quads, whose boundary the
+// geometry order walks before the row beside it), the same integers, and
+// keeps its earlier method where edge_extrapolation is off and where no
+// vertex but the order's second lacks a candidate (a torus of triangles).
+TEST(EdgeExtrapolation, EncoderWritesMethodTwelveWhereItPays) {
+  Mesh grid = tools::make_grid(24, 16);
+  for (size_t i = 0; i < grid.positions.size(); i += 3) {
+    const float x = grid.positions[i], y = grid.positions[i + 1];
+    grid.positions[i] = x + 0.125f * x * x;
+    grid.positions[i + 1] = y + 0.0625f * x * y;
+  }
+  const WithAndWithout r = with_and_without(grid, EncodeOptions{}, &EncodeOptions::edge_extrapolation);
+  EXPECT_EQ(r.with.quantization.method, 12);
+  EXPECT_TRUE(r.with.quantization.edge_extrapolation);
+  EXPECT_EQ(r.with.version_minor, 16);
+  EXPECT_NE(r.without.quantization.method, 12);
+  EXPECT_FALSE(r.without.quantization.edge_extrapolation);
+  EXPECT_EQ(r.with.quantized, r.without.quantized);
+  EXPECT_LT(r.with_bytes.size() * 100, r.without_bytes.size() * 97);  // more than 3 % smaller
+  const Mesh torus = tools::triangulated(tools::make_torus(24, 16));
+  EXPECT_NE(decode_all(encode_with(torus, EncodeOptions{})).quantization.method, 12);
+}
+
+// Method 12 with every shear (0 included), feature and kind of plane
+// decodes to the integers it was given.
+TEST(EdgeExtrapolation, RoundTripsEveryPlaneFeatureAndShear) {
+  const Mesh grid = tools::make_grid(12, 8);
+  QuantizedPositions q;
+  ASSERT_TRUE(quantize_positions(grid.positions, EncodeOptions{}, &q).ok());
+  for (const int k : {0, 1, 16})
+    for (int features = 0; features < 8; ++features)
+      for (int plane = 0; plane < 3; ++plane) {
+        const MirrorPlane mirror{0, q.top[0], plane == 2};
+        const std::vector<uint8_t> payload = encode_predicted_positions(
+            q, grid, nullptr, CandidateChoice::kFewestBits, ClassStart::kGraded, PredictionOrder::kGeometry,
+            features & kQuadTwistFeature, features & kMaskContextsFeature, features & kTriangleTwistFeature,
+            plane == 0 ? nullptr : &mirror, k, true);
+        QuantizationInfo info;
+        std::vector<uint32_t> decoded;
+        std::vector<float> positions;
+        ASSERT_TRUE(decode_positions(payload.data(), payload.size(), grid, grid.vertex_count(), &info, &decoded,
+                                     &positions)
+                        .ok());
+        EXPECT_EQ(info.method, 12);
+        EXPECT_TRUE(info.edge_extrapolation);
+        EXPECT_EQ(info.shear, k);
+        EXPECT_EQ(info.features, features);
+        EXPECT_EQ(info.mirror_axis, plane == 0 ? -1 : 0);
+        EXPECT_EQ(decoded, q.q) << "k " << k << " features " << features << " plane " << plane;
       }
 }
 

@@ -55,9 +55,11 @@ namespace {
 // where they predict positions (format 1.7's method 3 and 1.8's method 4
 // came later); they stay so.
 // POSN method 11 (14.12) came after every vector but the posn11 ones, which
-// ask encode_posn_method for it: the others keep the encoder's choices of before.
+// ask encode_posn_method for it, and method 12 (14.13) after those: the
+// others keep the encoder's choices of before.
 qmc::EncodeOptions without_shear(qmc::EncodeOptions options) {
   options.shear = false;
+  options.edge_extrapolation = false;
   return options;
 }
 
@@ -1459,8 +1461,9 @@ qmc::EncodeOptions on_unit_grid(qmc::EncodeOptions options) {
 std::vector<uint8_t> encode_posn_method(const Mesh& mesh, const qmc::EncodeOptions& options, int method) {
   std::vector<uint8_t> out;
   qmc::EncodeStats stats;
-  if (qmc::Status s = qmc::encode(mesh, method == 11 ? options : without_shear(options), &out, &stats);
-      !s.ok() || stats.positions.method != method) {
+  qmc::EncodeOptions asked = method >= 11 ? options : without_shear(options);
+  if (method == 11) asked.edge_extrapolation = false;
+  if (qmc::Status s = qmc::encode(mesh, asked, &out, &stats); !s.ok() || stats.positions.method != method) {
     std::fprintf(stderr, "qmc-make-vectors: POSN method %d: %s\n", method, s.to_string().c_str());
     std::exit(3);
   }
@@ -3669,10 +3672,12 @@ qmc::MirrorPlane mirror_plane_of(const std::vector<uint8_t>& file, bool near) {
   return plane;
 }
 
-// A file's POSN recoded as method 11 (14.12) with shear k over method 8's
-// features and, if given, a mirror plane (plane 1 or 2 by its near_images).
-std::vector<uint8_t> rewritten_with_shear(const std::vector<uint8_t>& file, uint8_t features, int k,
-                                          const qmc::MirrorPlane* plane = nullptr) {
+// A file's POSN recoded in the geometry order with method 8's features,
+// shear k (0: none), a mirror plane if given, and 14.13's edge extrapolation
+// if asked: method 11 or 12 (14.12, 14.13), in a file of that version.
+// stats, if given, gets the coding's counts.
+std::vector<uint8_t> recoded_posn(const std::vector<uint8_t>& file, uint8_t features, int k,
+                                  const qmc::MirrorPlane* plane, bool extrapolate, qmc::PositionStats* stats = nullptr) {
   Chunks c = split_chunks(file);
   Mesh faces;
   qmc::QuantizedPositions grid;
@@ -3680,11 +3685,18 @@ std::vector<uint8_t> rewritten_with_shear(const std::vector<uint8_t>& file, uint
   const qmc::ClassStart start =
       grid.q.size() / 3 < qmc::kGradedStartBelow ? qmc::ClassStart::kGraded : qmc::ClassStart::kFlat;
   c[find_chunk(c, qmc::kChunkPositions)].payload = qmc::encode_predicted_positions(
-      grid, faces, nullptr, qmc::CandidateChoice::kFewestBits, start, qmc::PredictionOrder::kGeometry,
+      grid, faces, stats, qmc::CandidateChoice::kFewestBits, start, qmc::PredictionOrder::kGeometry,
       features & qmc::kQuadTwistFeature, features & qmc::kMaskContextsFeature,
-      features & qmc::kTriangleTwistFeature, plane, k);
-  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, 15};
+      features & qmc::kTriangleTwistFeature, plane, k, extrapolate);
+  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, uint8_t(extrapolate ? 16 : 15)};
   return join_chunks(c);
+}
+
+// A file's POSN recoded as method 11 (14.12) with shear k over method 8's
+// features and, if given, a mirror plane (plane 1 or 2 by its near_images).
+std::vector<uint8_t> rewritten_with_shear(const std::vector<uint8_t>& file, uint8_t features, int k,
+                                          const qmc::MirrorPlane* plane = nullptr) {
+  return recoded_posn(file, features, k, plane, false);
 }
 
 // 14.3.4's two triangles (0, 1, 2) and (2, 1, 3) at these positions: vertex
@@ -3810,6 +3822,116 @@ void write_posn11_vectors(VectorWriter* w) {
   p = std::vector<uint8_t>(planed.begin(), planed.begin() + long(axis + 1));
   qmc::put_varint(&p, (uint64_t(1) << 31));
   w->invalid("invalid_posn11_sum_2_31", with_plane(p), ErrorCode::kBadChunkPayload);
+}
+
+// A file's POSN recoded as method 12 (14.13) with shear k (0: none) over
+// method 8's features and, if given, a mirror plane; the generator stops if
+// the rule gives no vertex a candidate there.
+std::vector<uint8_t> rewritten_with_extrapolation(const std::vector<uint8_t>& file, uint8_t features, int k,
+                                                  const qmc::MirrorPlane* plane = nullptr) {
+  qmc::PositionStats stats;
+  std::vector<uint8_t> out = recoded_posn(file, features, k, plane, true, &stats);
+  if (stats.extrapolated_vertices == 0) {
+    std::fprintf(stderr, "qmc-make-vectors: 14.13's rule predicts no vertex of a method-12 vector\n");
+    std::exit(3);
+  }
+  return out;
+}
+
+// Spec 14.13's example: a row of two quads over a row of two triangle pairs,
+// on the unit grid (the file's labels are the faces' first uses, 5.2.1).
+Mesh extrapolation_example() {
+  Mesh m;
+  for (uint32_t row = 0; row < 3; ++row)
+    for (uint32_t i = 0; i < 3; ++i)
+      m.positions.insert(m.positions.end(), {float(10 * i + (i * i) % 3), float(10 * row), float(i % 2)});
+  const auto at = [](uint32_t row, uint32_t i) { return 3 * row + i; };
+  for (uint32_t i = 0; i < 2; ++i) {
+    m.face_sizes.push_back(4);
+    m.corners.insert(m.corners.end(), {at(1, i), at(1, i + 1), at(2, i + 1), at(2, i)});
+  }
+  for (uint32_t i = 0; i < 2; ++i) {
+    m.face_sizes.insert(m.face_sizes.end(), {3, 3});
+    m.corners.insert(m.corners.end(), {at(0, i), at(0, i + 1), at(1, i + 1), at(0, i), at(1, i + 1), at(1, i)});
+  }
+  return m;
+}
+
+// A row of n quads and the next row of n triangle pairs below it: each
+// vertex of the bottom boundary after the first two continues the boundary.
+Mesh quads_over_triangles(uint32_t n) {
+  Mesh m;
+  for (uint32_t row = 0; row < 3; ++row)
+    for (uint32_t i = 0; i <= n; ++i) {
+      const float x = float(i), y = float(row);
+      m.positions.insert(m.positions.end(), {x * 3 + 0.25f * float((i * 7 + row) % 5), y * 4, float((i * i) % 7)});
+    }
+  const auto at = [&](uint32_t row, uint32_t i) { return row * (n + 1) + i; };
+  for (uint32_t i = 0; i < n; ++i) {
+    m.face_sizes.push_back(4);
+    m.corners.insert(m.corners.end(), {at(1, i), at(1, i + 1), at(2, i + 1), at(2, i)});
+  }
+  for (uint32_t i = 0; i < n; ++i) {
+    m.face_sizes.insert(m.face_sizes.end(), {3, 3});
+    m.corners.insert(m.corners.end(), {at(0, i), at(0, i + 1), at(1, i + 1), at(0, i), at(1, i + 1), at(1, i)});
+  }
+  return m;
+}
+
+void write_posn12_vectors(VectorWriter* w) {
+  using qmc::ErrorCode;
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  const qmc::EncodeOptions unit = on_unit_grid(options);
+  const Mesh example = extrapolation_example();
+  w->valid("valid_posn12_example", rewritten_with_extrapolation(encode_with(example, unit, "extrapolation example"), 0, 0),
+           &example);
+  // The rule beside 14.12's shear, 14.7's twist of quads, 14.9's twist of
+  // triangles and 14.8's contexts, on quads over triangles, and with a
+  // plane of each kind on a mirrored grid of quads.
+  const Mesh mixed = quads_over_triangles(12);
+  const std::vector<uint8_t> mixed_file = encode_with(mixed, unit, "quads over triangles");
+  w->valid("valid_posn12_every_feature_and_shear", rewritten_with_extrapolation(mixed_file, 7, 8), &mixed);
+  const Mesh grid = qmc::tools::make_mirrored_across_x(qmc::tools::make_grid(6, 4));
+  const std::vector<uint8_t> grid_file = encode_with(grid, options, "mirrored grid");
+  const qmc::MirrorPlane exact_plane = mirror_plane_of(grid_file, false);
+  w->valid("valid_posn12_plane_1", rewritten_with_extrapolation(grid_file, 0, 0, &exact_plane), &grid);
+  qmc::MirrorPlane near_plane = exact_plane;
+  near_plane.near_images = true;
+  w->valid("valid_posn12_plane_2_shear", rewritten_with_extrapolation(grid_file, 1, 16, &near_plane), &grid);
+  // What the encoder writes on an open grid of quads, at 12 and 16 bits,
+  // and with texture coordinates (their values take no extrapolation, 15.4).
+  Mesh open = qmc::tools::make_grid(24, 16);
+  for (size_t i = 0; i < open.positions.size(); i += 3) {  // bent: no mirror plane
+    const float x = open.positions[i], y = open.positions[i + 1];
+    open.positions[i] = x + 0.125f * x * x;
+    open.positions[i + 1] = y + 0.0625f * x * y;
+  }
+  options.position_bits = 12;
+  Mesh textured = open;
+  qmc::tools::add_chart_texcoords(&textured);
+  const std::vector<uint8_t> file = write_encoder_files(w, "posn12", "open_grid", open, textured, options, 12);
+
+  // 14.1's checks of method 12's bytes, and 14.4's end of stream.
+  const ChunkReplacer with_posn(file, qmc::kChunkPositions);
+  const std::vector<uint8_t> payload = with_posn.payload();
+  std::vector<uint8_t> count;
+  qmc::put_varint(&count, open.vertex_count());
+  const size_t features = count.size() + 2, shear = features + 1, plane = shear + 1;
+  std::vector<uint8_t> p = payload;
+  p[shear] = 17;
+  w->invalid("invalid_posn12_shear_17", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  p[plane] = 3;
+  w->invalid("invalid_posn12_plane_3", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  p[features] = 8;
+  w->invalid("invalid_posn12_features_bit_3", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn12_shear_missing", with_posn(std::vector<uint8_t>(payload.begin(), payload.begin() + long(shear))),
+             ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn12_plane_missing", with_posn(std::vector<uint8_t>(payload.begin(), payload.begin() + long(plane))),
+             ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn12_truncated_stream",
+             with_posn(std::vector<uint8_t>(payload.begin(), payload.end() - 16)), ErrorCode::kTruncated);
 }
 
 // Section 15.9: aTTR coding 4, what `qmc encode` writes when it is the
@@ -4599,6 +4721,7 @@ int main(int argc, char** argv) {
   write_posn10_vectors(&w);
   write_levl4_vectors(&w);
   write_posn11_vectors(&w);
+  write_posn12_vectors(&w);
   w.finish();
   return 0;
 }

@@ -39,7 +39,8 @@ struct QuantizationInfo {
   int mirror_axis = -1;           // methods 9 - 11: 14.10's plane, q[axis] -> mirror_sum - q[axis]; -1: none
   uint32_t mirror_sum = 0;
   bool near_images = false;       // methods 10 and 11: image vertices may lie a step from the image (14.11)
-  int shear = 0;                  // method 11: 14.12's weight k of the shear, 1 - 16 (k / 16); 0 in the others
+  int shear = 0;                  // methods 11 and 12: 14.12's weight k of the shear, 1 - 16 (k / 16); 0: none
+  bool edge_extrapolation = false;  // method 12: 14.13's edge extrapolation
 };
 
 // Section 12: one level of a progressive file. Level 0 is the base mesh of

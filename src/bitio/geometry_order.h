@@ -54,13 +54,16 @@ class PredictionVisit {
   // POSN method 11 (14.12): parallelogram candidates sheared by k / 16 (0: not); geometry order only.
   void shear(int k) { shear_ = order_.empty() ? 0 : k; }
   int shear() const { return shear_; }
+  // POSN method 12 (14.13): a vertex without candidates extrapolates an edge; geometry order only.
+  void extrapolate_edges(bool on = true) { extrapolate_ = on && !order_.empty(); }
+  bool extrapolates_edges() const { return extrapolate_; }
   // 14.3 for item(i), in order i = 0, 1, ... (the guide's orientation carries on).
   void predict(uint32_t i, const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
                VertexPrediction* out) const {
     PositionGuide* guide = guided_ ? &guide_ : nullptr;
     if (order_.empty()) return predict_vertex(mesh_, i, q, activity, top, out, guide);
     predict_vertex_in_order(mesh_, order_.data(), rank_.data(), i, q, activity, top, out, guide, twist_,
-                            triangle_twist_, shear_);
+                            triangle_twist_, shear_, extrapolate_);
   }
 
  private:
@@ -70,6 +73,7 @@ class PredictionVisit {
   bool twist_ = false;
   bool triangle_twist_ = false;
   int shear_ = 0;
+  bool extrapolate_ = false;
   std::vector<uint32_t> order_, rank_;  // empty in label order
 };
 

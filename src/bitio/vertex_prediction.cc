@@ -63,6 +63,7 @@ struct Visit {
   Order order;
   uint32_t v, key;  // the vertex predicted and order.key(v)
   int shear = 0;    // 14.12's weight k of the parallelograms' shear (POSN method 11), 0: none
+  bool extrapolate = false;  // 14.13's edge extrapolation (POSN method 12)
   bool before(uint32_t u) const { return order.key(u) < key; }
 };
 
@@ -361,6 +362,54 @@ void VertexCorners::build_links(bool triangles, std::vector<uint32_t>* first, st
 
 namespace {
 
+// 14.13: the corners of v and of each neighbour u that the edge
+// extrapolation examines, and how far along v's faces a w counts as v's.
+constexpr int kExtrapolationCorners = 8;
+constexpr int kExtrapolationReach = 3;
+
+// 14.13: whether w is within kExtrapolationReach corners of v in the face of
+// one of v's first kExtrapolationCorners corners.
+bool near_in_faces(const VertexCorners& m, const uint32_t* corners, int count, uint32_t w) {
+  for (int i = 0; i < count; ++i)
+    for (int s = -kExtrapolationReach; s <= kExtrapolationReach; ++s)
+      if (s != 0 && m.along(corners[i], s) == w) return true;
+  return false;
+}
+
+// 14.13, POSN method 12, for a vertex that 14.3.1 gave no candidate: the
+// edge (w, u) continued past u to v, 2 u - w, for u in the neighbour list of
+// v's first 8 corners and w next to u at u's first 8 corners, both decoded,
+// w not near v in v's faces, each pair (u, w) once. Along a boundary, where
+// no face lies across for 14.3.1's strip, this is the boundary continued.
+template <class Order>
+void add_edge_extrapolations(const VertexCorners& m, const Visit<Order>& at, const uint32_t* q,
+                             VertexPrediction* c) {
+  const uint32_t v = at.v;
+  const uint32_t* v_corners = m.begin(v);
+  const int v_count = int(std::min<ptrdiff_t>(m.end(v) - m.begin(v), kExtrapolationCorners));
+  uint32_t pairs[kMaxCandidates][2];
+  int paired = 0;
+  const VertexCorners::Sides* v_sides = m.sides(v);
+  for (int i = 0; i < v_count; ++i)
+    for (const uint32_t u : {v_sides[i].previous, v_sides[i].next}) {
+      if (!at.before(u)) continue;
+      const VertexCorners::Sides* u_sides = m.sides(u);
+      const int u_count = int(std::min<ptrdiff_t>(m.end(u) - m.begin(u), kExtrapolationCorners));
+      for (int j = 0; j < u_count; ++j)
+        for (const uint32_t w : {u_sides[j].previous, u_sides[j].next}) {
+          if (!at.before(w) || w == u || near_in_faces(m, v_corners, v_count, w)) continue;
+          bool seen = false;
+          for (int k = 0; k < paired; ++k) seen = seen || (pairs[k][0] == u && pairs[k][1] == w);
+          if (seen) continue;
+          pairs[paired][0] = u;
+          pairs[paired][1] = w;
+          ++paired;
+          add_candidate(c, kWeightStrip, q, u, u, w, kOne);
+          if (c->candidates == kMaxCandidates) return;
+        }
+    }
+}
+
 // 14.3.1: the candidates one corner of v contributes (15.12: with a guide,
 // the guided candidate alone where the guided rule applies).
 template <class Order>
@@ -400,6 +449,11 @@ void predict(const VertexCorners& m, const Visit<Order>& at, const uint32_t* pre
     }
     add_corner_candidates(m, *corner, *sides, at, q, guide, twist, out);
   }
+  out->extrapolated = false;
+  if (at.extrapolate && out->candidates == 0) {
+    add_edge_extrapolations(m, at, q, out);
+    out->extrapolated = out->candidates > 0;
+  }
   if (out->candidates > 0) out->scale /= uint64_t(out->candidates);
   // 14.3.2: what the fallback is made of, and the activity of 14.4.
   for (int a = 0; a < 3; ++a) {
@@ -424,13 +478,14 @@ void predict_vertex(const VertexCorners& m, uint32_t v, const uint32_t* q, const
 void predict_vertex_in_order(const VertexCorners& m, const uint32_t* order, const uint32_t* rank, uint32_t i,
                              const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
                              VertexPrediction* out, PositionGuide* guide, bool quad_twist, bool triangle_twist,
-                             int shear) {
+                             int shear, bool extrapolate) {
   const uint32_t* previous = i > 0 ? &order[i - 1] : nullptr;
   if (triangle_twist)
-    predict(m, Visit<TwistedRankOrder>{{{rank}}, order[i], i, shear}, previous, q, activity, top, guide, quad_twist,
-            out);
+    predict(m, Visit<TwistedRankOrder>{{{rank}}, order[i], i, shear, extrapolate}, previous, q, activity, top, guide,
+            quad_twist, out);
   else
-    predict(m, Visit<RankOrder>{{rank}, order[i], i, shear}, previous, q, activity, top, guide, quad_twist, out);
+    predict(m, Visit<RankOrder>{{rank}, order[i], i, shear, extrapolate}, previous, q, activity, top, guide, quad_twist,
+            out);
 }
 
 namespace {

@@ -191,6 +191,7 @@ struct VertexPrediction {
   // selected candidates' weighted mean twist (twist_mean, 2^-16 units), and
   // the prediction, clamped to 0..top[a] (value).
   PredictionKind kind = PredictionKind::kPrevious;
+  bool extrapolated = false;  // 14.13: the candidates continue edges (POSN method 12)
   int64_t mean[3] = {0, 0, 0};
   int64_t twist_mean[3] = {0, 0, 0};
   int64_t value[3] = {0, 0, 0};
@@ -246,7 +247,7 @@ void predict_vertex(const VertexCorners& mesh, uint32_t v, const uint32_t* q, co
 void predict_vertex_in_order(const VertexCorners& mesh, const uint32_t* order, const uint32_t* rank, uint32_t i,
                              const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
                              VertexPrediction* out, PositionGuide* guide = nullptr, bool quad_twist = false,
-                             bool triangle_twist = false, int shear = 0);
+                             bool triangle_twist = false, int shear = 0, bool extrapolate = false);
 
 // 14.3.3: the prediction from the candidates whose bit is set in mask (the
 // weighted mean), or the fallback if none is.

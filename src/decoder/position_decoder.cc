@@ -25,13 +25,13 @@ Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadCh
 
 // Section 14.1: the byte after vertex_count selects the method.
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (14.1)
-// Methods 4 - 11 (14.1, 14.6 - 14.12), 0x84 .. 0x8B, all with the start
-// byte; methods 8 - 11 with the features byte of 14.9 after it, method 11
-// with its shear and plane bytes after that (14.12); methods 9, 10 and 11
-// with a plane end with 14.10's plane.
-constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x8B;
+// Methods 4 - 12 (14.1, 14.6 - 14.13), 0x84 .. 0x8C, all with the start
+// byte; methods 8 - 12 with the features byte of 14.9 after it, methods 11
+// and 12 with their shear and plane bytes after that (14.12, 14.13);
+// methods 9 - 12 with a plane end with 14.10's plane.
+constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x8C;
 constexpr uint8_t kFeaturesSelector = 0x88, kMirrorSelector = 0x89, kNearMirrorSelector = 0x8A;
-constexpr uint8_t kShearSelector = 0x8B;
+constexpr uint8_t kShearSelector = 0x8B, kExtrapolationSelector = 0x8C;
 constexpr uint8_t kLargestShear = 16;
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
@@ -75,15 +75,19 @@ Status read_grid(ByteReader* in, QuantizationInfo* info) {
   return Status::Ok();
 }
 
-// Section 14.12: method 11's shear weight and the kind of its plane (0
-// none, 1 method 9's, 2 method 10's), before the plane itself.
+// Sections 14.12 and 14.13: method 11's shear weight (1 .. 16) or method
+// 12's (0 .. 16, 0 none), and the kind of its plane (0 none, 1 method 9's,
+// 2 method 10's), before the plane itself.
 Status read_shear(ByteReader* in, QuantizationInfo* info, bool* mirrored) {
+  const std::string method = "method " + std::to_string(info->method);
+  const char* section = info->method == 12 ? " (section 14.13)" : " (section 14.12)";
+  const uint8_t least = info->method == 12 ? 0 : 1;
   uint8_t shear = 0, plane = 0;
-  if (!in->get_u8(&shear)) return bad_payload("method 11's shear byte missing (section 14.12)");
-  if (shear < 1 || shear > kLargestShear)
-    return bad_payload("shear " + std::to_string(shear) + " outside 1..16 (section 14.12)");
-  if (!in->get_u8(&plane)) return bad_payload("method 11's plane byte missing (section 14.12)");
-  if (plane > 2) return bad_payload("plane " + std::to_string(plane) + " is not 0, 1 or 2 (section 14.12)");
+  if (!in->get_u8(&shear)) return bad_payload(method + "'s shear byte missing" + section);
+  if (shear < least || shear > kLargestShear)
+    return bad_payload("shear " + std::to_string(shear) + " outside " + std::to_string(least) + "..16" + section);
+  if (!in->get_u8(&plane)) return bad_payload(method + "'s plane byte missing" + section);
+  if (plane > 2) return bad_payload("plane " + std::to_string(plane) + " is not 0, 1 or 2" + section);
   info->shear = shear;
   info->near_images = plane == 2;
   *mirrored = plane != 0;
@@ -125,7 +129,9 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
     }
     bool mirrored = selector == kMirrorSelector || selector == kNearMirrorSelector;
     info->near_images = selector == kNearMirrorSelector;
-    if (selector == kFeaturesSelector || mirrored || selector == kShearSelector) {
+    const bool sheared = selector == kShearSelector || selector == kExtrapolationSelector;
+    info->edge_extrapolation = selector == kExtrapolationSelector;
+    if (selector == kFeaturesSelector || mirrored || sheared) {
       const std::string method = "method " + std::to_string(info->method);
       uint8_t features = 0;
       if (!in->get_u8(&features)) return bad_payload(method + "'s features byte missing (section 14.9)");
@@ -133,7 +139,7 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
         return bad_payload(method + "'s features " + std::to_string(features) +
                            " has a bit above bit 2 set (section 14.9)");
       info->features = features;
-      if (selector == kShearSelector)
+      if (sheared)
         if (Status s = read_shear(in, info, &mirrored); !s.ok()) return s;
       if (mirrored)
         if (Status s = read_mirror_plane(in, info); !s.ok()) return s;
@@ -149,7 +155,7 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
   if (selector >= 0x80)
     return Status(ErrorCode::kUnsupportedFeature,
                   "POSN: method " + std::to_string(selector - 0x80) +
-                      " is not defined (section 14.1 knows 0, 1 and 3 - 11)");
+                      " is not defined (section 14.1 knows 0, 1 and 3 - 12)");
   if (selector < 1 || selector > 30) return bad_payload("quantization bits " + std::to_string(selector) + " outside 1..30");
   info->method = 0;
   info->bits = selector;
@@ -263,7 +269,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
                              ClassStart start, PredictionOrder order, const PositionGuide* guide, bool quad_twist,
                              bool mask_contexts, bool triangle_twist, const MirrorPlane* mirror,
-                             const AttributeTwins* twins, int shear) {
+                             const AttributeTwins* twins, int shear, bool extrapolate) {
   if (!range_stream_justifies(count, size))  // section 14.1, before anything is reserved
     return Status(ErrorCode::kLimitExceeded, names.chunk + ": " + std::to_string(count) + " " + names.items +
                                                  " for " + std::to_string(size) +
@@ -276,6 +282,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   visit.twist_quads(quad_twist);
   visit.twist_triangles(triangle_twist);
   visit.shear(shear);
+  visit.extrapolate_edges(extrapolate);
   TriangleTwistWeight twist_weight;
   std::vector<uint32_t> activity(count);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start, mask_contexts));
@@ -333,7 +340,8 @@ Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, 
     if (Status s = decode_predicted_grid(in.cursor(), in.remaining(), faces, vertex_count, info->top.data(), names,
                                          quantized, start, order, nullptr, info->features & kQuadTwistFeature,
                                          info->features & kMaskContextsFeature, info->features & kTriangleTwistFeature,
-                                         info->mirror_axis >= 0 ? &plane : nullptr, nullptr, info->shear);
+                                         info->mirror_axis >= 0 ? &plane : nullptr, nullptr, info->shear,
+                                         info->edge_extrapolation);
         !s.ok())
       return s;
   } else {

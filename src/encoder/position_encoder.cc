@@ -33,6 +33,7 @@ constexpr uint8_t kFeaturesSelector = 0x88;                              // meth
 constexpr uint8_t kMirrorSelector = 0x89;                                // method 9 (14.1, 14.10)
 constexpr uint8_t kNearMirrorSelector = 0x8A;                            // method 10 (14.1, 14.11)
 constexpr uint8_t kShearSelector = 0x8B;                                 // method 11 (14.1, 14.12)
+constexpr uint8_t kExtrapolationSelector = 0x8C;                         // method 12 (14.1, 14.13)
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
 
 void bounding_box(const std::vector<float>& positions, QuantizedPositions* out) {
@@ -368,6 +369,7 @@ class VisitCoder {
     if (mirrors_) mirrors_->decoded(v, q_.data());
     ++stats_.vertices_by_kind[int(p_.kind)];
     stats_.bits_by_kind[int(p_.kind)] += rc_.meter.bits - before;
+    if (p_.extrapolated) ++stats_.extrapolated_vertices;
   }
 
   const std::vector<uint32_t>& q_;
@@ -408,13 +410,13 @@ size_t selector_offset(const QuantizedPositions& positions) {
 std::vector<uint8_t> predicted_payload(const QuantizedPositions& positions, ClassStart start, PredictionOrder order,
                                        bool quad_twist, bool mask_contexts, bool triangle_twist,
                                        const MirrorPlane* mirror, const std::vector<uint8_t>& stream,
-                                       int shear = 0) {
+                                       int shear = 0, bool extrapolate = false) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
   if (!range_stream_justifies(n, stream.size())) return {};
   std::vector<uint8_t> payload;
   put_varint(&payload, n);
-  if (order == PredictionOrder::kGeometry && shear > 0) {  // method 11 (14.12)
-    put_u8(&payload, kShearSelector);
+  if (order == PredictionOrder::kGeometry && (shear > 0 || extrapolate)) {  // methods 11 and 12 (14.12, 14.13)
+    put_u8(&payload, extrapolate ? kExtrapolationSelector : kShearSelector);
     put_u8(&payload, start == ClassStart::kGraded ? 1 : 0);
     put_u8(&payload, position_features(quad_twist, mask_contexts, triangle_twist));
     put_u8(&payload, uint8_t(shear));
@@ -468,19 +470,22 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
                                                 PositionStats* stats, CandidateChoice choice, ClassStart start,
                                                 PredictionOrder order, bool quad_twist, bool mask_contexts,
-                                                bool triangle_twist, const MirrorPlane* mirror, int shear) {
+                                                bool triangle_twist, const MirrorPlane* mirror, int shear,
+                                                bool extrapolate) {
   mask_contexts = mask_contexts && order == PredictionOrder::kGeometry;
   triangle_twist = triangle_twist && order == PredictionOrder::kGeometry;
-  if (order != PredictionOrder::kGeometry) mirror = nullptr, shear = 0;
+  if (order != PredictionOrder::kGeometry) mirror = nullptr, shear = 0, extrapolate = false;
   VertexCorners corners;
   corners.build(uint32_t(positions.q.size() / 3), faces.face_sizes, faces.corners);
   PredictionVisit visit(corners, order);
   visit.twist_quads(quad_twist);
   visit.twist_triangles(triangle_twist);
   visit.shear(shear);
+  visit.extrapolate_edges(extrapolate);
   return predicted_payload(
       positions, start, order, quad_twist, mask_contexts, triangle_twist, mirror,
-      encode_visit(positions.q, positions.top.data(), visit, stats, choice, start, mask_contexts, mirror), shear);
+      encode_visit(positions.q, positions.top.data(), visit, stats, choice, start, mask_contexts, mirror), shear,
+      extrapolate);
 }
 
 // find_mirror_plane's screen: every plane tried on about kMirrorScreen
@@ -781,12 +786,18 @@ std::vector<uint8_t> code_weighing_shear(const QuantizedPositions& positions, Pr
 std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions, const Mesh& faces,
                                              CandidateChoice choice, ClassStart start, PredictionOrder order,
                                              bool quad_twist, bool mask_contexts, bool triangle_twist,
-                                             bool mirror, bool near_mirror, bool shear, PositionStats* stats) {
+                                             bool mirror, bool near_mirror, bool shear, PositionStats* stats,
+                                             bool edge_extrapolation) {
   const PositionStats before = *stats;  // the coder adds its counts to stats
   // The corners, and 14.6's order, built once for every payload tried.
   VertexCorners corners;
   corners.build(uint32_t(positions.q.size() / 3), faces.face_sizes, faces.corners);
   PredictionVisit visit(corners, order);
+  // 14.13: the rule adds candidates only where 14.3.1 has none, so a visit
+  // in which it adds none codes what it would without it, and is written
+  // with the method before (used() below).
+  visit.extrapolate_edges(edge_extrapolation);
+  const auto used = [&](const PositionStats& s) { return s.extrapolated_vertices > before.extrapolated_vertices; };
   const bool twisted = order == PredictionOrder::kGeometry && quad_twist && has_quads(faces) &&
                        twist_pays(positions, &visit);
   visit.twist_quads(twisted);
@@ -806,7 +817,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   const std::vector<uint8_t> stream =
       code_weighing_shear(positions, &visit, weigh_shear, stats, choice, start, contexts, planed, &k);
   std::vector<uint8_t> best =
-      predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, planed, stream, k);
+      predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, planed, stream, k, used(*stats));
   visit.shear(k);  // the payloads below (none from kShearFrom vertices on) as this one
   int method = twisted ? 5 : order == PredictionOrder::kGeometry ? 4 : start == ClassStart::kGraded ? 3 : 1;
   if (contexts) method += 2;
@@ -817,9 +828,9 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     // No vertex paired beside its image: every decision is method 9's, and
     // only the selector differs (14.11); a file 1.12 decoders read. (With
     // the shear, method 11's plane byte, 14.12.)
-    if (k == 0)
+    if (k == 0 && !used(*stats))
       best[selector_offset(positions)] = kMirrorSelector;
-    else
+    else  // methods 11 and 12 (14.12, 14.13)
       best[selector_offset(positions) + 4] = 1;  // the plane byte, after selector, start, features and shear
     method = 9;
   } else if (method == 10 && positions.q.size() / 3 < kGradedStartBelow) {
@@ -829,9 +840,10 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     PositionStats exact_stats = before;
     MirrorPlane exact = plane;
     exact.near_images = false;
-    std::vector<uint8_t> exact_payload =
-        predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, &exact,
-                          encode_visit(positions.q, top, visit, &exact_stats, choice, start, contexts, &exact), k);
+    const std::vector<uint8_t> exact_stream =
+        encode_visit(positions.q, top, visit, &exact_stats, choice, start, contexts, &exact);
+    std::vector<uint8_t> exact_payload = predicted_payload(positions, start, order, twisted, contexts,
+                                                           triangles_twisted, &exact, exact_stream, k, used(exact_stats));
     if (!exact_payload.empty() && exact_payload.size() <= best.size()) {
       best = std::move(exact_payload);
       *stats = exact_stats;
@@ -845,9 +857,9 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     // they save (cylinder_ngon_caps: 4 - 10 bytes): methods 4 - 8 too, the
     // smaller kept.
     PositionStats plain_stats = before;
-    std::vector<uint8_t> plain =
-        predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, nullptr,
-                          encode_visit(positions.q, top, visit, &plain_stats, choice, start, contexts), k);
+    const std::vector<uint8_t> plain_stream = encode_visit(positions.q, top, visit, &plain_stats, choice, start, contexts);
+    std::vector<uint8_t> plain = predicted_payload(positions, start, order, twisted, contexts, triangles_twisted,
+                                                   nullptr, plain_stream, k, used(plain_stats));
     if (!plain.empty() && plain.size() <= best.size()) {
       best = std::move(plain);
       *stats = plain_stats;
@@ -873,6 +885,11 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     stats->shear = k;
     method = 11;
   }
+  if (used(*stats) && method >= 4) {  // methods 4 - 11 with the edge extrapolation (14.13)
+    stats->shear = k;
+    stats->edge_extrapolation = true;
+    method = 12;
+  }
   stats->method = method;
   stats->features = method >= 4 ? position_features(twisted, contexts, triangles_twisted) : 0;
   stats->graded_start = start == ClassStart::kGraded;
@@ -882,7 +899,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces, PositionMethod method,
                                       CandidateChoice choice, ClassStart start, PredictionOrder order,
                                       bool quad_twist, bool mask_contexts, bool triangle_twist, bool mirror,
-                                      bool near_mirror, bool shear, PositionStats* stats) {
+                                      bool near_mirror, bool shear, PositionStats* stats, bool edge_extrapolation) {
   *stats = PositionStats{};
   stats->step = positions.step;
   stats->top = positions.top;
@@ -895,7 +912,7 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const
   PositionStats predicted_stats = *stats;
   std::vector<uint8_t> predicted =
       encode_predicted_choice(positions, faces, choice, start, order, quad_twist, mask_contexts, triangle_twist,
-                              mirror, near_mirror, shear, &predicted_stats);
+                              mirror, near_mirror, shear, &predicted_stats, edge_extrapolation);
   if (predicted.empty()) {
     // Only vertices that all coincide cost so little (section 14.1); on
     // one point method 0's per-axis grid gives the same positions.

@@ -70,9 +70,9 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
 // Method 1, or 3 with the graded start (section 14), or 4 in the geometry
 // order (5 with quad_twist, 6 or 7 with mask_contexts too, 8 with
 // triangle_twist and the features of those two; 9 with a mirror plane
-// too, 14.10; 11 with a shear, 14.12), over the file's
-// faces; stats may be null. Empty when the vertices cost too little for
-// 14.1's bound (all on one point).
+// too, 14.10; 11 with a shear, 14.12; 12 with extrapolate, 14.13), over
+// the file's faces; stats may be null. Empty when the vertices cost too
+// little for 14.1's bound (all on one point).
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
                                                 PositionStats* stats,
                                                 CandidateChoice choice = CandidateChoice::kFewestBits,
@@ -80,7 +80,7 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
                                                 PredictionOrder order = PredictionOrder::kLabels,
                                                 bool quad_twist = false, bool mask_contexts = false,
                                                 bool triangle_twist = false, const MirrorPlane* mirror = nullptr,
-                                                int shear = 0);
+                                                int shear = 0, bool extrapolate = false);
 
 // 14.10's plane for POSN methods 9 and 10, if the vertices have one: of the planes
 // halfway across the grid on each axis (sum top - 2 .. top + 2) and the
@@ -108,13 +108,15 @@ inline PredictionOrder prediction_order(const EncodeOptions& options) {
 // either as 9 where mirror allows it and the vertices have a mirror plane
 // (14.10), as 10 where near_mirror allows it too (14.11; under 1,000
 // vertices the smaller of 9 and 10), any of 4 - 10 as 11 where shear
-// allows it and the sheared parallelograms code smaller (14.12), else 3
-// with `start` graded under 1,000 vertices, or 1), method 0, or the smaller
-// of the two when both can carry the grid. Fills stats.
+// allows it and the sheared parallelograms code smaller (14.12), any of
+// 4 - 11 as 12 where edge_extrapolation allows it and vertices without a
+// candidate then code smaller (14.13), else 3 with `start` graded under
+// 1,000 vertices, or 1), method 0, or the smaller of the two when both can
+// carry the grid. Fills stats.
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces,
                                       PositionMethod method, CandidateChoice choice, ClassStart start,
                                       PredictionOrder order, bool quad_twist, bool mask_contexts,
                                       bool triangle_twist, bool mirror, bool near_mirror, bool shear,
-                                      PositionStats* stats);
+                                      PositionStats* stats, bool edge_extrapolation = false);
 
 }  // namespace qmc
