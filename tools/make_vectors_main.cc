@@ -3900,12 +3900,7 @@ void write_posn12_vectors(VectorWriter* w) {
   w->valid("valid_posn12_plane_2_shear", rewritten_with_extrapolation(grid_file, 1, 16, &near_plane), &grid);
   // What the encoder writes on an open grid of quads, at 12 and 16 bits,
   // and with texture coordinates (their values take no extrapolation, 15.4).
-  Mesh open = qmc::tools::make_grid(24, 16);
-  for (size_t i = 0; i < open.positions.size(); i += 3) {  // bent: no mirror plane
-    const float x = open.positions[i], y = open.positions[i + 1];
-    open.positions[i] = x + 0.125f * x * x;
-    open.positions[i + 1] = y + 0.0625f * x * y;
-  }
+  const Mesh open = qmc::tools::make_bent_grid(24, 16);
   options.position_bits = 12;
   Mesh textured = open;
   qmc::tools::add_chart_texcoords(&textured);

@@ -145,9 +145,9 @@ struct EncodeOptions {
   // With geometry_order: a vertex that no rule of 14.3.1 predicts (on a
   // boundary of quads, where no face lies across) predicted by an edge at
   // its decoded neighbours continued to it, POSN method 12 (format 1.16,
-  // spec 14.13), written where it is smaller (halftunnel's positions 2 - 3 %
-  // smaller, suzanne's 2 - 3 %). false keeps methods 4 - 11, which 1.15
-  // decoders read.
+  // spec 14.13), written where the rule gives some vertex a candidate
+  // (halftunnel's positions 2 - 3 % smaller, suzanne's 2 - 3 %). false keeps
+  // methods 4 - 11, which 1.15 decoders read.
   bool edge_extrapolation = true;
   // Attribute values on a grid may take aTTR coding 4 (spec 15.9, 14.6's
   // order over the attribute mesh) where it is smaller than coding 0: 2-7 %
@@ -312,7 +312,6 @@ struct PositionStats {
   int features = 0;                // methods 4 - 11: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
   bool graded_start = false;       // methods 3 - 11: 14.4.1's start
   int shear = 0;                   // methods 11 and 12: 14.12's weight k of the shear (k / 16); 0 none
-  bool edge_extrapolation = false;  // method 12: 14.13's edge extrapolation
   uint32_t extrapolated_vertices = 0;  // method 12: the vertices 14.13's rule gave candidates
   int mirror = 0;                  // methods 9 - 11: 1 image vertices at the image (14.10), 2 a step away too (14.11)
   std::array<double, 3> step{};    // the grid's step per axis

@@ -56,7 +56,6 @@ class PredictionVisit {
   int shear() const { return shear_; }
   // POSN method 12 (14.13): a vertex without candidates extrapolates an edge; geometry order only.
   void extrapolate_edges(bool on = true) { extrapolate_ = on && !order_.empty(); }
-  bool extrapolates_edges() const { return extrapolate_; }
   // 14.3 for item(i), in order i = 0, 1, ... (the guide's orientation carries on).
   void predict(uint32_t i, const uint32_t* q, const uint32_t* activity, const uint32_t top[3],
                VertexPrediction* out) const {

@@ -367,26 +367,23 @@ namespace {
 constexpr int kExtrapolationCorners = 8;
 constexpr int kExtrapolationReach = 3;
 
-// 14.13: whether w is within kExtrapolationReach corners of v in the face of
-// one of v's first kExtrapolationCorners corners.
-bool near_in_faces(const VertexCorners& m, const uint32_t* corners, int count, uint32_t w) {
-  for (int i = 0; i < count; ++i)
-    for (int s = -kExtrapolationReach; s <= kExtrapolationReach; ++s)
-      if (s != 0 && m.along(corners[i], s) == w) return true;
-  return false;
-}
-
 // 14.13, POSN method 12, for a vertex that 14.3.1 gave no candidate: the
 // edge (w, u) continued past u to v, 2 u - w, for u in the neighbour list of
 // v's first 8 corners and w next to u at u's first 8 corners, both decoded,
-// w not near v in v's faces, each pair (u, w) once. Along a boundary, where
-// no face lies across for 14.3.1's strip, this is the boundary continued.
+// w not near v (within 3 corners of v in the faces of those corners), each
+// pair (u, w) once. Along a boundary, where no face lies across for 14.3.1's
+// strip, this is the boundary continued.
 template <class Order>
 void add_edge_extrapolations(const VertexCorners& m, const Visit<Order>& at, const uint32_t* q,
                              VertexPrediction* c) {
   const uint32_t v = at.v;
-  const uint32_t* v_corners = m.begin(v);
   const int v_count = int(std::min<ptrdiff_t>(m.end(v) - m.begin(v), kExtrapolationCorners));
+  uint32_t near[kExtrapolationCorners * 2 * kExtrapolationReach];
+  int near_count = 0;
+  for (int i = 0; i < v_count; ++i)
+    for (int s = -kExtrapolationReach; s <= kExtrapolationReach; ++s)
+      if (s != 0) near[near_count++] = m.along(m.begin(v)[i], s);
+  const auto is_near = [&](uint32_t w) { return std::find(near, near + near_count, w) != near + near_count; };
   uint32_t pairs[kMaxCandidates][2];
   int paired = 0;
   const VertexCorners::Sides* v_sides = m.sides(v);
@@ -397,7 +394,7 @@ void add_edge_extrapolations(const VertexCorners& m, const Visit<Order>& at, con
       const int u_count = int(std::min<ptrdiff_t>(m.end(u) - m.begin(u), kExtrapolationCorners));
       for (int j = 0; j < u_count; ++j)
         for (const uint32_t w : {u_sides[j].previous, u_sides[j].next}) {
-          if (!at.before(w) || w == u || near_in_faces(m, v_corners, v_count, w)) continue;
+          if (!at.before(w) || w == u || is_near(w)) continue;
           bool seen = false;
           for (int k = 0; k < paired; ++k) seen = seen || (pairs[k][0] == u && pairs[k][1] == w);
           if (seen) continue;

@@ -887,7 +887,6 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   }
   if (used(*stats) && method >= 4) {  // methods 4 - 11 with the edge extrapolation (14.13)
     stats->shear = k;
-    stats->edge_extrapolation = true;
     method = 12;
   }
   stats->method = method;

@@ -109,8 +109,8 @@ inline PredictionOrder prediction_order(const EncodeOptions& options) {
 // (14.10), as 10 where near_mirror allows it too (14.11; under 1,000
 // vertices the smaller of 9 and 10), any of 4 - 10 as 11 where shear
 // allows it and the sheared parallelograms code smaller (14.12), any of
-// 4 - 11 as 12 where edge_extrapolation allows it and vertices without a
-// candidate then code smaller (14.13), else 3 with `start` graded under
+// 4 - 11 as 12 where edge_extrapolation allows it and the rule gives some
+// vertex a candidate (14.13), else 3 with `start` graded under
 // 1,000 vertices, or 1), method 0, or the smaller of the two when both can
 // carry the grid. Fills stats.
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces,

@@ -364,6 +364,16 @@ Mesh make_grid(int nx, int ny) {
   return mesh;
 }
 
+Mesh make_bent_grid(int nx, int ny) {
+  Mesh m = make_grid(nx, ny);
+  for (size_t i = 0; i < m.positions.size(); i += 3) {
+    const float x = m.positions[i], y = m.positions[i + 1];
+    m.positions[i] = x + 0.125f * x * x;
+    m.positions[i + 1] = y + 0.0625f * x * y;
+  }
+  return m;
+}
+
 Mesh make_prism(int n) {
   const uint32_t sides = static_cast<uint32_t>(std::max(n, 3));
   Mesh mesh;

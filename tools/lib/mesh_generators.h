@@ -42,6 +42,10 @@ qmc::Mesh make_torus(int major, int minor, float R = 1.f, float r = 0.35f);
 // bump, faces counter-clockwise seen from +z. Sizes below 1 are treated as 1.
 qmc::Mesh make_grid(int nx, int ny);
 
+// make_grid bent in the plane (x + x^2 / 8, y + x y / 16), so that no plane
+// mirrors it: its boundary takes POSN method 12's edge extrapolation (14.13).
+qmc::Mesh make_bent_grid(int nx, int ny);
+
 // Circular terraces: an n x n grid over [0,1]^2 (n >= 1) of triangles, each
 // cell split along a diagonal the seed picks, at height level / (4 steps)
 // with level = floor(steps r^2 / (2 n^2)), r^2 = (2i - n)^2 + (2j - n)^2:
