@@ -6,6 +6,7 @@
 // existing files byte-identical as long as the encoder's output does not
 // change; `git diff conformance/` shows if it did, and such a change must
 // not be committed over existing vectors (give new vectors new names).
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -23,6 +24,7 @@
 #include "bitio/polygon_symbol_coding.h"
 #include "bitio/polygon_symbols.h"
 #include "bitio/range_coder.h"
+#include "bitio/splitmix64_mix.h"
 #include "bitio/quad_codings.h"
 #include "analytic_loop_files.h"
 #include "attribute_generators.h"
@@ -3878,6 +3880,32 @@ Mesh quads_over_triangles(uint32_t n) {
   return m;
 }
 
+// Faces of 3 to 9 corners over windows of 14 consecutive vertices, a
+// fifth of them also through vertex 0 (the hub, of many corners), at
+// random integer positions: vertices of many corners, faces of every degree
+// beside them and more (u, w) pairs than 14.13 keeps, where a grid or a
+// fan shows only the first boundary row (splitmix64, so every platform
+// makes the same mesh).
+Mesh windowed_polygon_soup(uint32_t vertex_count, uint32_t face_count, uint64_t seed) {
+  uint64_t state = seed;
+  const auto next = [&state](uint32_t n) { return uint32_t(qmc::splitmix64_mix(++state) % n); };
+  Mesh m;
+  for (uint32_t v = 0; v < vertex_count; ++v)
+    m.positions.insert(m.positions.end(), {float(next(1001)), float(next(1001)), float(next(1001))});
+  static constexpr uint32_t kDegrees[10] = {3, 3, 4, 4, 4, 5, 6, 7, 8, 9};
+  for (uint32_t f = 0; f < face_count; ++f) {
+    const uint32_t d = kDegrees[next(10)], first = next(vertex_count - 13);
+    std::vector<uint32_t> window(14);
+    for (uint32_t i = 0; i < 14; ++i) window[i] = first + i;
+    for (uint32_t i = 0; i < d; ++i) std::swap(window[i], window[i + next(14 - i)]);  // the first d at random
+    window.resize(d);
+    if (next(5) == 0 && std::find(window.begin(), window.end(), 0u) == window.end()) window[0] = 0;
+    m.face_sizes.push_back(d);
+    m.corners.insert(m.corners.end(), window.begin(), window.end());
+  }
+  return m;
+}
+
 void write_posn12_vectors(VectorWriter* w) {
   using qmc::ErrorCode;
   qmc::EncodeOptions options;  // what `qmc encode` writes
@@ -3927,6 +3955,19 @@ void write_posn12_vectors(VectorWriter* w) {
              ErrorCode::kBadChunkPayload);
   w->invalid("invalid_posn12_truncated_stream",
              with_posn(std::vector<uint8_t>(payload.begin(), payload.end() - 16)), ErrorCode::kTruncated);
+
+  // Added after the spec-only check of 14.13, for the readings the vectors
+  // above left open: vertices of more than 8 corners predicted by the rule,
+  // faces of degree 5 to 9 beside them, more pairs than the 4 candidates
+  // kept, and 14.8's contexts already learning.
+  // Two seeds: each tells apart readings the other does not (v's first 8
+  // corners against 9 or all, the near test over v's first 8 corners or all
+  // of them, u's first 8 corners against 9 or all).
+  for (uint64_t seed : {15, 16}) {
+    const Mesh soup = windowed_polygon_soup(400, 333, seed);
+    w->valid("valid_posn12_polygon_soup_seed_" + std::to_string(seed),
+             rewritten_with_extrapolation(encode_with(soup, unit, "windowed polygon soup"), 7, 8), &soup);
+  }
 }
 
 // Section 15.9: aTTR coding 4, what `qmc encode` writes when it is the
