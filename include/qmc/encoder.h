@@ -308,16 +308,16 @@ struct GimEncodeStats {
 
 // Sections 6 and 14: how the positions were coded.
 struct PositionStats {
-  int method = 0;                  // POSN method: 0 deltas, 1 or 3 - 11 predicted
-  int features = 0;                // methods 4 - 11: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
-  bool graded_start = false;       // methods 3 - 11: 14.4.1's start
+  int method = 0;                  // POSN method: 0 deltas, 1 or 3 - 12 predicted
+  int features = 0;                // methods 4 - 12: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
+  bool graded_start = false;       // methods 3 - 12: 14.4.1's start
   int shear = 0;                   // methods 11 and 12: 14.12's weight k of the shear (k / 16); 0 none
   uint32_t extrapolated_vertices = 0;  // method 12: the vertices 14.13's rule gave candidates
-  int mirror = 0;                  // methods 9 - 11: 1 image vertices at the image (14.10), 2 a step away too (14.11)
+  int mirror = 0;                  // methods 9 - 12: 1 image vertices at the image (14.10), 2 a step away too (14.11)
   std::array<double, 3> step{};    // the grid's step per axis
   std::array<uint32_t, 3> top{};   // the largest grid coordinate per axis
   double error_bound = 0;          // Euclidean bound of the rounding: |step| / 2
-  // Methods 1, 3 - 9: vertices and information content (bits, -log2 of the
+  // Methods 1, 3 - 12: vertices and information content (bits, -log2 of the
   // coded decisions' probabilities) by prediction kind (PredictionKind: 14.3.2,
   // and 4 the mirror candidate of 14.10).
   std::array<uint32_t, 5> vertices_by_kind{};

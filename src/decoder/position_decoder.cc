@@ -94,7 +94,7 @@ Status read_shear(ByteReader* in, QuantizationInfo* info, bool* mirrored) {
   return Status::Ok();
 }
 
-// Section 14.10: the plane of methods 9 - 11, its axis byte and sum
+// Section 14.10: the plane of methods 9 - 12, its axis byte and sum
 // (checked against the grid's top once read_grid has it).
 Status read_mirror_plane(ByteReader* in, QuantizationInfo* info) {
   const std::string method = "method " + std::to_string(info->method);
