@@ -100,9 +100,9 @@ check format-1.12-info-json 0 "$qmc" info --json "$work/f112.qmc"
 contains format-1.12-plane "$work/out" '"position_method":9,"position_features":4,"position_mirror_axis":[0-2],'
 if [ "$(stat -c %s "$work/f112.qmc")" -lt "$(stat -c %s "$work/f111.qmc")" ]; then passed=$((passed + 1)); else
   failed=$((failed + 1)); echo "FAIL format-1.12-smaller: method 9's file is not smaller than method 8's"; fi
-# Method 10 (14.11), what encode writes by default: the torus at 14 bits, whose halves are a step apart
-# where the plane falls between grid points.
-check format-1.13 0 "$qmc" encode "$work/tritorus.obj" "$work/f113.qmc" -q 14 --quiet
+# Method 10 (14.11), what encode writes up to format 1.16 (1.17: method 13): the torus at 14 bits, whose
+# halves are a step apart where the plane falls between grid points.
+check format-1.13 0 "$qmc" encode "$work/tritorus.obj" "$work/f113.qmc" -q 14 --quiet --format 1.16
 check format-1.13-info 0 "$qmc" info "$work/f113.qmc"
 contains format-1.13-written "$work/out" "format 1.13"
 contains format-1.13-method-10 "$work/out" "predicted (spec 14, method 10: geometry order, triangles' twist, mirror images a step away)"
@@ -118,7 +118,7 @@ for vector in "$vectors"/invalid_*.qmc; do
 done
 if [ -z "$info_crashed" ]; then passed=$((passed + 1)); else
   failed=$((failed + 1)); echo "FAIL info-invalid-vectors:$info_crashed"; fi
-check format-1.17-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f117.qmc" --format 1.17
+check format-1.18-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f118.qmc" --format 1.18
 # Spec 14.13: an open grid of quads, whose boundary the geometry order walks first, takes POSN method 12
 # (format 1.16); --format 1.15 keeps method 11 or below, in a larger file.
 "$meshgen" grid 24 16 "$work/grid.obj" >/dev/null
@@ -132,9 +132,20 @@ contains format-1.15-grid-no-method-12 "$work/out" 'format 1\.\([4-9]\|1[0-5]\)$
 if [ "$(stat -c %s "$work/f116.qmc")" -ge "$(stat -c %s "$work/f115g.qmc")" ]; then
   failed=$((failed + 1)); echo "FAIL format-1.16-smaller: method 12's file is not smaller than the 1.15 file"; fi
 check verify-method-12 0 "$qmc" verify "$work/grid.obj" "$work/f116.qmc"
+# Spec 14.14: from 1,000 vertices the class probabilities per axis, POSN method 13 (format 1.17);
+# --format 1.16 keeps method 12 or below.
+"$meshgen" grid 40 30 "$work/grid1271.obj" >/dev/null
+check format-1.17 0 "$qmc" encode "$work/grid1271.obj" "$work/f117.qmc" --quiet
+check format-1.17-info 0 "$qmc" info "$work/f117.qmc"
+contains format-1.17-written "$work/out" "format 1.17"
+contains format-1.17-method-13 "$work/out" "method 13: geometry order.*class probabilities per axis"
+check format-1.16-grid 0 "$qmc" encode "$work/grid1271.obj" "$work/f116g.qmc" --quiet --format 1.16
+check format-1.16-grid-info 0 "$qmc" info "$work/f116g.qmc"
+contains format-1.16-grid-no-method-13 "$work/out" 'format 1\.\([4-9]\|1[0-6]\)$'
+check verify-method-13 0 "$qmc" verify "$work/grid1271.obj" "$work/f117.qmc"
 # Spec 14.12: an irregular triangulation takes POSN method 11 (format 1.15); --format 1.14 keeps method 10 or below.
 "$meshgen" jittered-sphere 3 11 "$work/jittered.obj" >/dev/null
-check format-1.15 0 "$qmc" encode "$work/jittered.obj" "$work/f115.qmc" --quiet
+check format-1.15 0 "$qmc" encode "$work/jittered.obj" "$work/f115.qmc" --quiet --format 1.16
 check format-1.15-info 0 "$qmc" info "$work/f115.qmc"
 contains format-1.15-written "$work/out" "format 1.15"
 contains format-1.15-method-11 "$work/out" "method 11: geometry order.*parallelograms sheared by [0-9]*/16"
@@ -184,7 +195,7 @@ check soup-encode 0 "$qmc" encode "$work/soup.off" "$work/soup.qmc" -q 16 --text
 check soup-verify 0 "$qmc" verify "$work/soup.off" "$work/soup.qmc"
 check verify-wrong-mesh 1 "$qmc" verify "$work/soup.off" "$work/torus.qmc"
 check help 0 "$qmc" --help
-contains help-version "$work/out" "format version 1.16, spec/qmc-format.md"
+contains help-version "$work/out" "format version 1.17, spec/qmc-format.md"
 check encode-help 0 "$qmc" encode --help
 contains help-default-bits "$work/out" "1/4096"
 check no-args 2 "$qmc"
@@ -381,7 +392,7 @@ check decode-groups-off-refused 3 "$qmc" decode "$work/groups.qmc" "$work/groups
 { echo "v 0 0 0 1 0 0"; echo "v 1 0 0 0 1 0"; echo "v 0 1 0 0 0 1 1"; echo "f 1 2 3"; echo "l 1 2"; } >"$work/colours.obj"
 check encode-colours-refused 3 "$qmc" encode "$work/colours.obj" "$work/colours.qmc"
 contains encode-colours-refused-names-flag "$work/err" "pass --drop-unsupported"
-contains encode-colours-refused-names-format "$work/err" "holds what format 1.16 cannot carry yet"
+contains encode-colours-refused-names-format "$work/err" "holds what format 1.17 cannot carry yet"
 contains encode-colours-refused-colours "$work/err" "  ignored per-vertex colours on v lines of 7 numbers: 1"
 contains encode-colours-refused-partial "$work/err" "  ignored per-vertex colours on v lines: only 2 of 3 vertices have one"
 check encode-colours-refused-no-output 0 test ! -e "$work/colours.qmc"

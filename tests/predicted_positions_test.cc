@@ -307,8 +307,11 @@ struct WithAndWithout {
 
 WithAndWithout with_and_without(const Mesh& mesh, EncodeOptions options, bool EncodeOptions::*feature) {
   // Methods 5 - 8 against the method before them: without 14.10's mirror
-  // candidate (method 9), which these symmetric meshes would take.
+  // candidate (method 9), which these symmetric meshes would take, and
+  // without 14.14's class probabilities per axis (method 13), which every
+  // mesh of 1,000 vertices or more takes.
   if (feature != &EncodeOptions::mirror_symmetry) options.mirror_symmetry = false;
+  if (feature != &EncodeOptions::axis_class_probabilities) options.axis_class_probabilities = false;
   WithAndWithout r;
   r.with_bytes = encode_with(mesh, options);
   r.with = decode_all(r.with_bytes);
@@ -544,6 +547,7 @@ TEST(GeometryOrder, MethodFourCarriesMethodOnesIntegers) {
   const Mesh sphere = tools::triangulated(tools::make_refined_sphere(3));  // 3,842 vertices: start 0
   EncodeOptions options;
   options.mirror_symmetry = false;  // the sphere is symmetric: method 9 (14.10) has tests of its own
+  options.axis_class_probabilities = false;  // method 13 (14.14) too
   EncodeStats stats;
   const DecodedFile four = decode_all(encode_with(sphere, options, &stats));
   EXPECT_EQ(four.quantization.method, 4);
@@ -680,6 +684,7 @@ TEST(MaskContexts, EncoderWritesMethodSixWhereItIsSmaller) {
   EncodeOptions options;
   options.position_bits = 16;
   options.mirror_symmetry = false;  // the terraces are symmetric: method 9 (14.10) has tests of its own
+  options.axis_class_probabilities = false;  // method 13 (14.14) too
   const WithAndWithout r = with_and_without(tools::make_terraces(100, 4, 9), options, &EncodeOptions::mask_contexts);
   EXPECT_EQ(r.with.quantization.method, 6);
   EXPECT_EQ(r.with.version_minor, 10);
@@ -734,6 +739,7 @@ TEST(QuadTwist, EncoderWritesMethodFiveWhereItIsSmaller) {
   // A mesh of triangles has no quad to twist: method 4, format 1.8 (without 14.10's mirror candidate).
   EncodeOptions no_mirror;
   no_mirror.mirror_symmetry = false;
+  no_mirror.axis_class_probabilities = false;  // nor 14.14's probabilities per axis (method 13)
   const DecodedFile triangles = decode_all(encode_with(tools::triangulated(sphere), no_mirror));
   EXPECT_EQ(triangles.quantization.method, 4);
 }
@@ -1025,9 +1031,9 @@ TEST(EdgeExtrapolation, EncoderWritesMethodTwelveWhereItPays) {
   EXPECT_NE(decode_all(encode_with(torus, EncodeOptions{})).quantization.method, 12);
 }
 
-// Method 12 with every shear (0 included), feature and kind of plane
-// decodes to the integers it was given.
-TEST(EdgeExtrapolation, RoundTripsEveryPlaneFeatureAndShear) {
+// Method 12, or 13 with axis_classes, with every shear (0 included), feature
+// and kind of plane decodes to the integers it was given.
+void expect_every_plane_feature_and_shear_round_trips(bool axis_classes) {
   const Mesh grid = tools::make_grid(12, 8);
   QuantizedPositions q;
   ASSERT_TRUE(quantize_positions(grid.positions, EncodeOptions{}, &q).ok());
@@ -1038,21 +1044,61 @@ TEST(EdgeExtrapolation, RoundTripsEveryPlaneFeatureAndShear) {
         const std::vector<uint8_t> payload = encode_predicted_positions(
             q, grid, nullptr, CandidateChoice::kFewestBits, ClassStart::kGraded, PredictionOrder::kGeometry,
             features & kQuadTwistFeature, features & kMaskContextsFeature, features & kTriangleTwistFeature,
-            plane == 0 ? nullptr : &mirror, k, true);
+            plane == 0 ? nullptr : &mirror, k, true, axis_classes);
         QuantizationInfo info;
         std::vector<uint32_t> decoded;
         std::vector<float> positions;
         ASSERT_TRUE(decode_positions(payload.data(), payload.size(), grid, grid.vertex_count(), &info, &decoded,
                                      &positions)
                         .ok());
-        EXPECT_EQ(info.method, 12);
+        EXPECT_EQ(info.method, axis_classes ? 13 : 12);
         EXPECT_TRUE(info.edge_extrapolation);
+        EXPECT_EQ(info.axis_classes, axis_classes);
         EXPECT_EQ(info.shear, k);
         EXPECT_EQ(info.features, features);
         EXPECT_EQ(info.mirror_axis, plane == 0 ? -1 : 0);
         EXPECT_EQ(decoded, q.q) << "k " << k << " features " << features << " plane " << plane;
       }
 }
+
+TEST(EdgeExtrapolation, RoundTripsEveryPlaneFeatureAndShear) { expect_every_plane_feature_and_shear_round_trips(false); }
+
+// Spec 14.14's example: the shared probability 1700 and the axis's 1024
+// give p = 1362; a 1 then moves them to 1647 and 992.
+TEST(AxisClasses, SpecExample) {
+  EXPECT_EQ(mixed_class_probability(1700, 1024), 1362u);
+  uint16_t shared = 1700, own = 1024;
+  RangeEncoder encoder;
+  encoder.code_fixed(1, mixed_class_probability(shared, own));
+  encoder.adapt(&shared, 1);
+  encoder.adapt(&own, 1);
+  EXPECT_EQ(shared, 1647);
+  EXPECT_EQ(own, 992);
+  // The mean of two probabilities within 31 .. 2017 stays there (13.5.2).
+  EXPECT_EQ(mixed_class_probability(31, 31), 31u);
+  EXPECT_EQ(mixed_class_probability(2017, 2017), 2017u);
+}
+
+// The encoder writes method 13 from 1,000 vertices (a torus of triangles,
+// whose axes differ), with the integers method 12's file carries and in
+// fewer bytes; without axis_class_probabilities, or under 1,000 vertices, a
+// method below 13.
+TEST(AxisClasses, EncoderWritesMethodThirteenFromAThousandVertices) {
+  const Mesh torus = tools::triangulated(tools::make_torus(48, 24));  // 1,152 vertices
+  const WithAndWithout r = with_and_without(torus, EncodeOptions{}, &EncodeOptions::axis_class_probabilities);
+  EXPECT_EQ(r.with.quantization.method, 13);
+  EXPECT_TRUE(r.with.quantization.axis_classes);
+  EXPECT_TRUE(r.with.quantization.edge_extrapolation);
+  EXPECT_EQ(r.with.version_minor, 17);
+  EXPECT_LT(r.without.quantization.method, 13);
+  EXPECT_FALSE(r.without.quantization.axis_classes);
+  EXPECT_EQ(r.with.quantized, r.without.quantized);
+  EXPECT_LT(r.with_bytes.size(), r.without_bytes.size());
+  const Mesh small = tools::triangulated(tools::make_torus(30, 20));  // 600 vertices
+  EXPECT_LT(decode_all(encode_with(small, EncodeOptions{})).quantization.method, 13);
+}
+
+TEST(AxisClasses, RoundTripsEveryPlaneFeatureAndShear) { expect_every_plane_feature_and_shear_round_trips(true); }
 
 }  // namespace
 }  // namespace qmc

@@ -169,7 +169,8 @@ std::string position_method_traits(int method, int features, int mirror, int she
   if (mirror == 1) traits += ", mirror images";
   if (mirror == 2) traits += ", mirror images a step away";
   if (shear > 0) traits += ", parallelograms sheared by " + std::to_string(shear) + "/16";
-  if (method == 12) traits += ", edges extrapolated";
+  if (method >= 12) traits += ", edges extrapolated";
+  if (method == 13) traits += ", class probabilities per axis";
   return traits;
 }
 

@@ -68,7 +68,8 @@ void print_predicted_positions(const DecodedFile& f, bool decoded) {
                                  q.graded_start ? ClassStart::kGraded : ClassStart::kFlat,
                                  q.method >= 4 ? PredictionOrder::kGeometry : PredictionOrder::kLabels,
                                  q.features & 1, q.features & 2, q.features & 4,
-                                 q.mirror_axis >= 0 ? &plane : nullptr, q.shear, q.edge_extrapolation)
+                                 q.mirror_axis >= 0 ? &plane : nullptr, q.shear, q.edge_extrapolation,
+                                 q.axis_classes)
           .size();
   static const char* const kKinds[5] = {"previous vertex", "neighbour mean", "one rule", "several rules",
                                          "mirror"};

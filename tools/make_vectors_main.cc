@@ -57,11 +57,13 @@ namespace {
 // where they predict positions (format 1.7's method 3 and 1.8's method 4
 // came later); they stay so.
 // POSN method 11 (14.12) came after every vector but the posn11 ones, which
-// ask encode_posn_method for it, and method 12 (14.13) after those: the
-// others keep the encoder's choices of before.
+// ask encode_posn_method for it, method 12 (14.13) after those and method
+// 13 (14.14) after the posn12 ones: the others keep the encoder's choices of
+// before.
 qmc::EncodeOptions without_shear(qmc::EncodeOptions options) {
   options.shear = false;
   options.edge_extrapolation = false;
+  options.axis_class_probabilities = false;
   return options;
 }
 
@@ -1465,6 +1467,7 @@ std::vector<uint8_t> encode_posn_method(const Mesh& mesh, const qmc::EncodeOptio
   qmc::EncodeStats stats;
   qmc::EncodeOptions asked = method >= 11 ? options : without_shear(options);
   if (method == 11) asked.edge_extrapolation = false;
+  if (method <= 12) asked.axis_class_probabilities = false;
   if (qmc::Status s = qmc::encode(mesh, asked, &out, &stats); !s.ok() || stats.positions.method != method) {
     std::fprintf(stderr, "qmc-make-vectors: POSN method %d: %s\n", method, s.to_string().c_str());
     std::exit(3);
@@ -3676,10 +3679,11 @@ qmc::MirrorPlane mirror_plane_of(const std::vector<uint8_t>& file, bool near) {
 
 // A file's POSN recoded in the geometry order with method 8's features,
 // shear k (0: none), a mirror plane if given, and 14.13's edge extrapolation
-// if asked: method 11 or 12 (14.12, 14.13), in a file of that version.
-// stats, if given, gets the coding's counts.
+// if asked: method 11 or 12 (14.12, 14.13), or 13 with axis_classes (14.14),
+// in a file of that version. stats, if given, gets the coding's counts.
 std::vector<uint8_t> recoded_posn(const std::vector<uint8_t>& file, uint8_t features, int k,
-                                  const qmc::MirrorPlane* plane, bool extrapolate, qmc::PositionStats* stats = nullptr) {
+                                  const qmc::MirrorPlane* plane, bool extrapolate, qmc::PositionStats* stats = nullptr,
+                                  bool axis_classes = false) {
   Chunks c = split_chunks(file);
   Mesh faces;
   qmc::QuantizedPositions grid;
@@ -3689,8 +3693,8 @@ std::vector<uint8_t> recoded_posn(const std::vector<uint8_t>& file, uint8_t feat
   c[find_chunk(c, qmc::kChunkPositions)].payload = qmc::encode_predicted_positions(
       grid, faces, stats, qmc::CandidateChoice::kFewestBits, start, qmc::PredictionOrder::kGeometry,
       features & qmc::kQuadTwistFeature, features & qmc::kMaskContextsFeature,
-      features & qmc::kTriangleTwistFeature, plane, k, extrapolate);
-  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, uint8_t(extrapolate ? 16 : 15)};
+      features & qmc::kTriangleTwistFeature, plane, k, extrapolate, axis_classes);
+  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, uint8_t(axis_classes ? 17 : extrapolate ? 16 : 15)};
   return join_chunks(c);
 }
 
@@ -3906,26 +3910,67 @@ Mesh windowed_polygon_soup(uint32_t vertex_count, uint32_t face_count, uint64_t 
   return m;
 }
 
-void write_posn12_vectors(VectorWriter* w) {
+// 14.1's checks of the shear and plane bytes of methods 12 and 13 (a shear
+// of 17, a plane of 3, a features bit 3, the shear or plane byte missing)
+// and 14.4's end of stream, on `file`, an encoder's file of the family's
+// method with no mirror plane.
+void write_shear_and_plane_invalids(VectorWriter* w, const std::string& family, const std::vector<uint8_t>& file,
+                                    size_t vertex_count) {
   using qmc::ErrorCode;
-  qmc::EncodeOptions options;  // what `qmc encode` writes
+  const ChunkReplacer with_posn(file, qmc::kChunkPositions);
+  const std::vector<uint8_t> payload = with_posn.payload();
+  std::vector<uint8_t> count;
+  qmc::put_varint(&count, vertex_count);
+  const size_t features = count.size() + 2, shear = features + 1, plane = shear + 1;
+  const std::string prefix = "invalid_" + family + "_";
+  std::vector<uint8_t> p = payload;
+  p[shear] = 17;
+  w->invalid(prefix + "shear_17", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  p[plane] = 3;
+  w->invalid(prefix + "plane_3", with_posn(p), ErrorCode::kBadChunkPayload);
+  p = payload;
+  p[features] = 8;
+  w->invalid(prefix + "features_bit_3", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid(prefix + "shear_missing", with_posn(std::vector<uint8_t>(payload.begin(), payload.begin() + long(shear))),
+             ErrorCode::kBadChunkPayload);
+  w->invalid(prefix + "plane_missing", with_posn(std::vector<uint8_t>(payload.begin(), payload.begin() + long(plane))),
+             ErrorCode::kBadChunkPayload);
+  w->invalid(prefix + "truncated_stream", with_posn(std::vector<uint8_t>(payload.begin(), payload.end() - 16)),
+             ErrorCode::kTruncated);
+}
+
+// Spec 14.13's example, quads over triangles with every feature and a shear
+// (8), and a mirrored grid with each kind of plane (the second with shear
+// 16), each recoded by `recode` (its features, shear and plane): the small
+// vectors of POSN methods 12 and 13.
+void write_recoded_small_meshes(
+    VectorWriter* w, const std::string& family, const qmc::EncodeOptions& options,
+    const std::function<std::vector<uint8_t>(const std::vector<uint8_t>&, uint8_t, int, const qmc::MirrorPlane*)>&
+        recode) {
   const qmc::EncodeOptions unit = on_unit_grid(options);
+  const std::string prefix = "valid_" + family + "_";
   const Mesh example = extrapolation_example();
-  w->valid("valid_posn12_example", rewritten_with_extrapolation(encode_with(example, unit, "extrapolation example"), 0, 0),
-           &example);
-  // The rule beside 14.12's shear, 14.7's twist of quads, 14.9's twist of
-  // triangles and 14.8's contexts, on quads over triangles, and with a
-  // plane of each kind on a mirrored grid of quads.
+  w->valid(prefix + "example", recode(encode_with(example, unit, "extrapolation example"), 0, 0, nullptr), &example);
   const Mesh mixed = quads_over_triangles(12);
   const std::vector<uint8_t> mixed_file = encode_with(mixed, unit, "quads over triangles");
-  w->valid("valid_posn12_every_feature_and_shear", rewritten_with_extrapolation(mixed_file, 7, 8), &mixed);
+  w->valid(prefix + "every_feature_and_shear", recode(mixed_file, 7, 8, nullptr), &mixed);
   const Mesh grid = qmc::tools::make_mirrored_across_x(qmc::tools::make_grid(6, 4));
   const std::vector<uint8_t> grid_file = encode_with(grid, options, "mirrored grid");
   const qmc::MirrorPlane exact_plane = mirror_plane_of(grid_file, false);
-  w->valid("valid_posn12_plane_1", rewritten_with_extrapolation(grid_file, 0, 0, &exact_plane), &grid);
+  w->valid(prefix + "plane_1", recode(grid_file, 0, 0, &exact_plane), &grid);
   qmc::MirrorPlane near_plane = exact_plane;
   near_plane.near_images = true;
-  w->valid("valid_posn12_plane_2_shear", rewritten_with_extrapolation(grid_file, 1, 16, &near_plane), &grid);
+  w->valid(prefix + "plane_2_shear", recode(grid_file, 1, 16, &near_plane), &grid);
+}
+
+void write_posn12_vectors(VectorWriter* w) {
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  const qmc::EncodeOptions unit = on_unit_grid(options);
+  write_recoded_small_meshes(w, "posn12", options, [](const std::vector<uint8_t>& file, uint8_t features, int k,
+                                                      const qmc::MirrorPlane* plane) {
+    return rewritten_with_extrapolation(file, features, k, plane);
+  });
   // What the encoder writes on an open grid of quads, at 12 and 16 bits,
   // and with texture coordinates (their values take no extrapolation, 15.4).
   const Mesh open = qmc::tools::make_bent_grid(24, 16);
@@ -3934,27 +3979,7 @@ void write_posn12_vectors(VectorWriter* w) {
   qmc::tools::add_chart_texcoords(&textured);
   const std::vector<uint8_t> file = write_encoder_files(w, "posn12", "open_grid", open, textured, options, 12);
 
-  // 14.1's checks of method 12's bytes, and 14.4's end of stream.
-  const ChunkReplacer with_posn(file, qmc::kChunkPositions);
-  const std::vector<uint8_t> payload = with_posn.payload();
-  std::vector<uint8_t> count;
-  qmc::put_varint(&count, open.vertex_count());
-  const size_t features = count.size() + 2, shear = features + 1, plane = shear + 1;
-  std::vector<uint8_t> p = payload;
-  p[shear] = 17;
-  w->invalid("invalid_posn12_shear_17", with_posn(p), ErrorCode::kBadChunkPayload);
-  p = payload;
-  p[plane] = 3;
-  w->invalid("invalid_posn12_plane_3", with_posn(p), ErrorCode::kBadChunkPayload);
-  p = payload;
-  p[features] = 8;
-  w->invalid("invalid_posn12_features_bit_3", with_posn(p), ErrorCode::kBadChunkPayload);
-  w->invalid("invalid_posn12_shear_missing", with_posn(std::vector<uint8_t>(payload.begin(), payload.begin() + long(shear))),
-             ErrorCode::kBadChunkPayload);
-  w->invalid("invalid_posn12_plane_missing", with_posn(std::vector<uint8_t>(payload.begin(), payload.begin() + long(plane))),
-             ErrorCode::kBadChunkPayload);
-  w->invalid("invalid_posn12_truncated_stream",
-             with_posn(std::vector<uint8_t>(payload.begin(), payload.end() - 16)), ErrorCode::kTruncated);
+  write_shear_and_plane_invalids(w, "posn12", file, open.vertex_count());
 
   // Added after the spec-only check of 14.13, for the readings the vectors
   // above left open: vertices of more than 8 corners predicted by the rule,
@@ -3968,6 +3993,34 @@ void write_posn12_vectors(VectorWriter* w) {
     w->valid("valid_posn12_polygon_soup_seed_" + std::to_string(seed),
              rewritten_with_extrapolation(encode_with(soup, unit, "windowed polygon soup"), 7, 8), &soup);
   }
+}
+
+// A file's POSN recoded as method 13 (14.14): method 12's layout over
+// method 8's features, shear k and, if given, a mirror plane, with the class
+// probabilities per axis.
+std::vector<uint8_t> rewritten_with_axis_classes(const std::vector<uint8_t>& file, uint8_t features, int k,
+                                                 const qmc::MirrorPlane* plane = nullptr) {
+  return recoded_posn(file, features, k, plane, true, nullptr, true);
+}
+
+void write_posn13_vectors(VectorWriter* w) {
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  // 14.14 on the small meshes of 14.13's vectors: every class decision with
+  // the mean of two probabilities from the first vertex on, with start 1.
+  write_recoded_small_meshes(w, "posn13", options, [](const std::vector<uint8_t>& file, uint8_t features, int k,
+                                                      const qmc::MirrorPlane* plane) {
+    return rewritten_with_axis_classes(file, features, k, plane);
+  });
+  // What the encoder writes from 1,000 vertices: a torus of triangles whose
+  // axes differ (its z the axis of revolution), at 12 and 16 bits, and with
+  // texture coordinates (their values use CLS alone, 15.4).
+  const Mesh torus = qmc::tools::triangulated(qmc::tools::make_torus(48, 24));
+  options.position_bits = 12;
+  Mesh textured = torus;
+  qmc::tools::add_chart_texcoords(&textured);
+  const std::vector<uint8_t> file = write_encoder_files(w, "posn13", "torus", torus, textured, options, 13);
+
+  write_shear_and_plane_invalids(w, "posn13", file, torus.vertex_count());
 }
 
 // Section 15.9: aTTR coding 4, what `qmc encode` writes when it is the
@@ -4758,6 +4811,7 @@ int main(int argc, char** argv) {
   write_levl4_vectors(&w);
   write_posn11_vectors(&w);
   write_posn12_vectors(&w);
+  write_posn13_vectors(&w);
   w.finish();
   return 0;
 }

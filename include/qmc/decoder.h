@@ -28,19 +28,20 @@ struct ChunkInfo {
 std::string chunk_type_name(uint32_t type);
 
 struct QuantizationInfo {
-  int method = 0;                 // POSN method: 0 deltas (section 6), 1 or 3 - 12 predicted (section 14)
-  bool graded_start = false;      // method 3, and methods 4 - 12 with start 1: 14.4.1's class probabilities
+  int method = 0;                 // POSN method: 0 deltas (section 6), 1 or 3 - 13 predicted (section 14)
+  bool graded_start = false;      // method 3, and methods 4 - 13 with start 1: 14.4.1's class probabilities
   int bits = 0;                   // method 0: n of section 6.1; method 1: bit length of the largest top
   std::array<float, 3> min{};     // method 0: the stored box; method 1: the origin
   std::array<float, 3> max{};     // method 1: the grid's last point, float(min + top x step)
   std::array<double, 3> step{};   // x = min + q x step (6.4, 14.1), per axis
   std::array<uint32_t, 3> top{};  // the largest q per axis
-  int features = 0;               // methods 4 - 12: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
-  int mirror_axis = -1;           // methods 9 - 12: 14.10's plane, q[axis] -> mirror_sum - q[axis]; -1: none
+  int features = 0;               // methods 4 - 13: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
+  int mirror_axis = -1;           // methods 9 - 13: 14.10's plane, q[axis] -> mirror_sum - q[axis]; -1: none
   uint32_t mirror_sum = 0;
-  bool near_images = false;       // method 10, and 11 and 12 with plane 2: image vertices may lie a step from the image (14.11)
-  int shear = 0;                  // methods 11 and 12: 14.12's weight k of the shear, 1 - 16 (k / 16); 0: none
-  bool edge_extrapolation = false;  // method 12: 14.13's edge extrapolation
+  bool near_images = false;       // method 10, and 11 - 13 with plane 2: image vertices may lie a step from the image (14.11)
+  int shear = 0;                  // methods 11 - 13: 14.12's weight k of the shear, 1 - 16 (k / 16); 0: none
+  bool edge_extrapolation = false;  // methods 12 and 13: 14.13's edge extrapolation
+  bool axis_classes = false;        // method 13: 14.14's class probabilities per axis
 };
 
 // Section 12: one level of a progressive file. Level 0 is the base mesh of

@@ -10,6 +10,7 @@
 
 #include "bitio/exact_arith.h"  // bit_length64
 #include "bitio/mirror_prediction.h"
+#include "bitio/range_coder.h"
 #include "bitio/residual_code.h"
 #include "bitio/vertex_prediction.h"
 
@@ -47,6 +48,9 @@ inline constexpr int kMaskContexts = 12;
 // Adaptive probabilities of one POSN payload, all starting at 1024.
 struct PositionResidualModel {
   uint16_t cls[kPositionGroups][kPositionBuckets][kPositionMaxClass];  // by group, bucket, i
+  // POSN method 13 (14.14): the same per axis, each "class > j" coded with
+  // the mean of the shared and the axis's probability and adapting both.
+  uint16_t axis_cls[3][kPositionGroups][kPositionBuckets][kPositionMaxClass];
   uint16_t sign[3];
   uint16_t mantissa[kPositionMaxClass + 1][3];
   // 14.4: "candidate k is selected", by 14.8's context (0 but in methods 6
@@ -55,8 +59,9 @@ struct PositionResidualModel {
   uint16_t mirror[kMirrorContexts];  // 14.10: "the mirror candidate is used", by its context
   int max_class[3];  // bitlen(top_a): k of 13.5.6 per axis
   bool mask_contexts;  // 14.8: methods 6 and 7
+  bool axis_classes;   // 14.14: method 13
   explicit PositionResidualModel(const uint32_t top[3], ClassStart start = ClassStart::kFlat,
-                                 bool with_mask_contexts = false);
+                                 bool with_mask_contexts = false, bool with_axis_classes = false);
 };
 
 // The class probabilities of one group as `start` has them begin (14.4.1),
@@ -75,13 +80,17 @@ constexpr ClassStartTable class_start_table(ClassStart start) {
 inline constexpr ClassStartTable kFlatClassTable = class_start_table(ClassStart::kFlat);
 inline constexpr ClassStartTable kGradedClassTable = class_start_table(ClassStart::kGraded);
 
-inline PositionResidualModel::PositionResidualModel(const uint32_t top[3], ClassStart start, bool with_mask_contexts)
-    : mask_contexts(with_mask_contexts) {
+inline PositionResidualModel::PositionResidualModel(const uint32_t top[3], ClassStart start, bool with_mask_contexts,
+                                                    bool with_axis_classes)
+    : mask_contexts(with_mask_contexts), axis_classes(with_axis_classes) {
   for (int a = 0; a < 3; ++a) max_class[a] = bit_length(top[a]);
   std::fill(&use[0][0][0], &use[0][0][0] + sizeof(use) / sizeof(uint16_t), uint16_t(1024));
   const ClassStartTable& table = start == ClassStart::kFlat ? kFlatClassTable : kGradedClassTable;
   static_assert(sizeof cls[0] == sizeof table.p, "a group is one ClassStartTable");
   for (auto& group : cls) std::memcpy(group, table.p, sizeof table.p);
+  if (axis_classes)
+    for (auto& axis : axis_cls)
+      for (auto& group : axis) std::memcpy(group, table.p, sizeof table.p);
   std::fill(sign, sign + 3, uint16_t(1024));
   std::fill(mirror, mirror + kMirrorContexts, uint16_t(1024));
   std::fill(&mantissa[0][0], &mantissa[0][0] + sizeof(mantissa) / sizeof(uint16_t), uint16_t(1024));
@@ -136,13 +145,44 @@ unsigned code_candidate_mask(Coder* coder, PositionResidualModel* m, int count, 
   return out;
 }
 
+// 14.14: the probability of "class > j" from the shared and the axis's
+// estimate, floor((p + p_a + 1) / 2), within 31 .. 2017 as both are.
+inline uint32_t mixed_class_probability(uint16_t shared, uint16_t own) {
+  return (uint32_t(shared) + own + 1) >> 1;
+}
+
+// 13.5.6's unary class of method 13 (14.14): each decision coded with the
+// mixed probability, then both estimates adapt to it (coders that only
+// price, the encoder's CostMeter, adapt nothing).
+template <class Coder>
+int code_mixed_class(Coder* coder, uint16_t* shared, uint16_t* own, int k, uint32_t magnitude) {
+  const int value_class = bit_length(magnitude);
+  int c = 0;
+  while (c < k) {
+    const int bit = coder->code_fixed(value_class > c, mixed_class_probability(shared[c], own[c]));
+    coder->adapt(&shared[c], bit);
+    coder->adapt(&own[c], bit);
+    if (!bit) break;
+    ++c;
+  }
+  return c;
+}
+
 // Codes the residual of one axis, its class bounded by bitlen(top_a) (14.4).
 template <class Coder>
 SignedResidual code_position_residual(Coder* coder, PositionResidualModel* m, const VertexPrediction& p,
                                       const uint32_t* magnitude, int axis, SignedResidual value) {
   const int bucket = position_bucket(p.neighbour_activity + p.scale / 8, magnitude, axis);
   const int group = p.kind == PredictionKind::kMirror ? 3 : p.kind >= PredictionKind::kSingle ? 2 : int(p.kind);
-  return code_class_residual(coder, m->cls[group][bucket], &m->sign[axis], m->mantissa, m->max_class[axis], value);
+  if (!m->axis_classes)
+    return code_class_residual(coder, m->cls[group][bucket], &m->sign[axis], m->mantissa, m->max_class[axis], value);
+  SignedResidual out;
+  const int c = code_mixed_class(coder, m->cls[group][bucket], m->axis_cls[axis][group][bucket], m->max_class[axis],
+                                 value.magnitude);
+  if (c == 0) return out;
+  out.negative = coder->code(value.negative, &m->sign[axis]) != 0;
+  out.magnitude = code_magnitude_bits(coder, m->mantissa, c, value.magnitude);
+  return out;
 }
 
 }  // namespace qmc

@@ -55,6 +55,8 @@ class RangeEncoder {
     encode(bit, prob);
     return bit;
   }
+  // Adapts *prob to a decision coded with code_fixed (14.14).
+  void adapt(uint16_t* prob, int bit) { range_adapt(prob, bit); }
   // The encoder never runs out of stream (the decoder's check, for templates
   // shared by both).
   bool overrun() const { return false; }
@@ -95,6 +97,7 @@ class RangeDecoder {
     return bit;
   }
   int code_direct(int /*unused*/) { return decode(kRangeProbabilityInit); }
+  void adapt(uint16_t* prob, int bit) { range_adapt(prob, bit); }
   int code_fixed(int /*unused*/, uint32_t prob) { return decode(prob); }
 
   // The first four bytes form 0xFFFFFFFF, a value no encoder writes.

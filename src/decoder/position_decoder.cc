@@ -25,13 +25,13 @@ Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadCh
 
 // Section 14.1: the byte after vertex_count selects the method.
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (14.1)
-// Methods 4 - 12 (14.1, 14.6 - 14.13), 0x84 .. 0x8C, all with the start
-// byte; methods 8 - 12 with the features byte of 14.9 after it, methods 11
-// and 12 with their shear and plane bytes after that (14.12, 14.13);
-// methods 9 - 12 with a plane end with 14.10's plane.
-constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x8C;
+// Methods 4 - 13 (14.1, 14.6 - 14.14), 0x84 .. 0x8D, all with the start
+// byte; methods 8 - 13 with the features byte of 14.9 after it, methods 11
+// - 13 with their shear and plane bytes after that (14.12 - 14.14);
+// methods 9 - 13 with a plane end with 14.10's plane.
+constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x8D;
 constexpr uint8_t kFeaturesSelector = 0x88, kMirrorSelector = 0x89, kNearMirrorSelector = 0x8A;
-constexpr uint8_t kShearSelector = 0x8B, kExtrapolationSelector = 0x8C;
+constexpr uint8_t kShearSelector = 0x8B, kExtrapolationSelector = 0x8C, kAxisClassSelector = 0x8D;
 constexpr uint8_t kLargestShear = 16;
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
@@ -75,13 +75,13 @@ Status read_grid(ByteReader* in, QuantizationInfo* info) {
   return Status::Ok();
 }
 
-// Sections 14.12 and 14.13: method 11's shear weight (1 .. 16) or method
-// 12's (0 .. 16, 0 none), and the kind of its plane (0 none, 1 method 9's,
-// 2 method 10's), before the plane itself.
+// Sections 14.12 - 14.14: method 11's shear weight (1 .. 16) or methods 12's
+// and 13's (0 .. 16, 0 none), and the kind of its plane (0 none, 1 method
+// 9's, 2 method 10's), before the plane itself.
 Status read_shear(ByteReader* in, QuantizationInfo* info, bool* mirrored) {
   const std::string method = "method " + std::to_string(info->method);
-  const char* section = info->method == 12 ? " (section 14.13)" : " (section 14.12)";
-  const uint8_t least = info->method == 12 ? 0 : 1;
+  const char* section = info->method == 13 ? " (section 14.14)" : info->method == 12 ? " (section 14.13)" : " (section 14.12)";
+  const uint8_t least = info->method >= 12 ? 0 : 1;  // methods 12 and 13 may shear nothing
   uint8_t shear = 0, plane = 0;
   if (!in->get_u8(&shear)) return bad_payload(method + "'s shear byte missing" + section);
   if (shear < least || shear > kLargestShear)
@@ -94,7 +94,7 @@ Status read_shear(ByteReader* in, QuantizationInfo* info, bool* mirrored) {
   return Status::Ok();
 }
 
-// Section 14.10: the plane of methods 9 - 12, its axis byte and sum
+// Section 14.10: the plane of methods 9 - 13, its axis byte and sum
 // (checked against the grid's top once read_grid has it).
 Status read_mirror_plane(ByteReader* in, QuantizationInfo* info) {
   const std::string method = "method " + std::to_string(info->method);
@@ -129,8 +129,9 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
     }
     bool mirrored = selector == kMirrorSelector || selector == kNearMirrorSelector;
     info->near_images = selector == kNearMirrorSelector;
-    const bool sheared = selector == kShearSelector || selector == kExtrapolationSelector;
-    info->edge_extrapolation = selector == kExtrapolationSelector;
+    const bool sheared = selector >= kShearSelector;  // 11 - 13
+    info->edge_extrapolation = selector >= kExtrapolationSelector;  // 12 and 13
+    info->axis_classes = selector == kAxisClassSelector;
     if (selector == kFeaturesSelector || mirrored || sheared) {
       const std::string method = "method " + std::to_string(info->method);
       uint8_t features = 0;
@@ -155,7 +156,7 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
   if (selector >= 0x80)
     return Status(ErrorCode::kUnsupportedFeature,
                   "POSN: method " + std::to_string(selector - 0x80) +
-                      " is not defined (section 14.1 knows 0, 1 and 3 - 12)");
+                      " is not defined (section 14.1 knows 0, 1 and 3 - 13)");
   if (selector < 1 || selector > 30) return bad_payload("quantization bits " + std::to_string(selector) + " outside 1..30");
   info->method = 0;
   info->bits = selector;
@@ -269,7 +270,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
                              ClassStart start, PredictionOrder order, const PositionGuide* guide, bool quad_twist,
                              bool mask_contexts, bool triangle_twist, const MirrorPlane* mirror,
-                             const AttributeTwins* twins, int shear, bool extrapolate) {
+                             const AttributeTwins* twins, int shear, bool extrapolate, bool axis_classes) {
   if (!range_stream_justifies(count, size))  // section 14.1, before anything is reserved
     return Status(ErrorCode::kLimitExceeded, names.chunk + ": " + std::to_string(count) + " " + names.items +
                                                  " for " + std::to_string(size) +
@@ -285,7 +286,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   visit.extrapolate_edges(extrapolate);
   TriangleTwistWeight twist_weight;
   std::vector<uint32_t> activity(count);
-  std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start, mask_contexts));
+  std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start, mask_contexts, axis_classes));
   RangeDecoder rc(stream, size);
   if (rc.bad_start())
     return Status(ErrorCode::kBadChunkPayload,
@@ -341,7 +342,7 @@ Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, 
                                          quantized, start, order, nullptr, info->features & kQuadTwistFeature,
                                          info->features & kMaskContextsFeature, info->features & kTriangleTwistFeature,
                                          info->mirror_axis >= 0 ? &plane : nullptr, nullptr, info->shear,
-                                         info->edge_extrapolation);
+                                         info->edge_extrapolation, info->axis_classes);
         !s.ok())
       return s;
   } else {

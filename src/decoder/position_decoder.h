@@ -40,14 +40,15 @@ struct PredictedGridNames {
 // with a mirror plane (geometry order only), method 9's mirror candidate (14.10);
 // with twins, aTTR coding 9's twin candidate (15.14); with a shear k
 // (geometry order only), method 11's sheared parallelograms (14.12); with
-// extrapolate (geometry order only), method 12's edge extrapolation (14.13).
+// extrapolate (geometry order only), method 12's edge extrapolation (14.13);
+// with axis_classes, method 13's class probabilities per axis (14.14).
 Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& faces, uint32_t count,
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
                              ClassStart start = ClassStart::kFlat, PredictionOrder order = PredictionOrder::kLabels,
                              const PositionGuide* guide = nullptr, bool quad_twist = false,
                              bool mask_contexts = false, bool triangle_twist = false,
                              const MirrorPlane* mirror = nullptr, const AttributeTwins* twins = nullptr,
-                             int shear = 0, bool extrapolate = false);
+                             int shear = 0, bool extrapolate = false, bool axis_classes = false);
 
 // Sections 6.4 and 14.1: per axis, the binary64 min and step of x = min + q * step.
 void dequantization_steps(const QuantizationInfo& info, double lo[3], double step[3]);

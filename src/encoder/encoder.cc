@@ -235,7 +235,8 @@ Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileC
 }
 
 uint8_t minor_version_for(const FileConnectivity& conn, int position_method) {
-  if (position_method >= 12) return 16;
+  if (position_method >= 13) return 17;
+  if (position_method == 12) return 16;
   if (position_method == 11) return 15;
   if (position_method == 10) return 13;
   if (position_method == 9) return 12;
@@ -334,7 +335,7 @@ Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_
       encode_positions(quantized, conn.mesh, options.position_method, options.candidate_choice, class_start(options),
                        prediction_order(options), options.quad_twist, options.mask_contexts,
                        options.triangle_twist, options.mirror_symmetry, options.near_mirror, options.shear,
-                       &st.positions, options.edge_extrapolation);
+                       &st.positions, options.edge_extrapolation, options.axis_class_probabilities);
 
   out->clear();
   write_signature(out);

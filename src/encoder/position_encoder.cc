@@ -34,6 +34,7 @@ constexpr uint8_t kMirrorSelector = 0x89;                                // meth
 constexpr uint8_t kNearMirrorSelector = 0x8A;                            // method 10 (14.1, 14.11)
 constexpr uint8_t kShearSelector = 0x8B;                                 // method 11 (14.1, 14.12)
 constexpr uint8_t kExtrapolationSelector = 0x8C;                         // method 12 (14.1, 14.13)
+constexpr uint8_t kAxisClassSelector = 0x8D;                             // method 13 (14.1, 14.14)
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
 
 void bounding_box(const std::vector<float>& positions, QuantizedPositions* out) {
@@ -202,6 +203,11 @@ class MeteredRangeEncoder {
     meter.code_direct(bit);
     return rc.code_direct(bit);
   }
+  int code_fixed(int bit, uint32_t prob) {
+    meter.code_fixed(bit, prob);
+    return rc.code_fixed(bit, prob);
+  }
+  void adapt(uint16_t* prob, int bit) { range_adapt(prob, bit); }
   RangeEncoder rc;
   CostMeter meter;
 };
@@ -330,9 +336,9 @@ class VisitCoder {
  public:
   VisitCoder(const std::vector<uint32_t>& q, const uint32_t top[3], PredictionVisit* visit, const PositionStats& stats,
              CandidateChoice choice, ClassStart start, bool mask_contexts, const MirrorPlane* mirror,
-             const AttributeTwins* twins, int shear)
+             const AttributeTwins* twins, int shear, bool axis_classes = false)
       : q_(q), top_(top), visit_(visit), stats_(stats), choice_(choice), shear_(shear),
-        activity_(q.size() / 3), model_(top, start, mask_contexts) {
+        activity_(q.size() / 3), model_(top, start, mask_contexts, axis_classes) {
     if (mirror) mirrors_.reset(images_ = new MirrorCandidates(visit->mesh(), *mirror, top));
     if (twins) mirrors_ = std::make_unique<ValueTwins>(visit->mesh(), *twins, top);
   }
@@ -392,9 +398,9 @@ class VisitCoder {
 std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t top[3], PredictionVisit& visit,
                                   PositionStats* stats, CandidateChoice choice, ClassStart start,
                                   bool mask_contexts = false, const MirrorPlane* mirror = nullptr,
-                                  const AttributeTwins* twins = nullptr) {
+                                  const AttributeTwins* twins = nullptr, bool axis_classes = false) {
   VisitCoder coder(q, top, &visit, stats ? *stats : PositionStats{}, choice, start, mask_contexts, mirror, twins,
-                   visit.shear());
+                   visit.shear(), axis_classes);
   return coder.finish(stats);
 }
 
@@ -410,13 +416,13 @@ size_t selector_offset(const QuantizedPositions& positions) {
 std::vector<uint8_t> predicted_payload(const QuantizedPositions& positions, ClassStart start, PredictionOrder order,
                                        bool quad_twist, bool mask_contexts, bool triangle_twist,
                                        const MirrorPlane* mirror, const std::vector<uint8_t>& stream,
-                                       int shear = 0, bool extrapolate = false) {
+                                       int shear = 0, bool extrapolate = false, bool axis_classes = false) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
   if (!range_stream_justifies(n, stream.size())) return {};
   std::vector<uint8_t> payload;
   put_varint(&payload, n);
-  if (order == PredictionOrder::kGeometry && (shear > 0 || extrapolate)) {  // methods 11 and 12 (14.12, 14.13)
-    put_u8(&payload, extrapolate ? kExtrapolationSelector : kShearSelector);
+  if (order == PredictionOrder::kGeometry && (shear > 0 || extrapolate || axis_classes)) {  // methods 11 - 13
+    put_u8(&payload, axis_classes ? kAxisClassSelector : extrapolate ? kExtrapolationSelector : kShearSelector);
     put_u8(&payload, start == ClassStart::kGraded ? 1 : 0);
     put_u8(&payload, position_features(quad_twist, mask_contexts, triangle_twist));
     put_u8(&payload, uint8_t(shear));
@@ -471,10 +477,11 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
                                                 PositionStats* stats, CandidateChoice choice, ClassStart start,
                                                 PredictionOrder order, bool quad_twist, bool mask_contexts,
                                                 bool triangle_twist, const MirrorPlane* mirror, int shear,
-                                                bool extrapolate) {
+                                                bool extrapolate, bool axis_classes) {
   mask_contexts = mask_contexts && order == PredictionOrder::kGeometry;
   triangle_twist = triangle_twist && order == PredictionOrder::kGeometry;
-  if (order != PredictionOrder::kGeometry) mirror = nullptr, shear = 0, extrapolate = false;
+  if (order != PredictionOrder::kGeometry) mirror = nullptr, shear = 0, extrapolate = false, axis_classes = false;
+  if (axis_classes) extrapolate = true;  // method 13 has 14.13's rule (14.14)
   VertexCorners corners;
   corners.build(uint32_t(positions.q.size() / 3), faces.face_sizes, faces.corners);
   PredictionVisit visit(corners, order);
@@ -484,8 +491,9 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
   visit.extrapolate_edges(extrapolate);
   return predicted_payload(
       positions, start, order, quad_twist, mask_contexts, triangle_twist, mirror,
-      encode_visit(positions.q, positions.top.data(), visit, stats, choice, start, mask_contexts, mirror), shear,
-      extrapolate);
+      encode_visit(positions.q, positions.top.data(), visit, stats, choice, start, mask_contexts, mirror, nullptr,
+                   axis_classes),
+      shear, extrapolate, axis_classes);
 }
 
 // find_mirror_plane's screen: every plane tried on about kMirrorScreen
@@ -759,18 +767,18 @@ int shear_weight(double none, Bits bits) {
 // best carries on to the end. stats gain the visit's counts.
 std::vector<uint8_t> code_weighing_shear(const QuantizedPositions& positions, PredictionVisit* visit, bool weigh,
                                          PositionStats* stats, CandidateChoice choice, ClassStart start,
-                                         bool contexts, const MirrorPlane* plane, int* k) {
+                                         bool contexts, const MirrorPlane* plane, bool axis_classes, int* k) {
   std::vector<VisitCoder> coders;
   coders.reserve(4);  // at most 0, 8, 12 and 16
   const auto coded_head = [&](int weight) {
     coders.emplace_back(positions.q, positions.top.data(), visit, *stats, choice, start, contexts, plane, nullptr,
-                        weight);
+                        weight, axis_classes);
     coders.back().code(kShearPrefix);
     return coders.back().bits();
   };
   *k = weigh ? shear_weight(coded_head(0), coded_head) : 0;
   if (!weigh) coders.emplace_back(positions.q, positions.top.data(), visit, *stats, choice, start, contexts, plane,
-                                  nullptr, 0);
+                                  nullptr, 0, axis_classes);
   return std::find_if(coders.begin(), coders.end(), [&](const VisitCoder& c) { return c.shear() == *k; })
       ->finish(stats);
 }
@@ -787,7 +795,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
                                              CandidateChoice choice, ClassStart start, PredictionOrder order,
                                              bool quad_twist, bool mask_contexts, bool triangle_twist,
                                              bool mirror, bool near_mirror, bool shear, PositionStats* stats,
-                                             bool edge_extrapolation) {
+                                             bool edge_extrapolation, bool axis_class_probabilities) {
   const PositionStats before = *stats;  // the coder adds its counts to stats
   // The corners, and 14.6's order, built once for every payload tried.
   VertexCorners corners;
@@ -813,11 +821,15 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   const MirrorPlane* const planed = mirrored ? &plane : nullptr;
   const bool weigh_shear =
       shear && order == PredictionOrder::kGeometry && positions.q.size() / 3 >= kShearFrom && has_triangles(faces);
+  // 14.14: from kAxisClassesFrom vertices, with the rule of 14.13 (method 13
+  // has it), class probabilities per axis too; a rule, no second pass.
+  const bool axis = axis_class_probabilities && edge_extrapolation && order == PredictionOrder::kGeometry &&
+                    positions.q.size() / 3 >= kAxisClassesFrom;
   int k = 0;
   const std::vector<uint8_t> stream =
-      code_weighing_shear(positions, &visit, weigh_shear, stats, choice, start, contexts, planed, &k);
-  std::vector<uint8_t> best =
-      predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, planed, stream, k, used(*stats));
+      code_weighing_shear(positions, &visit, weigh_shear, stats, choice, start, contexts, planed, axis, &k);
+  std::vector<uint8_t> best = predicted_payload(positions, start, order, twisted, contexts, triangles_twisted, planed,
+                                                stream, k, used(*stats), axis);
   visit.shear(k);  // the payloads below (none from kShearFrom vertices on) as this one
   int method = twisted ? 5 : order == PredictionOrder::kGeometry ? 4 : start == ClassStart::kGraded ? 3 : 1;
   if (contexts) method += 2;
@@ -828,7 +840,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     // No vertex paired beside its image: every decision is method 9's, and
     // only the selector differs (14.11); a file 1.12 decoders read. (With
     // the shear, method 11's plane byte, 14.12.)
-    if (k == 0 && !used(*stats))
+    if (k == 0 && !used(*stats) && !axis)
       best[selector_offset(positions)] = kMirrorSelector;
     else  // methods 11 and 12 (14.12, 14.13)
       best[selector_offset(positions) + 4] = 1;  // the plane byte, after selector, start, features and shear
@@ -889,6 +901,11 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     stats->shear = k;
     method = 12;
   }
+  if (axis && method >= 4) {  // methods 4 - 12 with the class probabilities per axis (14.14)
+    stats->shear = k;
+    stats->axis_classes = true;
+    method = 13;
+  }
   stats->method = method;
   stats->features = method >= 4 ? position_features(twisted, contexts, triangles_twisted) : 0;
   stats->graded_start = start == ClassStart::kGraded;
@@ -898,7 +915,8 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces, PositionMethod method,
                                       CandidateChoice choice, ClassStart start, PredictionOrder order,
                                       bool quad_twist, bool mask_contexts, bool triangle_twist, bool mirror,
-                                      bool near_mirror, bool shear, PositionStats* stats, bool edge_extrapolation) {
+                                      bool near_mirror, bool shear, PositionStats* stats, bool edge_extrapolation,
+                                      bool axis_class_probabilities) {
   *stats = PositionStats{};
   stats->step = positions.step;
   stats->top = positions.top;
@@ -911,7 +929,8 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const
   PositionStats predicted_stats = *stats;
   std::vector<uint8_t> predicted =
       encode_predicted_choice(positions, faces, choice, start, order, quad_twist, mask_contexts, triangle_twist,
-                              mirror, near_mirror, shear, &predicted_stats, edge_extrapolation);
+                              mirror, near_mirror, shear, &predicted_stats, edge_extrapolation,
+                              axis_class_probabilities);
   if (predicted.empty()) {
     // Only vertices that all coincide cost so little (section 14.1); on
     // one point method 0's per-axis grid gives the same positions.

@@ -55,6 +55,17 @@ inline constexpr size_t kGradedStartBelow = 1000;
 // pass: the encode costs nothing more.
 inline constexpr size_t kMaskContextsFrom = 10000;
 
+// 14.14: from this many vertices the encoder writes POSN method 13's class
+// probabilities per axis. On the corpus's meshes of that size, at 12, 14 and
+// 16 bits, POSN is smaller with them in 28 of 36 cases (torus by 7 - 8.5 %,
+// beetle by 1.3 - 2.5 %, face by 0.6 - 2.4 %, stanford-bunny by 1.0 - 1.2 %)
+// and at most 0.6 % larger (cow at 14 bits); under 1,000 vertices every
+// control mesh larger (cylinder_ngon_caps by 5 - 7 %: four tables learn
+// slower than one). A rule, not a second pass. Not below kGradedStartBelow,
+// where the encoder compares payloads without it.
+inline constexpr size_t kAxisClassesFrom = 1000;
+static_assert(kAxisClassesFrom >= kGradedStartBelow, "the small meshes' comparisons code without 14.14");
+
 // Sections 14.2 - 14.4 over any faces whose corners are below q.size() / 3:
 // the range-coded stream of POSN method 1, 3 or 4 (in 14.6's order) or of
 // an aTTR's values (15.4, 15.9, 15.10, 15.12 with a guide). The caller
@@ -70,7 +81,8 @@ std::vector<uint8_t> encode_predicted_grid(const std::vector<uint32_t>& q, const
 // Method 1, or 3 with the graded start (section 14), or 4 in the geometry
 // order (5 with quad_twist, 6 or 7 with mask_contexts too, 8 with
 // triangle_twist and the features of those two; 9 with a mirror plane
-// too, 14.10; 11 with a shear, 14.12; 12 with extrapolate, 14.13), over
+// too, 14.10; 11 with a shear, 14.12; 12 with extrapolate, 14.13; 13 with
+// axis_classes, which implies extrapolate, 14.14), over
 // the file's faces; stats may be null. Empty when the vertices cost too
 // little for 14.1's bound (all on one point).
 std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positions, const Mesh& faces,
@@ -80,7 +92,7 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
                                                 PredictionOrder order = PredictionOrder::kLabels,
                                                 bool quad_twist = false, bool mask_contexts = false,
                                                 bool triangle_twist = false, const MirrorPlane* mirror = nullptr,
-                                                int shear = 0, bool extrapolate = false);
+                                                int shear = 0, bool extrapolate = false, bool axis_classes = false);
 
 // 14.10's plane for POSN methods 9 and 10, if the vertices have one: of the planes
 // halfway across the grid on each axis (sum top - 2 .. top + 2) and the
@@ -110,13 +122,16 @@ inline PredictionOrder prediction_order(const EncodeOptions& options) {
 // vertices the smaller of 9 and 10), any of 4 - 10 as 11 where shear
 // allows it and the sheared parallelograms code smaller (14.12), any of
 // 4 - 11 as 12 where edge_extrapolation allows it and the rule gives some
-// vertex a candidate (14.13), else 3 with `start` graded under
+// vertex a candidate (14.13), any of 4 - 12 as 13 where
+// axis_class_probabilities allows it (with edge_extrapolation) from
+// kAxisClassesFrom vertices on (14.14), else 3 with `start` graded under
 // 1,000 vertices, or 1), method 0, or the smaller of the two when both can
 // carry the grid. Fills stats.
 std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const Mesh& faces,
                                       PositionMethod method, CandidateChoice choice, ClassStart start,
                                       PredictionOrder order, bool quad_twist, bool mask_contexts,
                                       bool triangle_twist, bool mirror, bool near_mirror, bool shear,
-                                      PositionStats* stats, bool edge_extrapolation = false);
+                                      PositionStats* stats, bool edge_extrapolation = false,
+                                      bool axis_class_probabilities = false);
 
 }  // namespace qmc

@@ -24,6 +24,12 @@ class CostMeter {
     bits += 1;
     return bit;
   }
+  int code_fixed(int bit, uint32_t prob) {
+    bits += cost(bit, uint16_t(prob));
+    return bit;
+  }
+  // Prices only: the probabilities stay as they are.
+  void adapt(uint16_t*, int) {}
   // The information content of coding `bit` with probability prob of a 0.
   static double cost(int bit, uint16_t prob) { return kCost[bit ? kRangeProbabilityOne - prob : prob]; }
   double bits = 0;
@@ -56,7 +62,7 @@ class ResidualCosts {
     const int bucket = position_bucket(p.neighbour_activity + p.scale / 8, magnitude, axis);
     const uint32_t value = magnitude[axis];
     const int c = bit_length(value);
-    double bits = class_bits(bucket, c, m_.max_class[axis]);
+    double bits = class_bits(axis, bucket, c, m_.max_class[axis]);
     if (c == 0) return bits;
     bits += CostMeter::cost(negative, m_.sign[axis]);
     if (c >= 2) {
@@ -72,18 +78,24 @@ class ResidualCosts {
 
   // The bits of the class decisions that code class c <= k (13.5.6's unary
   // "c > i" for i < c, then "c > c" unless c is k, the axis's largest). The
-  // decisions "c > i" do not depend on k, so the axes share their sums.
-  double class_bits(int bucket, int c, int k) {
-    double* above = above_[bucket];  // above[c]: the "c > i" decisions of every i below c
+  // decisions "c > i" do not depend on k, so the axes share their sums,
+  // unless method 13's probabilities differ per axis (14.14).
+  double class_bits(int axis, int bucket, int c, int k) {
+    const int a = m_.axis_classes ? axis : 0;
+    double* above = above_[a][bucket];  // above[c]: the "c > i" decisions of every i below c
     const uint16_t* cls = m_.cls[kGroup][bucket];
-    for (int& built = built_[bucket]; built <= c; ++built)
-      above[built] = built == 0 ? 0 : above[built - 1] + CostMeter::cost(1, cls[built - 1]);
-    return c < k ? above[c] + CostMeter::cost(0, cls[c]) : above[c];
+    const uint16_t* own = m_.axis_cls[a][kGroup][bucket];
+    const auto p = [&](int i) {
+      return m_.axis_classes ? uint16_t(mixed_class_probability(cls[i], own[i])) : cls[i];
+    };
+    for (int& built = built_[a][bucket]; built <= c; ++built)
+      above[built] = built == 0 ? 0 : above[built - 1] + CostMeter::cost(1, p(built - 1));
+    return c < k ? above[c] + CostMeter::cost(0, p(c)) : above[c];
   }
 
   const PositionResidualModel& m_;
-  int built_[kPositionBuckets] = {};  // entries of above_[bucket] computed
-  double above_[kPositionBuckets][kPositionMaxClass + 1];
+  int built_[3][kPositionBuckets] = {};  // entries of above_[axis][bucket] computed (axis 0 but in method 13)
+  double above_[3][kPositionBuckets][kPositionMaxClass + 1];
 };
 
 }  // namespace qmc
