@@ -10,7 +10,6 @@
 
 #include "bitio/exact_arith.h"  // bit_length64
 #include "bitio/mirror_prediction.h"
-#include "bitio/range_coder.h"
 #include "bitio/residual_code.h"
 #include "bitio/vertex_prediction.h"
 
@@ -176,13 +175,9 @@ SignedResidual code_position_residual(Coder* coder, PositionResidualModel* m, co
   const int group = p.kind == PredictionKind::kMirror ? 3 : p.kind >= PredictionKind::kSingle ? 2 : int(p.kind);
   if (!m->axis_classes)
     return code_class_residual(coder, m->cls[group][bucket], &m->sign[axis], m->mantissa, m->max_class[axis], value);
-  SignedResidual out;
   const int c = code_mixed_class(coder, m->cls[group][bucket], m->axis_cls[axis][group][bucket], m->max_class[axis],
                                  value.magnitude);
-  if (c == 0) return out;
-  out.negative = coder->code(value.negative, &m->sign[axis]) != 0;
-  out.magnitude = code_magnitude_bits(coder, m->mantissa, c, value.magnitude);
-  return out;
+  return code_sign_and_bits(coder, &m->sign[axis], m->mantissa, c, value);
 }
 
 }  // namespace qmc

@@ -45,6 +45,17 @@ uint32_t code_magnitude_bits(Coder* coder, uint16_t (*mantissa)[3], int c, uint3
   return magnitude;
 }
 
+// What follows a residual's class c (13.5.6): for c >= 1 the sign, then the
+// bits below the leading one; the residual (0 for c = 0).
+template <class Coder>
+SignedResidual code_sign_and_bits(Coder* coder, uint16_t* sign, uint16_t (*mantissa)[3], int c, SignedResidual value) {
+  SignedResidual out;
+  if (c == 0) return out;
+  out.negative = coder->code(value.negative, sign) != 0;
+  out.magnitude = code_magnitude_bits(coder, mantissa, c, value.magnitude);
+  return out;
+}
+
 // Codes one residual: its class, then for c >= 1 the sign, then the bits
 // below the leading one (spec 13.5.6; section 14.4 uses it with its own
 // probabilities). Coder is RangeEncoder (value is coded) or RangeDecoder
@@ -52,12 +63,7 @@ uint32_t code_magnitude_bits(Coder* coder, uint16_t (*mantissa)[3], int c, uint3
 template <class Coder>
 SignedResidual code_class_residual(Coder* coder, uint16_t* cls, uint16_t* sign, uint16_t (*mantissa)[3], int k,
                                    SignedResidual value) {
-  const int c = code_magnitude_class(coder, cls, k, value.magnitude);
-  SignedResidual out;
-  if (c == 0) return out;
-  out.negative = coder->code(value.negative, sign) != 0;
-  out.magnitude = code_magnitude_bits(coder, mantissa, c, value.magnitude);
-  return out;
+  return code_sign_and_bits(coder, sign, mantissa, code_magnitude_class(coder, cls, k, value.magnitude), value);
 }
 
 }  // namespace qmc

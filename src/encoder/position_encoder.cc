@@ -207,7 +207,7 @@ class MeteredRangeEncoder {
     meter.code_fixed(bit, prob);
     return rc.code_fixed(bit, prob);
   }
-  void adapt(uint16_t* prob, int bit) { range_adapt(prob, bit); }
+  void adapt(uint16_t* prob, int bit) { rc.adapt(prob, bit); }
   RangeEncoder rc;
   CostMeter meter;
 };
