@@ -46,13 +46,17 @@ static void write_polygon_seed(const fs::path& path, const uint8_t* payload, siz
   std::vector<uint8_t> seed{uint8_t(vertices), uint8_t(vertices >> 8), uint8_t(faces), uint8_t(faces >> 8)};
   seed.insert(seed.end(), in.cursor(), in.cursor() + in.remaining());
   write(path, seed.data(), seed.size());
-  // polygon_coding7 input: the same counts, then what follows coding 7's
-  // flags and coding bytes (5.4.10).
+  // polygon_coding7 and polygon_coding8 input: the same counts, then what
+  // follows the flags and coding bytes of coding 7 or 8 (5.4.10), whose
+  // layouts are the same.
   uint8_t flags = 0, coding = 0;
-  if (!in.get_u8(&flags) || !in.get_u8(&coding) || coding != qmc::kPolygonContextCoded) return;
+  if (!in.get_u8(&flags) || !in.get_u8(&coding) ||
+      (coding != qmc::kPolygonContextCoded && coding != qmc::kPolygonQuadContextCoded))
+    return;
   seed.resize(4);
   seed.insert(seed.end(), in.cursor(), in.cursor() + in.remaining());
-  write(path.parent_path().parent_path() / "polygon_coding7" / path.filename(), seed.data(), seed.size());
+  for (const char* target : {"polygon_coding7", "polygon_coding8"})
+    write(path.parent_path().parent_path() / target / path.filename(), seed.data(), seed.size());
 }
 
 // What gim_plane needs of a GIMG payload (spec 13.2): size, sample format
@@ -202,7 +206,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   const fs::path out = argv[2];
-  for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "polygon_connectivity", "polygon_coding7", "positions",
+  for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "polygon_connectivity", "polygon_coding7", "polygon_coding8", "positions",
                         "predicted_positions", "geometry_order",
                         "huffman", "roundtrip", "order", "loop_levels", "gim_file", "gim_plane", "attributes", "face_labels",
                         "predicted_mapping", "attribute_twins", "level_corrections"})

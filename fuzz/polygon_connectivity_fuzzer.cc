@@ -36,7 +36,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (v >= vertices) __builtin_trap();
   mesh.positions.assign(3 * size_t(vertices), 0.f);
   qmc::PolygonEncoding again;
-  if (!qmc::encode_polygon_connectivity(mesh, -1, true, true, &again).empty()) __builtin_trap();
+  if (!qmc::encode_polygon_connectivity(mesh, -1, true, true, true, &again).empty()) __builtin_trap();
   // The re-encoded payload decodes to the encoder's file mesh ...
   qmc::Mesh decoded;
   uint32_t count = 0;

@@ -118,7 +118,7 @@ for vector in "$vectors"/invalid_*.qmc; do
 done
 if [ -z "$info_crashed" ]; then passed=$((passed + 1)); else
   failed=$((failed + 1)); echo "FAIL info-invalid-vectors:$info_crashed"; fi
-check format-1.18-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f118.qmc" --format 1.18
+check format-1.19-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f119.qmc" --format 1.19
 # Spec 14.13: an open grid of quads, whose boundary the geometry order walks first, takes POSN method 12
 # (format 1.16); --format 1.15 keeps method 11 or below, in a larger file.
 "$meshgen" grid 24 16 "$work/grid.obj" >/dev/null
@@ -143,6 +143,19 @@ check format-1.16-grid 0 "$qmc" encode "$work/grid1271.obj" "$work/f116g.qmc" --
 check format-1.16-grid-info 0 "$qmc" info "$work/f116g.qmc"
 contains format-1.16-grid-no-method-13 "$work/out" 'format 1\.\([4-9]\|1[0-6]\)$'
 check verify-method-13 0 "$qmc" verify "$work/grid1271.obj" "$work/f117.qmc"
+# Spec 5.4.10: a torus of regular quads takes CONN coding 8 (format 1.18), in a smaller file than
+# --format 1.17's coding 7.
+check format-1.18 0 "$qmc" encode "$work/torus.obj" "$work/f118.qmc" --quiet
+check format-1.18-info 0 "$qmc" info "$work/f118.qmc"
+contains format-1.18-written "$work/out" "format 1.18"
+contains format-1.18-coding-8 "$work/out" "polygon coder (spec 5.4), coding 8;"
+check format-1.17-torus 0 "$qmc" encode "$work/torus.obj" "$work/f117t.qmc" --quiet --format 1.17
+check format-1.17-torus-info 0 "$qmc" info "$work/f117t.qmc"
+contains format-1.17-torus-coding-7 "$work/out" "polygon coder (spec 5.4), coding 7;"
+contains format-1.17-torus-no-1.18 "$work/out" 'format 1\.\([4-9]\|1[0-7]\)$'
+if [ "$(stat -c %s "$work/f118.qmc")" -ge "$(stat -c %s "$work/f117t.qmc")" ]; then
+  failed=$((failed + 1)); echo "FAIL format-1.18-smaller: coding 8's file is not smaller than the 1.17 file"; fi
+check verify-coding-8 0 "$qmc" verify "$work/torus.obj" "$work/f118.qmc"
 # Spec 14.12: an irregular triangulation takes POSN method 11 (format 1.15); --format 1.14 keeps method 10 or below.
 "$meshgen" jittered-sphere 3 11 "$work/jittered.obj" >/dev/null
 check format-1.15 0 "$qmc" encode "$work/jittered.obj" "$work/f115.qmc" --quiet --format 1.16
@@ -195,7 +208,7 @@ check soup-encode 0 "$qmc" encode "$work/soup.off" "$work/soup.qmc" -q 16 --text
 check soup-verify 0 "$qmc" verify "$work/soup.off" "$work/soup.qmc"
 check verify-wrong-mesh 1 "$qmc" verify "$work/soup.off" "$work/torus.qmc"
 check help 0 "$qmc" --help
-contains help-version "$work/out" "format version 1.17, spec/qmc-format.md"
+contains help-version "$work/out" "format version 1.18, spec/qmc-format.md"
 check encode-help 0 "$qmc" encode --help
 contains help-default-bits "$work/out" "1/4096"
 check no-args 2 "$qmc"
@@ -392,7 +405,7 @@ check decode-groups-off-refused 3 "$qmc" decode "$work/groups.qmc" "$work/groups
 { echo "v 0 0 0 1 0 0"; echo "v 1 0 0 0 1 0"; echo "v 0 1 0 0 0 1 1"; echo "f 1 2 3"; echo "l 1 2"; } >"$work/colours.obj"
 check encode-colours-refused 3 "$qmc" encode "$work/colours.obj" "$work/colours.qmc"
 contains encode-colours-refused-names-flag "$work/err" "pass --drop-unsupported"
-contains encode-colours-refused-names-format "$work/err" "holds what format 1.17 cannot carry yet"
+contains encode-colours-refused-names-format "$work/err" "holds what format 1.18 cannot carry yet"
 contains encode-colours-refused-colours "$work/err" "  ignored per-vertex colours on v lines of 7 numbers: 1"
 contains encode-colours-refused-partial "$work/err" "  ignored per-vertex colours on v lines: only 2 of 3 vertices have one"
 check encode-colours-refused-no-output 0 test ! -e "$work/colours.qmc"

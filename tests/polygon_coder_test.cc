@@ -132,6 +132,92 @@ TEST(CodingSeven, RegularTriangleMeshCostsFarLessThanUnderCodingFive) {
   EXPECT_EQ(stats.polygon.coding_bits[kPolygonUnassignedCoding], -1);
 }
 
+// Spec 5.4.10's worked example of coding 8: the cube's CONN payload and the
+// faces it decodes to.
+TEST(CodingEight, CubeDecodesAsTheSpecExample) {
+  const std::vector<uint8_t> p{0x02, 0x08, 0x06, 0x00, 0x08, 0x02, 0x02, 0x05, 0xBC, 0x45, 0x5E};
+  Mesh mesh;
+  uint32_t vertices = 0;
+  ConnectivityMethod method;
+  ASSERT_TRUE(decode_connectivity(p.data(), p.size(), &vertices, &method, &mesh).ok());
+  EXPECT_EQ(vertices, 8u);
+  EXPECT_EQ(mesh.face_sizes, std::vector<uint32_t>(6, 4));
+  EXPECT_EQ(mesh.corners, (std::vector<uint32_t>{1, 0, 3, 2, 0, 1, 4, 5, 4, 1, 2, 6, 6, 2, 3, 7, 7, 3, 0, 5, 7, 5, 4, 6}));
+  // The same bytes under coding 7 read other symbols from the same stream.
+  std::vector<uint8_t> seven = p;
+  seven[4] = 0x07;
+  Mesh other;
+  const Status s = decode_connectivity(seven.data(), seven.size(), &vertices, &method, &other);
+  EXPECT_TRUE(!s.ok() || other.corners != mesh.corners);
+}
+
+// The example's table: x = 8 a + max(b, c) of each coded face of the cube
+// as Spirale Reversi applies it, and coding 7's a alone.
+TEST(CodingEight, CubeContextsAreTheSpecTable) {
+  EXPECT_EQ(quad_context(GateContext{2, 1, 2}, true), 18u);
+  EXPECT_EQ(quad_context(GateContext{2, 1, 2}, false), 2u);
+  EXPECT_EQ(quad_context(GateContext{7, 7, 3}, true), 63u);
+  PolygonSurfaceModel model;
+  ASSERT_EQ(build_polygon_surface(tools::make_cube(), &model), "");
+  PolygonTraversal t;
+  ASSERT_EQ(traverse_polygon_surface(model, &t), "");
+  class Contexts : public FaceSymbolSource {
+   public:
+    explicit Contexts(const FaceShapes& shapes) : shapes_(shapes) {}
+    Status face(const GateContext& gate, size_t f, const FaceShapes** shapes, size_t* index) override {
+      x.push_back(quad_context(gate, true));
+      *shapes = &shapes_;
+      *index = f;
+      return Status::Ok();
+    }
+    std::vector<uint32_t> x;
+
+   private:
+    const FaceShapes& shapes_;
+  } contexts(t.shapes);
+  ASSERT_TRUE(polygon_spirale_contexts(t.component_faces, t.first_degree, &contexts).ok());
+  EXPECT_EQ(contexts.x, (std::vector<uint32_t>{0, 9, 17, 17, 18}));
+}
+
+// On regular quads the neighbours' counts pay: the encoder writes coding 8
+// (format 1.18), and without it (--format 1.17) coding 7 in a 1.17 file.
+TEST(CodingEight, RegularQuadTorusTakesCodingEight) {
+  const Mesh torus = tools::make_torus(32, 20);
+  std::vector<uint8_t> bytes;
+  EncodeStats stats;
+  EncodeOptions options;
+  options.connectivity = ConnectivityChoice::kPolygon;
+  ASSERT_TRUE(encode(torus, options, &bytes, &stats).ok());
+  EXPECT_EQ(stats.polygon.coding, kPolygonQuadContextCoded);
+  EXPECT_LT(stats.polygon.coding_bits[kPolygonQuadContextCoded] * 5,
+            stats.polygon.coding_bits[kPolygonContextCoded] * 4);  // at least a fifth smaller
+  EXPECT_EQ(bytes[8 + 8 + 1], 18);                                 // QHDR's minor (4.1)
+  EXPECT_TRUE(polygon_round_trip(torus));
+  options.polygon_quad_contexts = false;
+  ASSERT_TRUE(encode(torus, options, &bytes, &stats).ok());
+  EXPECT_EQ(stats.polygon.coding, kPolygonContextCoded);
+  EXPECT_EQ(stats.polygon.coding_bits[kPolygonQuadContextCoded], -1);
+  EXPECT_LE(bytes[8 + 8 + 1], 17);  // what its POSN method needs (16: method 12, 14.13), 1.17 decoders read it
+}
+
+// Coding 8 differs from 7 in the quads alone: a mesh of triangles keeps
+// coding 7, whose bytes 1.6 decoders read, and forcing 8 costs nothing.
+TEST(CodingEight, TrianglesKeepCodingSeven) {
+  const Mesh sphere = tools::triangulated(tools::make_refined_sphere(2));
+  std::vector<uint8_t> bytes;
+  EncodeStats stats;
+  ASSERT_TRUE(encode(sphere, EncodeOptions{}, &bytes, &stats).ok());
+  EXPECT_EQ(stats.polygon.coding, kPolygonContextCoded);
+  EXPECT_EQ(stats.polygon.coding_bits[kPolygonQuadContextCoded], -1);
+  EncodeOptions forced;
+  forced.polygon_coding = kPolygonQuadContextCoded;
+  EncodeStats forced_stats;
+  ASSERT_TRUE(encode(sphere, forced, &bytes, &forced_stats).ok());
+  EXPECT_EQ(forced_stats.polygon.coding, kPolygonQuadContextCoded);
+  EXPECT_EQ(forced_stats.polygon.coding_bits[kPolygonQuadContextCoded],
+            forced_stats.polygon.coding_bits[kPolygonContextCoded]);
+}
+
 TEST(PolygonDecoder, PillowIsTwoQuadsOnFourVertices) {
   const std::vector<uint8_t> p = pillow_payload(4, 2);
   Mesh mesh;

@@ -104,7 +104,9 @@ const char kHelp[] =
     "  --gim-store-blank   also code the samples of blank pixels (smooth planes\n"
     "                      for image tools, at some cost in bytes)\n"
     "  --format 1.N        write nothing that decoders older than 1.N cannot read:\n"
-    "                      1.16 codes the three axes' classes with one set of\n"
+    "                      1.17 codes quads in the gate's context alone (polygon\n"
+    "                      coding 7, not 8), 1.16 also\n"
+    "                      codes the three axes' classes with one set of\n"
     "                      probabilities (POSN methods 4 - 12, not 13),\n"
     "                      1.15 continues no edge to a vertex without\n"
     "                      candidates (POSN methods 4 - 11, not 12),\n"
@@ -126,7 +128,7 @@ const char kHelp[] =
     "                      (method 1 or 3, not 4) and attribute values with\n"
     "                      coding 0 (not 4), 1.6 as method 1 only, 1.5\n"
     "                      also leaves out polygon coding 7, 1.4 also predicted\n"
-    "                      positions (deltas on the per-axis grid); default 1.17\n"
+    "                      positions (deltas on the per-axis grid); default 1.18\n"
     "  --uv-bits N         texture coordinates (spec 15) on a grid of 2^N - 1 steps\n"
     "                      over their range (default 12: 1/4 texel of a 1024\n"
     "                      texture)\n"
@@ -264,6 +266,8 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
 // error naming the option that needs a newer version.
 int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   EncodeOptions& o = args->options;
+  if (args->newest_minor >= 18) return -1;
+  o.polygon_quad_contexts = false;  // CONN coding 8 (5.4.10) came with 1.18
   if (args->newest_minor >= 17) return -1;
   o.axis_class_probabilities = false;  // POSN method 13 (14.14) came with 1.17
   if (args->newest_minor >= 16) return -1;
@@ -359,7 +363,7 @@ int parse(int argc, char** argv, EncodeArgs* args) {
       long minor = 0;
       if (value.compare(0, 2, "1.") != 0 || !parse_int(value.substr(2), kOldestTargetMinor, kNewestMinor, &minor) ||
           value.substr(2) != std::to_string(minor))
-        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 1.10, 1.11, 1.12, 1.13, 1.14, 1.15, 1.16 or 1.17, got '" +
+        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 1.10, 1.11, 1.12, 1.13, 1.14, 1.15, 1.16, 1.17 or 1.18, got '" +
                                          value + "'");
       args->newest_minor = int(minor);
       continue;

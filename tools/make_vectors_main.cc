@@ -64,6 +64,7 @@ qmc::EncodeOptions without_shear(qmc::EncodeOptions options) {
   options.shear = false;
   options.edge_extrapolation = false;
   options.axis_class_probabilities = false;
+  options.polygon_quad_contexts = false;  // CONN coding 8 (5.4.10) came after every one of these vectors
   return options;
 }
 
@@ -1468,6 +1469,7 @@ std::vector<uint8_t> encode_posn_method(const Mesh& mesh, const qmc::EncodeOptio
   qmc::EncodeOptions asked = method >= 11 ? options : without_shear(options);
   if (method == 11) asked.edge_extrapolation = false;
   if (method <= 12) asked.axis_class_probabilities = false;
+  asked.polygon_quad_contexts = false;  // CONN coding 8 came after the POSN vectors
   if (qmc::Status s = qmc::encode(mesh, asked, &out, &stats); !s.ok() || stats.positions.method != method) {
     std::fprintf(stderr, "qmc-make-vectors: POSN method %d: %s\n", method, s.to_string().c_str());
     std::exit(3);
@@ -1711,12 +1713,13 @@ void write_predicted_position_errors(VectorWriter* w) {
 // Section 5.4.10 (format 1.6): polygon coding 7, the face symbols range
 // coded in the contexts of Spirale Reversi's gate.
 std::vector<uint8_t> coding7_conn(uint32_t vertices, uint32_t faces, uint8_t groups, const std::vector<uint8_t>& symbols,
-                                  const std::function<void(qmc::BitWriter*)>& stream, uint64_t length_extra = 0) {
+                                  const std::function<void(qmc::BitWriter*)>& stream, uint64_t length_extra = 0,
+                                  int coding = qmc::kPolygonContextCoded) {
   std::vector<uint8_t> p{uint8_t(qmc::ConnectivityMethod::kPolygon)};
   qmc::put_varint(&p, vertices);
   qmc::put_varint(&p, faces);
   p.push_back(0);
-  p.push_back(uint8_t(qmc::kPolygonContextCoded));
+  p.push_back(uint8_t(coding));
   p.push_back(groups);
   qmc::put_varint(&p, symbols.size() + length_extra);
   p.insert(p.end(), symbols.begin(), symbols.end());
@@ -1727,12 +1730,15 @@ std::vector<uint8_t> coding7_conn(uint32_t vertices, uint32_t faces, uint8_t gro
   return p;
 }
 
-// A hand-made symbol stream: `body` codes decisions with the model of 5.4.10.
+// A hand-made symbol stream: `body` codes decisions with the model of 5.4.10
+// (coding 8's with quad_neighbours).
 std::vector<uint8_t> coding7_symbols(uint8_t groups,
-                                     const std::function<void(qmc::RangeEncoder*, qmc::PolygonSymbolModel*)>& body) {
+                                     const std::function<void(qmc::RangeEncoder*, qmc::PolygonSymbolModel*)>& body,
+                                     bool quad_neighbours = false) {
   qmc::RangeEncoder range;
   qmc::PolygonSymbolModel model;
   model.groups = groups;
+  model.quad_neighbours = quad_neighbours;
   body(&range, &model);
   return range.finish();
 }
@@ -1746,6 +1752,32 @@ std::function<void(qmc::BitWriter*)> one_component(uint32_t faces_minus_2, uint3
     b->write_exp_golomb(first_degree_minus_3);
     for (int i = 0; i < 4; ++i) b->write_exp_golomb(0);
   };
+}
+
+// The file with the first half of its `CONN` coding 7 or 8 symbols only
+// (their length byte made to say so): the decoder runs out of stream.
+std::vector<uint8_t> with_symbols_cut(const std::vector<uint8_t>& file, const char* what) {
+  Chunks c = split_chunks(file);
+  const size_t k = find_chunk(c, qmc::kChunkConnectivity);
+  std::vector<uint8_t>& p = c[k].payload;
+  qmc::ByteReader r(p.data(), p.size());
+  uint8_t byte = 0;
+  uint64_t skip = 0;
+  r.get_u8(&byte);
+  r.get_varint(&skip);
+  r.get_varint(&skip);
+  for (int i = 0; i < 3; ++i) r.get_u8(&byte);  // flags, coding, groups
+  const size_t length_at = r.position();
+  uint64_t length = 0;
+  r.get_varint(&length);
+  if (r.position() != length_at + 1 || length < 16 || length > 127) {
+    std::fprintf(stderr, "qmc-make-vectors: %s: unexpected symbol length %llu\n", what,
+                 static_cast<unsigned long long>(length));
+    std::exit(3);
+  }
+  p.erase(p.begin() + std::ptrdiff_t(length_at + 1 + length / 2), p.begin() + std::ptrdiff_t(length_at + 1 + length));
+  p[length_at] = uint8_t(length / 2);
+  return join_chunks(c);
 }
 
 void write_context_coded_valid(VectorWriter* w) {
@@ -1787,7 +1819,7 @@ void write_context_coded_valid(VectorWriter* w) {
   for (uint64_t seed = 1;; ++seed) {
     const Mesh disk = qmc::tools::make_random_quad_disk(seed, 60);
     qmc::PolygonEncoding encoding;
-    if (!qmc::encode_polygon_connectivity(disk, qmc::kPolygonContextCoded, true, true, &encoding).empty()) continue;
+    if (!qmc::encode_polygon_connectivity(disk, qmc::kPolygonContextCoded, true, false, true, &encoding).empty()) continue;
     if (encoding.symbol_counts[7] == 0) continue;
     w->valid("valid_polygon_coding7_three_detours", encode_polygons(disk, qmc::kPolygonContextCoded), &disk);
     break;
@@ -1872,32 +1904,161 @@ void write_context_coded_errors(VectorWriter* w) {
   w->invalid("invalid_polygon_coding7_degree_unjustified",
              with_conn(coding7_conn(8, 2, qmc::kGroupOther, huge, one_component(0, 2))), ErrorCode::kLimitExceeded);
   // The sphere's symbols cut in half: the decoder runs out of stream.
-  {
-    const Mesh sphere = qmc::tools::triangulated(qmc::tools::make_refined_sphere(3));
-    Chunks c = split_chunks(encode_polygons(sphere, qmc::kPolygonContextCoded));
-    const size_t k = find_chunk(c, qmc::kChunkConnectivity);
-    std::vector<uint8_t>& p = c[k].payload;
-    qmc::ByteReader r(p.data(), p.size());
-    uint8_t byte = 0;
-    uint64_t skip = 0;
-    r.get_u8(&byte);
-    r.get_varint(&skip);
-    r.get_varint(&skip);
-    for (int i = 0; i < 3; ++i) r.get_u8(&byte);  // flags, coding, groups
-    const size_t length_at = r.position();
-    uint64_t length = 0;
-    r.get_varint(&length);
-    if (r.position() != length_at + 1 || length < 16 || length > 127) {
-      std::fprintf(stderr, "qmc-make-vectors: coding 7 sphere: unexpected symbol length %llu\n",
-                   static_cast<unsigned long long>(length));
-      std::exit(3);
-    }
-    p.erase(p.begin() + std::ptrdiff_t(length_at + 1 + length / 2), p.begin() + std::ptrdiff_t(length_at + 1 + length));
-    p[length_at] = uint8_t(length / 2);
-    w->invalid("invalid_polygon_coding7_symbols_cut", join_chunks(c), ErrorCode::kTruncated);
-  }
+  const Mesh sphere = qmc::tools::triangulated(qmc::tools::make_refined_sphere(3));
+  w->invalid("invalid_polygon_coding7_symbols_cut",
+             with_symbols_cut(encode_polygons(sphere, qmc::kPolygonContextCoded), "coding 7 sphere"), ErrorCode::kTruncated);
 }
 
+
+// A disk of quads around a pole where `spokes` quads meet, in `rings`
+// rings of 2 spokes vertices, one quad of the middle ring left out (a
+// hole): the pole's count reaches 7 and b and c differ at many gates.
+Mesh pole_disk(int spokes, int rings) {
+  Mesh m;
+  const int n = 2 * spokes;
+  m.positions = {0.f, 0.f, 0.f};
+  for (int r = 1; r <= rings; ++r)
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * 3.14159265358979 * i / n;
+      m.positions.push_back(float(r * std::cos(angle)));
+      m.positions.push_back(float(r * std::sin(angle)));
+      m.positions.push_back(0.05f * float((i + r) % 3));
+    }
+  const auto ring = [n](int r, int i) { return uint32_t(1 + (r - 1) * n + i % n); };
+  const auto quad = [&m](uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
+    m.face_sizes.push_back(4);
+    m.corners.insert(m.corners.end(), {a, b, c, d});
+  };
+  for (int i = 0; i < spokes; ++i) quad(0, ring(1, 2 * i), ring(1, 2 * i + 1), ring(1, 2 * i + 2));
+  for (int r = 1; r < rings; ++r)
+    for (int i = 0; i < n; ++i)
+      if (r != rings / 2 || i != 0) quad(ring(r, i), ring(r + 1, i), ring(r + 1, i + 1), ring(r, i + 1));
+  return m;
+}
+
+// Coding 8 symbols of one component: `q1` Q1 faces (each a new loop: the
+// first at no loop, a = b = c = 0, the others at a = b = c = 1), then the
+// quad code 13, cut to the first `keep` bytes.
+std::vector<uint8_t> q1s_then_code13(int q1, size_t keep) {
+  std::vector<uint8_t> symbols = coding7_symbols(
+      qmc::kGroupQuads,
+      [q1](qmc::RangeEncoder* r, qmc::PolygonSymbolModel* m) {
+        for (int i = 0; i <= q1; ++i)
+          qmc::code_face_symbol(r, m, i == 0 ? qmc::GateContext{} : qmc::GateContext{1, 1, 1}, i < q1 ? 0 : 13);
+      },
+      true);
+  symbols.resize(std::min(keep, symbols.size()));
+  return symbols;
+}
+
+// Whether the decoder of 5.4.10 meets its fifth invented byte (truncated)
+// in the very symbol that decodes to the quad code 13 (bad_symbol), the
+// Q1s before it decoding as such: which check comes first then matters.
+bool code13_meets_truncation(const std::vector<uint8_t>& symbols, int q1) {
+  qmc::RangeDecoder r(symbols.data(), symbols.size());
+  qmc::PolygonSymbolModel m;
+  m.groups = qmc::kGroupQuads;
+  m.quad_neighbours = true;
+  for (int i = 0; i <= q1; ++i) {
+    const int symbol = qmc::code_face_symbol(&r, &m, i == 0 ? qmc::GateContext{} : qmc::GateContext{1, 1, 1}, 0);
+    if (i < q1 && (symbol != 0 || r.overrun())) return false;
+    if (i == q1) return symbol < 0 && r.overrun();
+  }
+  return false;
+}
+
+// Section 5.4.10 (format 1.18): polygon coding 8, coding 7 whose quad
+// symbols are decoded in the context 8 a + max(b, c) of the gate's count and
+// its loop neighbours' counts.
+void write_coding8_vectors(VectorWriter* w) {
+  using namespace qmc::tools;
+  using qmc::ErrorCode;
+  const int coding = qmc::kPolygonQuadContextCoded;
+  const Mesh cube = make_cube();  // 5.4.10's worked example of coding 8
+  w->valid("valid_polygon_coding8_cube", encode_polygons(cube, coding), &cube);
+  const Mesh quads = make_torus(16, 10);  // regular quads, a seam: x up to 8 a + 3
+  w->valid("valid_polygon_coding8_quad_torus", encode_polygons(quads, coding), &quads);
+  const Mesh grid = make_grid(7, 6);  // quads around a hole: symbol 18's virtual face too
+  w->valid("valid_polygon_coding8_grid_hole", encode_polygons(grid, coding), &grid);
+  // Triangles, quads and heptagons in three components: every group, both NT and OT.
+  const Mesh mixed = combined(combined(make_prism(7), shifted(triangulated(make_refined_sphere(1)), 3.f)),
+                              shifted(make_torus(6, 4), 6.f));
+  w->valid("valid_polygon_coding8_all_groups", encode_polygons(mixed, coding), &mixed);
+  // No quad at all: the decisions of coding 7, under coding 8's number.
+  const Mesh sphere = perturbed(triangulated(make_refined_sphere(2)), 5, 0.01f);
+  w->valid("valid_polygon_coding8_triangles", encode_polygons(sphere, coding), &sphere);
+  RandomSoupOptions soup_options;  // non-manifold edges and vertices, loose faces, identifications
+  soup_options.vertices = 120;
+  soup_options.faces = 160;
+  const Mesh soup = make_random_soup(22, soup_options);
+  w->valid("valid_polygon_coding8_soup", encode_polygons(soup, coding), &soup);
+  // A random quad disk whose traversal has a Q8 (three detours in one face).
+  std::vector<uint8_t> disk_file;
+  for (uint64_t seed = 1; disk_file.empty(); ++seed) {
+    const Mesh disk = make_random_quad_disk(seed, 60);
+    qmc::PolygonEncoding encoding;
+    if (!qmc::encode_polygon_connectivity(disk, coding, true, true, true, &encoding).empty()) continue;
+    if (encoding.symbol_counts[7] == 0) continue;
+    disk_file = encode_polygons(disk, coding);
+    w->valid("valid_polygon_coding8_three_detours", disk_file, &disk);
+  }
+  // Gates with b other than c and counts up to 7, which a reading of c alone or without the caps gets wrong.
+  const Mesh pole = pole_disk(12, 4);
+  w->valid("valid_polygon_coding8_pole12", encode_polygons(pole, coding), &pole);
+  // Quads around three holes: symbol 18's ST and GK beside quads in many contexts (they keep theirs).
+  Mesh holed = make_torus(12, 7);
+  holed.face_sizes.resize(holed.face_count() - 3);
+  for (const uint32_t f : {70u, 40u, 10u}) holed.corners.erase(holed.corners.begin() + 4 * f, holed.corners.begin() + 4 * f + 4);
+  holed.corners.resize(4 * holed.face_sizes.size());
+  w->valid("valid_polygon_coding8_torus_holes", encode_polygons(holed, coding), &holed);
+  // What `qmc encode -q 12` writes for a quad torus of 1,040 vertices: coding 8 and POSN method 13 (1.18).
+  {
+    const Mesh big = make_torus(40, 26);
+    qmc::EncodeOptions options;
+    options.position_bits = 12;
+    std::vector<uint8_t> out;
+    qmc::EncodeStats stats;
+    if (qmc::Status s = qmc::encode(big, options, &out, &stats);
+        !s.ok() || stats.polygon.coding != coding || stats.positions.method != 13) {
+      std::fprintf(stderr, "qmc-make-vectors: coding 8 with POSN 13: %s\n", s.to_string().c_str());
+      std::exit(3);
+    }
+    w->valid("valid_polygon_coding8_posn13", out, &big);
+  }
+  const ChunkReplacer with_conn(encode_polygons(make_cube()));
+  const auto quad_code = [](int symbol) {
+    return coding7_symbols(
+        qmc::kGroupQuads,
+        [symbol](qmc::RangeEncoder* r, qmc::PolygonSymbolModel* m) { qmc::code_face_symbol(r, m, qmc::GateContext{}, symbol); },
+        true);
+  };
+  w->valid("valid_polygon_coding8_pillow",
+           with_conn(coding7_conn(8, 2, qmc::kGroupQuads, quad_code(0), one_component(0, 1), 0, coding)), nullptr);
+  w->invalid("invalid_polygon_coding8_quad_code_13",
+             with_conn(coding7_conn(8, 2, qmc::kGroupQuads, quad_code(13), one_component(0, 1), 0, coding)),
+             ErrorCode::kBadSymbol);
+  w->invalid("invalid_polygon_coding8_groups_above_7",
+             with_conn(coding7_conn(8, 2, 8, quad_code(0), one_component(0, 1), 0, coding)), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_polygon_coding8_symbols_cut", with_symbols_cut(disk_file, "coding 8 disk"), ErrorCode::kTruncated);
+  // A quad code 13 whose decisions also read the fifth invented byte: truncated, checked first (5.4.10).
+  for (int q1 = 1;; ++q1) {
+    const std::vector<uint8_t> all = q1s_then_code13(q1, SIZE_MAX);
+    bool found = false;
+    for (size_t keep = all.size() + 1; keep-- > 0 && !found;) {
+      const std::vector<uint8_t> symbols = q1s_then_code13(q1, keep);
+      if (!code13_meets_truncation(symbols, q1)) continue;
+      w->invalid("invalid_polygon_coding8_code_13_truncated",
+                 with_conn(coding7_conn(uint32_t(4 * (q1 + 5)), uint32_t(q1 + 5), qmc::kGroupQuads, symbols,
+                                        one_component(uint32_t(q1 + 3), 1), 0, coding)),
+                 ErrorCode::kTruncated);
+      found = true;
+    }
+    if (found) break;
+  }
+  w->invalid("invalid_polygon_unknown_coding_9",
+             with_conn(coding7_conn(8, 2, qmc::kGroupQuads, quad_code(0), one_component(0, 1), 0, 9)),
+             ErrorCode::kUnsupportedFeature);
+}
 
 // ---------------------------------------------------------------------------
 // Section 15: aTTR, attributes of the corners.
@@ -4812,6 +4973,7 @@ int main(int argc, char** argv) {
   write_posn11_vectors(&w);
   write_posn12_vectors(&w);
   write_posn13_vectors(&w);
+  write_coding8_vectors(&w);
   w.finish();
   return 0;
 }

@@ -16,10 +16,11 @@ inline constexpr uint8_t kSignature[8] = {0x89, 'Q', 'M', 'C', '\r', '\n', 0x1A,
 // method 1, minor 6 polygon coding 7, minor 7 POSN method 3, minor 8 POSN
 // method 4, minor 9 POSN method 5, minor 10 POSN methods 6 and 7, minor 11 POSN
 // method 8, minor 12 POSN method 9, minor 13 POSN method 10, minor 14 LEVL
-// code 4, minor 15 POSN method 11, minor 16 POSN method 12, minor 17 POSN method 13 (section 11);
+// code 4, minor 15 POSN method 11, minor 16 POSN method 12, minor 17 POSN method 13, minor 18
+// polygon coding 8 (section 11);
 // a file says the lowest minor version that defines everything it uses.
 inline constexpr uint8_t kFormatMajor = 1;
-inline constexpr uint8_t kFormatMinor = 17;
+inline constexpr uint8_t kFormatMinor = 18;
 
 // Section 3.2: a chunk payload is at most 2^31 - 1 bytes.
 inline constexpr uint32_t kMaxChunkLength = 0x7FFFFFFFu;
@@ -75,12 +76,14 @@ const char* quad_coding_name(QuadCoding coding);
 
 // Section 5.4.4: method 2 uses the quad codings 0..4 when every coded face
 // is a quad, 5, a Huffman code over all face symbols, or 7, the symbols range
-// coded in contexts of Spirale Reversi's state (5.4.10, format 1.6). Coding 6
-// is unassigned (the vector invalid_polygon_unknown_coding uses it).
+// coded in contexts of Spirale Reversi's state (5.4.10, format 1.6), or 8, the
+// same with the quads' contexts from the gate's neighbours too (format 1.18).
+// Coding 6 is unassigned (the vector invalid_polygon_unknown_coding uses it).
 inline constexpr int kPolygonMixedHuffman = 5;
 inline constexpr int kPolygonUnassignedCoding = 6;
 inline constexpr int kPolygonContextCoded = 7;
-inline constexpr int kPolygonCodingCount = 8;
+inline constexpr int kPolygonQuadContextCoded = 8;
+inline constexpr int kPolygonCodingCount = 9;
 
 // Section 6.1: position quantization bits.
 inline constexpr int kMinPositionBits = 1;

@@ -1,6 +1,6 @@
-// Coding 7 of the polygon coder (spec/qmc-format.md 5.4.10): face symbols
-// range coded (13.5.2) in the order Spirale Reversi applies them, each
-// decision in a context of how many faces already surround the gate's
+// Codings 7 and 8 of the polygon coder (spec/qmc-format.md 5.4.10): face
+// symbols range coded (13.5.2) in the order Spirale Reversi applies them,
+// each decision in a context of how many faces already surround the gate's
 // vertices. Spirale Reversi rebuilds each vertex's fan face by face, so the
 // count at the gate says how close the vertex is to being closed (symbol 13
 // makes it inner): the valence idea of Touma and Gotsman (1998) and Alliez
@@ -65,12 +65,22 @@ inline constexpr uint32_t kGateCountCap = 7;
 // Which symbol groups the payload uses (5.4.10's `groups` byte).
 inline constexpr uint8_t kGroupTriangles = 1, kGroupQuads = 2, kGroupOther = 4;
 
+// The context of a quad symbol's decisions: coding 7's the gate's count a
+// (Q[a]); coding 8's also the larger count of the gate's two loop
+// neighbours, 8 a + max(b, c) (Q8), which tells a regular quad mesh's
+// shapes apart where a alone does not (5.4.10).
+inline constexpr int kQuadContexts = (kGateCountCap + 1) * (kGateCountCap + 1);
+inline uint32_t quad_context(const GateContext& g, bool neighbours) {
+  return neighbours ? g.gate * (kGateCountCap + 1) + (g.next > g.prev ? g.next : g.prev) : g.gate;
+}
+
 struct PolygonSymbolModel {
   uint8_t groups = 0;
+  bool quad_neighbours = false;                  // coding 8: quads in Q8's contexts
   int previous_group = 0;                       // 0 triangle, 1 quad, 2 other
   CountedProbability not_triangle[3], other[3];  // by previous_group
   CountedProbability tri_free[512], tri_split[512], tri_side[512], tri_closing[512];
-  CountedProbability quad[kGateCountCap + 1][16];  // by the gate's count, tree node
+  CountedProbability quad[kQuadContexts][16];  // by quad_context, tree node
   CountedProbability other_status, other_gap;
 };
 
@@ -102,8 +112,9 @@ int code_face_symbol(Coder* coder, PolygonSymbolModel* m, const GateContext& g, 
       return code_counted(coder, &m->tri_side[c], symbol == 16) ? 16 : 15;
     return code_counted(coder, &m->tri_closing[c], symbol == 17) ? 17 : 14;
   }
+  CountedProbability(&tree)[16] = m->quad[quad_context(g, m->quad_neighbours)];
   uint32_t node = 1;
-  for (int i = 3; i >= 0; --i) node = 2 * node + uint32_t(code_counted(coder, &m->quad[g.gate][node], (symbol >> i) & 1));
+  for (int i = 3; i >= 0; --i) node = 2 * node + uint32_t(code_counted(coder, &tree[node], (symbol >> i) & 1));
   return node - 16 < 13 ? int(node - 16) : -1;
 }
 

@@ -22,8 +22,13 @@
 namespace qmc {
 namespace {
 
-// Faces reserved per byte of coding 7's symbol stream before decoding it.
+// Faces reserved per byte of codings 7 and 8's symbol stream before decoding it.
 constexpr uint64_t kReservedFacesPerSymbolByte = 32;
+
+// Codings 7 and 8 carry their symbols range coded after the header (5.4.1).
+bool is_context_coded(uint8_t coding) {
+  return coding == kPolygonContextCoded || coding == kPolygonQuadContextCoded;
+}
 
 Status payload_error(const std::string& why) { return Status(ErrorCode::kBadChunkPayload, "CONN: " + why); }
 Status symbol_error(const std::string& why) { return Status(ErrorCode::kBadSymbol, "CONN: " + why); }
@@ -51,7 +56,7 @@ struct Components {
   uint64_t coded = 0;                          // K
 };
 
-// `symbol_bytes`: coding 7's range-coded stream length B, or -1 when the
+// `symbol_bytes`: codings 7 and 8's range-coded stream length B, or -1 when the
 // symbols are bits of this stream (codings 0 .. 5).
 Status read_components(BitReader* in, int64_t symbol_bytes, Components* c) {
   uint32_t count = 0;
@@ -163,14 +168,15 @@ FaceShapes fixed_symbol_shapes() {
   return table;
 }
 
-// Coding 7 (5.4.10): each symbol range decoded when Spirale Reversi is
+// Codings 7 and 8 (5.4.10): each symbol range decoded when Spirale Reversi is
 // about to apply it, in the context of the gate. Symbols 0 .. 17 are
 // applied from the fixed table; only symbol 18's shapes are stored.
 class CodedFaces : public FaceSymbolSource {
  public:
-  CodedFaces(const uint8_t* data, size_t size, uint8_t groups)
+  CodedFaces(const uint8_t* data, size_t size, uint8_t groups, bool quad_neighbours)
       : range_(data, size), bytes_(size), fixed_(fixed_symbol_shapes()) {
     model_.groups = groups;
+    model_.quad_neighbours = quad_neighbours;
   }
   Status start() const {
     if (range_.bad_start()) return payload_error("face symbol stream starts with 0xFFFFFFFF");
@@ -337,7 +343,7 @@ namespace {
 
 struct PolygonHeader {
   uint8_t coding = 0, groups = 0;
-  const uint8_t* symbols = nullptr;  // coding 7's range-coded stream
+  const uint8_t* symbols = nullptr;  // codings 7 and 8: the range-coded stream
   int64_t symbol_bytes = -1;
 };
 
@@ -347,7 +353,7 @@ Status read_polygon_header(ByteReader* bytes, PolygonHeader* h) {
   if (flags != 0) return payload_error("reserved polygon flags set");
   if (h->coding >= kPolygonCodingCount || h->coding == kPolygonUnassignedCoding)
     return Status(ErrorCode::kUnsupportedFeature, "CONN: polygon coding " + std::to_string(h->coding));
-  if (h->coding != kPolygonContextCoded) return Status::Ok();
+  if (!is_context_coded(h->coding)) return Status::Ok();
   uint64_t length = 0;
   if (!bytes->get_u8(&h->groups)) return payload_error("polygon header cut short");
   if (h->groups > (kGroupTriangles | kGroupQuads | kGroupOther)) return payload_error("unknown symbol groups");
@@ -396,7 +402,7 @@ Status decode_stored(BitReader* in, const PolygonHeader& h, uint32_t vertex_coun
   return polygon_spirale_reversi(components.faces, components.first_degree, shapes, surface);
 }
 
-// Coding 7: components, Spirale Reversi decoding each symbol as it goes,
+// Codings 7 and 8: components, Spirale Reversi decoding each symbol as it goes,
 // then the records (5.4.10).
 Status decode_context_coded(BitReader* in, const PolygonHeader& h, uint32_t vertex_count, uint32_t face_count,
                             PolygonSurface* surface, Records* records, Mesh* loose, Components* components_out) {
@@ -410,7 +416,7 @@ Status decode_context_coded(BitReader* in, const PolygonHeader& h, uint32_t vert
     return limit_error(std::to_string(surface_faces) + " surface faces for face_count " + std::to_string(face_count) +
                        " and " + std::to_string(in->bits_remaining()) + " bits of records");
   if (h.groups == 0 && components.coded > 0) return symbol_error("face symbols but no symbol group");
-  CodedFaces faces(h.symbols, size_t(h.symbol_bytes), h.groups);
+  CodedFaces faces(h.symbols, size_t(h.symbol_bytes), h.groups, h.coding == kPolygonQuadContextCoded);
   if (Status s = faces.start(); !s.ok()) return s;
   // 512 (B + 8) faces may be far more than the decisions in the stream
   // actually build before it ends (5.4.10), so only what a well-compressed
@@ -435,7 +441,7 @@ Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t ve
   Records records;
   Mesh loose;
   Components components;
-  const Status decoded = header.coding == kPolygonContextCoded
+  const Status decoded = is_context_coded(header.coding)
                              ? decode_context_coded(&in, header, vertex_count, face_count, &surface, &records, &loose,
                                                     &components)
                              : decode_stored(&in, header, vertex_count, &surface, &records, &loose, &components);

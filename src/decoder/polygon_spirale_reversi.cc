@@ -38,7 +38,7 @@ struct Detour {
 
 class PolygonSpiraleReversi {
  public:
-  // Capacities: the corners (0: not known yet, coding 7) and the coded
+  // Capacities: the corners (0: not known yet, codings 7 and 8) and the coded
   // faces of the largest component; a face has at least 3 corners.
   PolygonSpiraleReversi(size_t node_capacity, size_t face_capacity) {
     nodes_.reserve(node_capacity);
@@ -49,7 +49,7 @@ class PolygonSpiraleReversi {
     face_degrees_.reserve(face_capacity);
   }
 
-  // Counts each vertex's faces for gate_context() (coding 7 only: it costs
+  // Counts each vertex's faces for gate_context() (codings 7 and 8 only: it costs
   // a find per corner).
   void count_faces() { counting_ = true; }
   // Section 5.4.10: the face counts at the gate node and its neighbours.
@@ -330,7 +330,7 @@ Status PolygonSpiraleReversi::label_component(uint32_t d, size_t coded, PolygonS
   for (size_t k = coded, begin = 0; k-- > 0; begin += face_degrees_[k])
     std::reverse(face_vertices_.begin() + begin, face_vertices_.begin() + begin + face_degrees_[k]);
   face_vertices_.insert(face_vertices_.begin(), first_face.begin(), first_face.end());
-  if (surface->corners.capacity() == 0)  // coding 7's first component: its faces stay where they are
+  if (surface->corners.capacity() == 0)  // codings 7 and 8: the first component's faces stay where they are
     surface->corners.swap(face_vertices_);
   else
     surface->corners.insert(surface->corners.end(), face_vertices_.begin(), face_vertices_.end());
@@ -401,7 +401,7 @@ Status run_spirale_reversi(const std::vector<uint32_t>& components, const std::v
       size_t index = 0;
       const GateContext gate = count_faces ? decoder.gate_context() : GateContext{};
       if (Status s = source->face(gate, first + k, &shapes, &index); !s.ok()) return s;
-      // Coding 7 streams the faces in the order they are applied (5.4.10);
+      // Codings 7 and 8 stream the faces in the order they are applied (5.4.10);
       // the stored codings in the traversal's order, index = first + k.
       const size_t number = count_faces ? applied : index;
       if (Status s = decoder.apply(*shapes, index, number); !s.ok()) return s;

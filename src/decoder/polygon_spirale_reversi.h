@@ -20,7 +20,7 @@ struct PolygonSurface {
   uint32_t labels = 0;                // N: number of surface labels
 };
 
-// Coding 7 (5.4.10): the faces come one at a time, each symbol decoded (or
+// Codings 7 and 8 (5.4.10): the faces come one at a time, each symbol decoded (or
 // encoded) in the context of the gate it is about to be applied at.
 class FaceSymbolSource {
  public:
@@ -42,7 +42,7 @@ Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const st
 // grows as faces are decoded.
 Status polygon_spirale_reversi(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,
                                FaceSymbolSource* source, size_t expected_faces, PolygonSurface* surface);
-// Coding 7's encoder (5.4.10): the same run for the gate contexts only,
+// The encoder of codings 7 and 8 (5.4.10): the same run for the gate contexts only,
 // each component checked to close but no surface built or labelled (the
 // encoder's self-check decodes the whole payload afterwards).
 Status polygon_spirale_contexts(const std::vector<uint32_t>& components, const std::vector<uint32_t>& first_degree,

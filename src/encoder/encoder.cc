@@ -169,6 +169,7 @@ std::string polygon_connectivity(const Mesh& mesh, const EncodeOptions& options,
                                  PolygonCoderStats* stats) {
   PolygonEncoding enc;
   if (std::string why = encode_polygon_connectivity(mesh, options.polygon_coding, options.polygon_context_coding,
+                                                    options.polygon_quad_contexts,
                                                     options.unused_vertices_along_curve, &enc);
       !why.empty())
     return why;
@@ -208,8 +209,8 @@ Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileC
       return invalid("the quad coder cannot take this mesh: " + why);
     st->fallback_reason = why;
   }
-  // Coding 7 of the polygon coder often beats the quad coder on all-quad
-  // meshes too (5.4.10): keep the smaller CONN.
+  // Codings 7 and 8 of the polygon coder often beat the quad coder on
+  // all-quad meshes too (5.4.10): keep the smaller CONN.
   if (structured && options.connectivity == ConnectivityChoice::kAuto && options.polygon_context_coding) {
     FileConnectivity polygon;
     PolygonCoderStats polygon_stats;
@@ -235,6 +236,7 @@ Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileC
 }
 
 uint8_t minor_version_for(const FileConnectivity& conn, int position_method) {
+  if (conn.polygon_coding == kPolygonQuadContextCoded) return 18;
   if (position_method >= 13) return 17;
   if (position_method == 12) return 16;
   if (position_method == 11) return 15;

@@ -99,13 +99,15 @@ uint8_t symbol_groups(const FaceShapes& shapes) {
   return groups;
 }
 
-// Coding 7 (5.4.10): the encoder runs the decoder's Spirale Reversi over its
-// own symbols, so each one is coded in exactly the gate context the decoder
-// will see when it decodes it.
+// Codings 7 and 8 (5.4.10): the encoder runs the decoder's Spirale Reversi
+// over its own symbols, so each one is coded in exactly the gate context the
+// decoder will see when it decodes it.
 class EncodedFaces : public FaceSymbolSource {
  public:
-  EncodedFaces(const FaceShapes& shapes, const std::vector<int>& symbols) : shapes_(shapes), symbols_(symbols) {
+  EncodedFaces(const FaceShapes& shapes, const std::vector<int>& symbols, bool quad_neighbours)
+      : shapes_(shapes), symbols_(symbols) {
     model_.groups = symbol_groups(shapes);
+    model_.quad_neighbours = quad_neighbours;
   }
   Status face(const GateContext& gate, size_t f, const FaceShapes** shapes, size_t* index) override {
     const int symbol = symbols_[f];
@@ -133,11 +135,13 @@ class EncodedFaces : public FaceSymbolSource {
   RangeEncoder range_;
 };
 
-// The groups byte, the length and the range-coded symbols of coding 7;
-// empty if the traversal's own symbols did not replay (then coding 7 is not
-// offered, and self_check still guards whichever coding is written).
-std::vector<uint8_t> context_coded_symbols(const PolygonTraversal& t, const std::vector<int>& symbols) {
-  EncodedFaces faces(t.shapes, symbols);
+// The groups byte, the length and the range-coded symbols of coding 7 (or
+// 8, with quad_neighbours); empty if the traversal's own symbols did not
+// replay (then the coding is not offered, and self_check still guards
+// whichever coding is written).
+std::vector<uint8_t> context_coded_symbols(const PolygonTraversal& t, const std::vector<int>& symbols,
+                                           bool quad_neighbours) {
+  EncodedFaces faces(t.shapes, symbols, quad_neighbours);
   if (!polygon_spirale_contexts(t.component_faces, t.first_degree, &faces).ok()) return {};
   const std::vector<uint8_t> stream = faces.finish();
   std::vector<uint8_t> out;
@@ -209,8 +213,8 @@ void derive_records(const PolygonSurfaceModel& s, const PolygonTraversal& t, Rec
 
 }  // namespace
 
-std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool context_coding, bool unused_along_curve,
-                                        PolygonEncoding* out) {
+std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool context_coding, bool quad_contexts,
+                                        bool unused_along_curve, PolygonEncoding* out) {
   *out = PolygonEncoding{};
   PolygonSurfaceModel surface;
   if (std::string why = build_polygon_surface(mesh, &surface); !why.empty()) return why;
@@ -278,12 +282,19 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
   const std::vector<uint8_t> types = quads ? quad_types(symbols) : std::vector<uint8_t>{};
   int best = -1;
   const bool try_context = context_coding || forced == kPolygonContextCoded;
-  const std::vector<uint8_t> coded_symbols = try_context ? context_coded_symbols(traversal, symbols) : std::vector<uint8_t>{};
+  const std::vector<uint8_t> coded_symbols = try_context ? context_coded_symbols(traversal, symbols, false) : std::vector<uint8_t>{};
+  // Coding 8 differs from 7 only in its quads' contexts: tried where there
+  // are quads (elsewhere it is coding 7's bytes under a number 1.17 decoders reject).
+  const bool try_quad_contexts = forced == kPolygonQuadContextCoded ||
+                                 (context_coding && quad_contexts && (symbol_groups(shapes) & kGroupQuads));
+  const std::vector<uint8_t> quad_coded_symbols =
+      try_quad_contexts ? context_coded_symbols(traversal, symbols, true) : std::vector<uint8_t>{};
   for (int c = 0; c < kPolygonCodingCount; ++c) {
     if (c == kPolygonUnassignedCoding) {
       out->coding_bits[c] = -1;
-    } else if (c == kPolygonContextCoded) {
-      out->coding_bits[c] = coded_symbols.empty() ? -1 : int64_t(8 * coded_symbols.size());
+    } else if (c == kPolygonContextCoded || c == kPolygonQuadContextCoded) {
+      const std::vector<uint8_t>& coded = c == kPolygonContextCoded ? coded_symbols : quad_coded_symbols;
+      out->coding_bits[c] = coded.empty() ? -1 : int64_t(8 * coded.size());
     } else if (c == kPolygonMixedHuffman) {
       BitWriter trial;
       write_mixed_symbols(shapes, symbols, &trial);
@@ -304,7 +315,8 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
   bits.write_exp_golomb(uint32_t(traversal.component_faces.size()));
   for (uint32_t n : traversal.component_faces) bits.write_exp_golomb(n - 2);
   for (uint32_t d : traversal.first_degree) bits.write_exp_golomb(d - 3);
-  if (best != kPolygonContextCoded) write_symbols(shapes, symbols, best, &bits);
+  const bool range_coded = best == kPolygonContextCoded || best == kPolygonQuadContextCoded;
+  if (!range_coded) write_symbols(shapes, symbols, best, &bits);
   const uint64_t before_records = bits.bit_count();
   bits.write_exp_golomb(uint32_t(records.virtual_index.size()));
   for (size_t i = 0; i < records.virtual_index.size(); ++i)
@@ -334,7 +346,10 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
   put_varint(&out->payload, out->file_mesh.face_count());
   put_u8(&out->payload, 0);
   put_u8(&out->payload, out->coding);
-  if (best == kPolygonContextCoded) out->payload.insert(out->payload.end(), coded_symbols.begin(), coded_symbols.end());
+  if (range_coded) {
+    const std::vector<uint8_t>& coded = best == kPolygonContextCoded ? coded_symbols : quad_coded_symbols;
+    out->payload.insert(out->payload.end(), coded.begin(), coded.end());
+  }
   const std::vector<uint8_t> stream = bits.finish();
   out->payload.insert(out->payload.end(), stream.begin(), stream.end());
   out->components = uint32_t(traversal.component_faces.size());

@@ -27,11 +27,12 @@ struct PolygonEncoding {
 };
 
 // Returns "" or why the mesh cannot go through method 2. `forced` is a
-// coding 0..5 or 7, or -1 for the smallest.
-// `context_coding`: coding 7 may be the smallest (5.4.10, format 1.6).
+// coding 0..5, 7 or 8, or -1 for the smallest.
+// `context_coding`: coding 7 may be the smallest (5.4.10, format 1.6), and
+// with `quad_contexts` coding 8 too (format 1.18).
 // `unused_along_curve`: vertices no face uses follow a Z-order curve
 // (sort_along_curve), else the input's order.
-std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool context_coding, bool unused_along_curve,
-                                        PolygonEncoding* out);
+std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool context_coding, bool quad_contexts,
+                                        bool unused_along_curve, PolygonEncoding* out);
 
 }  // namespace qmc

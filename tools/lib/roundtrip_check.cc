@@ -31,7 +31,7 @@ namespace {
 // check_round_trip still checks every face and coordinate against it.
 bool polygon_witness(const Mesh& original, bool unused_along_curve, Correspondence* c, std::string* why) {
   PolygonEncoding encoding;
-  *why = encode_polygon_connectivity(original, -1, true, unused_along_curve, &encoding);
+  *why = encode_polygon_connectivity(original, -1, true, true, unused_along_curve, &encoding);
   if (!why->empty()) return false;
   c->file_vertex = std::move(encoding.file_vertex);
   c->face_source = std::move(encoding.face_source);
