@@ -256,6 +256,7 @@ std::string coding_name(const QmcRun& q) {
   const int c = q.stats.polygon.coding;
   if (c == qmc::kPolygonMixedHuffman) return "5 mixed Huffman";
   if (c == qmc::kPolygonContextCoded) return "7 context-modelled";
+  if (c == qmc::kPolygonQuadContextCoded) return "8 context-modelled, quads by their neighbours";
   return format("%d %s", c, qmc::quad_coding_name(static_cast<qmc::QuadCoding>(c)));
 }
 
@@ -340,7 +341,7 @@ struct Range {
 std::string observations(const std::vector<Row>& rows) {
   Range poly_ratio, poly_tri_ratio, tri_qmc, tri_draco, tri_ratio, forced_bytes, forced_bpv, empty_bits, record_bits;
   size_t poly_n = 0, poly_smaller = 0, tri_n = 0, tri_smaller = 0, tri_polygon_coder = 0, tri_all_triangle_symbols = 0;
-  size_t quad_scope_polygon = 0;  // all-quad meshes the quad coder took, where coding 7 was smaller
+  size_t quad_scope_polygon = 0;  // all-quad meshes the quad coder took, where coding 7 or 8 was smaller
   double share_max = -1;
   std::string share_max_mesh;
   for (const Row& r : rows) {
@@ -392,7 +393,7 @@ std::string observations(const std::vector<Row>& rows) {
                 tri_draco.str("%.2f").c_str(), tri_ratio.str("%.2f").c_str(), tri_smaller, tri_n);
   if (quad_scope_polygon)
     s += format("- All-quad meshes in the quad coder's scope on which the automatic choice keeps the polygon coder "
-                "because its CONN is smaller (coding 7): %zu.\n",
+                "because its CONN is smaller (coding 7 or 8): %zu.\n",
                 quad_scope_polygon);
   if (forced_bytes.n)
     s += format("- On the %zu meshes the automatic choice gives to the quad coder, forcing the polygon coder "
