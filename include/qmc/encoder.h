@@ -91,8 +91,9 @@ struct EncodeOptions {
   // a file readable by 1.5 decoders.
   bool polygon_context_coding = true;
   // Whether it may be coding 8 too (format 1.18, 5.4.10: quads coded in
-  // contexts of the gate's neighbours as well, 8-35 % smaller on the
-  // corpus's all-quad meshes); false keeps a file readable by 1.17 decoders.
+  // contexts of the gate's neighbours as well; the whole CONN 8-35 % smaller
+  // on the corpus's quad meshes that take it); false keeps a file readable
+  // by 1.17 decoders.
   bool polygon_quad_contexts = true;
   // Polygon coder only: vertices no face uses take the last labels along a
   // Z-order curve, so that each is predicted from a near one (5.4.9); false
