@@ -11,6 +11,7 @@
 
 #include "bitio/byte_io.h"
 #include "bitio/displacement_coding.h"
+#include "bitio/polygon_symbol_coding.h"
 #include "bitio/predicted_mapping.h"
 #include "bitio/range_coder.h"
 #include "qmc/format.h"
@@ -50,9 +51,7 @@ static void write_polygon_seed(const fs::path& path, const uint8_t* payload, siz
   // follows the flags and coding bytes of coding 7 or 8 (5.4.10), whose
   // layouts are the same.
   uint8_t flags = 0, coding = 0;
-  if (!in.get_u8(&flags) || !in.get_u8(&coding) ||
-      (coding != qmc::kPolygonContextCoded && coding != qmc::kPolygonQuadContextCoded))
-    return;
+  if (!in.get_u8(&flags) || !in.get_u8(&coding) || !qmc::is_context_coding(coding)) return;
   seed.resize(4);
   seed.insert(seed.end(), in.cursor(), in.cursor() + in.remaining());
   for (const char* target : {"polygon_coding7", "polygon_coding8"})

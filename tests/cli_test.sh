@@ -18,6 +18,10 @@ contains() {  # contains NAME FILE PATTERN
   if grep -q -- "$3" "$2"; then passed=$((passed + 1)); else
     failed=$((failed + 1)); echo "FAIL $1: '$3' not in output:"; cat "$2"; fi
 }
+smaller() {  # smaller NAME SMALL LARGE WHY: file SMALL has fewer bytes than file LARGE
+  if [ "$(stat -c %s "$2")" -lt "$(stat -c %s "$3")" ]; then passed=$((passed + 1)); else
+    failed=$((failed + 1)); echo "FAIL $1: $4"; fi
+}
 starts_with() {  # starts_with NAME FILE TAG: the file's first bytes are TAG
   if [ "$(head -c ${#3} "$2")" = "$3" ]; then passed=$((passed + 1)); else
     failed=$((failed + 1)); echo "FAIL $1: $2 does not start with $3"; fi
@@ -76,8 +80,7 @@ check format-1.10-asked 0 "$qmc" encode "$work/terraces.obj" "$work/f110b.qmc" -
 check format-1.9-terraces 0 "$qmc" encode "$work/terraces.obj" "$work/f19t.qmc" -q 16 --quiet --format 1.9
 check format-1.9-terraces-info 0 "$qmc" info "$work/f19t.qmc"
 contains format-1.9-terraces-method-4 "$work/out" "predicted (spec 14, method 4: geometry order)"
-if [ "$(stat -c %s "$work/f110.qmc")" -lt "$(stat -c %s "$work/f19t.qmc")" ]; then passed=$((passed + 1)); else
-  failed=$((failed + 1)); echo "FAIL format-1.10-smaller: method 6's file is not smaller than method 4's"; fi
+smaller format-1.10-smaller "$work/f110.qmc" "$work/f19t.qmc" "method 6's file is not smaller than method 4's"
 "$meshgen" triangle-torus 48 32 "$work/tritorus.obj" >/dev/null  # regular triangles: method 8 (14.5, 14.9)
 check format-1.11 0 "$qmc" encode "$work/tritorus.obj" "$work/f111.qmc" -q 12 --quiet --format 1.11
 check format-1.11-info 0 "$qmc" info "$work/f111.qmc"
@@ -88,8 +91,7 @@ contains format-1.11-features "$work/out" '"position_method":8,"position_feature
 check format-1.10-tritorus 0 "$qmc" encode "$work/tritorus.obj" "$work/f110t.qmc" -q 12 --quiet --format 1.10
 check format-1.10-tritorus-info 0 "$qmc" info "$work/f110t.qmc"
 contains format-1.10-tritorus-method-4 "$work/out" "predicted (spec 14, method 4: geometry order)"
-if [ "$(stat -c %s "$work/f111.qmc")" -lt "$(stat -c %s "$work/f110t.qmc")" ]; then passed=$((passed + 1)); else
-  failed=$((failed + 1)); echo "FAIL format-1.11-smaller: method 8's file is not smaller than method 4's"; fi
+smaller format-1.11-smaller "$work/f111.qmc" "$work/f110t.qmc" "method 8's file is not smaller than method 4's"
 # Method 9 (14.10): the torus is symmetric across x, and every vertex whose mirror image was decoded
 # before it may be predicted by that image.
 check format-1.12 0 "$qmc" encode "$work/tritorus.obj" "$work/f112.qmc" -q 12 --quiet --format 1.12
@@ -98,8 +100,7 @@ contains format-1.12-written "$work/out" "format 1.12"
 contains format-1.12-method-9 "$work/out" "predicted (spec 14, method 9: geometry order, triangles' twist, mirror images)"
 check format-1.12-info-json 0 "$qmc" info --json "$work/f112.qmc"
 contains format-1.12-plane "$work/out" '"position_method":9,"position_features":4,"position_mirror_axis":[0-2],'
-if [ "$(stat -c %s "$work/f112.qmc")" -lt "$(stat -c %s "$work/f111.qmc")" ]; then passed=$((passed + 1)); else
-  failed=$((failed + 1)); echo "FAIL format-1.12-smaller: method 9's file is not smaller than method 8's"; fi
+smaller format-1.12-smaller "$work/f112.qmc" "$work/f111.qmc" "method 9's file is not smaller than method 8's"
 # Method 10 (14.11), what encode writes up to format 1.16 (1.17: method 13): the torus at 14 bits, whose
 # halves are a step apart where the plane falls between grid points.
 check format-1.13 0 "$qmc" encode "$work/tritorus.obj" "$work/f113.qmc" -q 14 --quiet --format 1.16
@@ -129,8 +130,7 @@ contains format-1.16-method-12 "$work/out" "method 12: geometry order.*edges ext
 check format-1.15-grid 0 "$qmc" encode "$work/grid.obj" "$work/f115g.qmc" --quiet --format 1.15
 check format-1.15-grid-info 0 "$qmc" info "$work/f115g.qmc"
 contains format-1.15-grid-no-method-12 "$work/out" 'format 1\.\([4-9]\|1[0-5]\)$'
-if [ "$(stat -c %s "$work/f116.qmc")" -ge "$(stat -c %s "$work/f115g.qmc")" ]; then
-  failed=$((failed + 1)); echo "FAIL format-1.16-smaller: method 12's file is not smaller than the 1.15 file"; fi
+smaller format-1.16-smaller "$work/f116.qmc" "$work/f115g.qmc" "method 12's file is not smaller than the 1.15 file"
 check verify-method-12 0 "$qmc" verify "$work/grid.obj" "$work/f116.qmc"
 # Spec 14.14: from 1,000 vertices the class probabilities per axis, POSN method 13 (format 1.17);
 # --format 1.16 keeps method 12 or below.
@@ -153,8 +153,7 @@ check format-1.17-torus 0 "$qmc" encode "$work/torus.obj" "$work/f117t.qmc" --qu
 check format-1.17-torus-info 0 "$qmc" info "$work/f117t.qmc"
 contains format-1.17-torus-coding-7 "$work/out" "polygon coder (spec 5.4), coding 7;"
 contains format-1.17-torus-no-1.18 "$work/out" 'format 1\.\([4-9]\|1[0-7]\)$'
-if [ "$(stat -c %s "$work/f118.qmc")" -ge "$(stat -c %s "$work/f117t.qmc")" ]; then
-  failed=$((failed + 1)); echo "FAIL format-1.18-smaller: coding 8's file is not smaller than the 1.17 file"; fi
+smaller format-1.18-smaller "$work/f118.qmc" "$work/f117t.qmc" "coding 8's file is not smaller than the 1.17 file"
 check verify-coding-8 0 "$qmc" verify "$work/torus.obj" "$work/f118.qmc"
 # Spec 14.12: an irregular triangulation takes POSN method 11 (format 1.15); --format 1.14 keeps method 10 or below.
 "$meshgen" jittered-sphere 3 11 "$work/jittered.obj" >/dev/null
@@ -167,8 +166,7 @@ contains format-1.15-shear "$work/out" '"position_method":11,.*"position_shear":
 check format-1.14-jittered 0 "$qmc" encode "$work/jittered.obj" "$work/f114j.qmc" --quiet --format 1.14
 check format-1.14-jittered-info 0 "$qmc" info "$work/f114j.qmc"
 contains format-1.14-jittered-method-4 "$work/out" "predicted (spec 14, method 4: geometry order)"
-if [ "$(stat -c %s "$work/f115.qmc")" -ge "$(stat -c %s "$work/f114j.qmc")" ]; then
-  failed=$((failed + 1)); echo "FAIL format-1.15-smaller: method 11's file is not smaller than the 1.14 file"; fi
+smaller format-1.15-smaller "$work/f115.qmc" "$work/f114j.qmc" "method 11's file is not smaller than the 1.14 file"
 check verify-method-11 0 "$qmc" verify "$work/jittered.obj" "$work/f115.qmc"
 check format-1.010-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f112.qmc" --format 1.010
 "$meshgen" torus 40 30 "$work/torus1200.obj" >/dev/null  # 1,200 vertices of quads: method 4 or 5, never 1 (14.5)
@@ -180,8 +178,7 @@ check format-1.8 0 "$qmc" encode "$work/torus1200.obj" "$work/f18.qmc" --format 
 check format-1.8-info 0 "$qmc" info "$work/f18.qmc"
 contains format-1.8-written "$work/out" "format 1.8"
 contains format-1.8-method-4 "$work/out" "predicted (spec 14, method 4: geometry order)"
-if [ "$(stat -c %s "$work/f19.qmc")" -lt "$(stat -c %s "$work/f18.qmc")" ]; then passed=$((passed + 1)); else
-  failed=$((failed + 1)); echo "FAIL format-1.9-smaller: method 5's file is not smaller than method 4's"; fi
+smaller format-1.9-smaller "$work/f19.qmc" "$work/f18.qmc" "method 5's file is not smaller than method 4's"
 check format-1.7 0 "$qmc" encode "$work/torus1200.obj" "$work/f17.qmc" --format 1.7 --quiet
 check format-1.7-info 0 "$qmc" info "$work/f17.qmc"
 contains format-1.7-label-order "$work/out" "predicted (spec 14, method 1)"

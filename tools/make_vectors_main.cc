@@ -1938,17 +1938,15 @@ Mesh pole_disk(int spokes, int rings) {
 
 // Coding 8 symbols of one component: `q1` Q1 faces (each a new loop: the
 // first at no loop, a = b = c = 0, the others at a = b = c = 1), then the
-// quad code 13, cut to the first `keep` bytes.
-std::vector<uint8_t> q1s_then_code13(int q1, size_t keep) {
-  std::vector<uint8_t> symbols = coding7_symbols(
+// quad code 13.
+std::vector<uint8_t> q1s_then_code13(int q1) {
+  return coding7_symbols(
       qmc::kGroupQuads,
       [q1](qmc::RangeEncoder* r, qmc::PolygonSymbolModel* m) {
         for (int i = 0; i <= q1; ++i)
           qmc::code_face_symbol(r, m, i == 0 ? qmc::GateContext{} : qmc::GateContext{1, 1, 1}, i < q1 ? 0 : 13);
       },
       true);
-  symbols.resize(std::min(keep, symbols.size()));
-  return symbols;
 }
 
 // Whether the decoder of 5.4.10 meets its fifth invented byte (truncated)
@@ -2042,10 +2040,10 @@ void write_coding8_vectors(VectorWriter* w) {
   w->invalid("invalid_polygon_coding8_symbols_cut", with_symbols_cut(disk_file, "coding 8 disk"), ErrorCode::kTruncated);
   // A quad code 13 whose decisions also read the fifth invented byte: truncated, checked first (5.4.10).
   for (int q1 = 1;; ++q1) {
-    const std::vector<uint8_t> all = q1s_then_code13(q1, SIZE_MAX);
+    const std::vector<uint8_t> all = q1s_then_code13(q1);
     bool found = false;
     for (size_t keep = all.size() + 1; keep-- > 0 && !found;) {
-      const std::vector<uint8_t> symbols = q1s_then_code13(q1, keep);
+      const std::vector<uint8_t> symbols(all.begin(), all.begin() + std::ptrdiff_t(keep));
       if (!code13_meets_truncation(symbols, q1)) continue;
       w->invalid("invalid_polygon_coding8_code_13_truncated",
                  with_conn(coding7_conn(uint32_t(4 * (q1 + 5)), uint32_t(q1 + 5), qmc::kGroupQuads, symbols,

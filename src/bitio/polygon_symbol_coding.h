@@ -12,6 +12,7 @@
 #include <cstdint>
 
 #include "bitio/range_coder.h"
+#include "qmc/format.h"
 
 namespace qmc {
 
@@ -61,6 +62,12 @@ struct GateContext {
   uint32_t gate = 0, next = 0, prev = 0;
 };
 inline constexpr uint32_t kGateCountCap = 7;
+
+// Codings 7 and 8 carry their symbols range coded after the header, in
+// `groups`, `symbol_bytes` and `symbols` (5.4.1, 5.4.10).
+inline bool is_context_coding(int coding) {
+  return coding == kPolygonContextCoded || coding == kPolygonQuadContextCoded;
+}
 
 // Which symbol groups the payload uses (5.4.10's `groups` byte).
 inline constexpr uint8_t kGroupTriangles = 1, kGroupQuads = 2, kGroupOther = 4;

@@ -25,11 +25,6 @@ namespace {
 // Faces reserved per byte of codings 7 and 8's symbol stream before decoding it.
 constexpr uint64_t kReservedFacesPerSymbolByte = 32;
 
-// Codings 7 and 8 carry their symbols range coded after the header (5.4.1).
-bool is_context_coded(uint8_t coding) {
-  return coding == kPolygonContextCoded || coding == kPolygonQuadContextCoded;
-}
-
 Status payload_error(const std::string& why) { return Status(ErrorCode::kBadChunkPayload, "CONN: " + why); }
 Status symbol_error(const std::string& why) { return Status(ErrorCode::kBadSymbol, "CONN: " + why); }
 Status limit_error(const std::string& why) { return Status(ErrorCode::kLimitExceeded, "CONN: " + why); }
@@ -353,7 +348,7 @@ Status read_polygon_header(ByteReader* bytes, PolygonHeader* h) {
   if (flags != 0) return payload_error("reserved polygon flags set");
   if (h->coding >= kPolygonCodingCount || h->coding == kPolygonUnassignedCoding)
     return Status(ErrorCode::kUnsupportedFeature, "CONN: polygon coding " + std::to_string(h->coding));
-  if (!is_context_coded(h->coding)) return Status::Ok();
+  if (!is_context_coding(h->coding)) return Status::Ok();
   uint64_t length = 0;
   if (!bytes->get_u8(&h->groups)) return payload_error("polygon header cut short");
   if (h->groups > (kGroupTriangles | kGroupQuads | kGroupOther)) return payload_error("unknown symbol groups");
@@ -441,7 +436,7 @@ Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t ve
   Records records;
   Mesh loose;
   Components components;
-  const Status decoded = is_context_coded(header.coding)
+  const Status decoded = is_context_coding(header.coding)
                              ? decode_context_coded(&in, header, vertex_count, face_count, &surface, &records, &loose,
                                                     &components)
                              : decode_stored(&in, header, vertex_count, &surface, &records, &loose, &components);

@@ -289,12 +289,14 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
                                  (context_coding && quad_contexts && (symbol_groups(shapes) & kGroupQuads));
   const std::vector<uint8_t> quad_coded_symbols =
       try_quad_contexts ? context_coded_symbols(traversal, symbols, true) : std::vector<uint8_t>{};
+  const auto coded_by = [&](int coding) -> const std::vector<uint8_t>& {
+    return coding == kPolygonContextCoded ? coded_symbols : quad_coded_symbols;
+  };
   for (int c = 0; c < kPolygonCodingCount; ++c) {
     if (c == kPolygonUnassignedCoding) {
       out->coding_bits[c] = -1;
-    } else if (c == kPolygonContextCoded || c == kPolygonQuadContextCoded) {
-      const std::vector<uint8_t>& coded = c == kPolygonContextCoded ? coded_symbols : quad_coded_symbols;
-      out->coding_bits[c] = coded.empty() ? -1 : int64_t(8 * coded.size());
+    } else if (is_context_coding(c)) {
+      out->coding_bits[c] = coded_by(c).empty() ? -1 : int64_t(8 * coded_by(c).size());
     } else if (c == kPolygonMixedHuffman) {
       BitWriter trial;
       write_mixed_symbols(shapes, symbols, &trial);
@@ -315,8 +317,7 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
   bits.write_exp_golomb(uint32_t(traversal.component_faces.size()));
   for (uint32_t n : traversal.component_faces) bits.write_exp_golomb(n - 2);
   for (uint32_t d : traversal.first_degree) bits.write_exp_golomb(d - 3);
-  const bool range_coded = best == kPolygonContextCoded || best == kPolygonQuadContextCoded;
-  if (!range_coded) write_symbols(shapes, symbols, best, &bits);
+  if (!is_context_coding(best)) write_symbols(shapes, symbols, best, &bits);
   const uint64_t before_records = bits.bit_count();
   bits.write_exp_golomb(uint32_t(records.virtual_index.size()));
   for (size_t i = 0; i < records.virtual_index.size(); ++i)
@@ -346,10 +347,7 @@ std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool conte
   put_varint(&out->payload, out->file_mesh.face_count());
   put_u8(&out->payload, 0);
   put_u8(&out->payload, out->coding);
-  if (range_coded) {
-    const std::vector<uint8_t>& coded = best == kPolygonContextCoded ? coded_symbols : quad_coded_symbols;
-    out->payload.insert(out->payload.end(), coded.begin(), coded.end());
-  }
+  if (is_context_coding(best)) out->payload.insert(out->payload.end(), coded_by(best).begin(), coded_by(best).end());
   const std::vector<uint8_t> stream = bits.finish();
   out->payload.insert(out->payload.end(), stream.begin(), stream.end());
   out->components = uint32_t(traversal.component_faces.size());
