@@ -17,45 +17,44 @@ namespace {
 // the twin (all of them: face's positions 2 % larger at 12 bits, spot's 3 %).
 constexpr int kMirrorNeighbours = 2, kMirrorCorners = 16;
 
+// A key no file can know: any key gives the same vertices, and one a file
+// cannot aim at keeps the probes short.
+uint64_t table_key(const void* table) {
+  return splitmix64_mix(uint64_t(std::chrono::steady_clock::now().time_since_epoch().count()) ^
+                        uint64_t(reinterpret_cast<uintptr_t>(table)));
+}
+
+size_t table_size(uint32_t capacity_for) {
+  size_t size = 16;
+  while (size < 2 * size_t(capacity_for)) size *= 2;
+  return size;
+}
+
+// A point's hash under a table's key: 64 bits, of which a table of 2^k
+// slots takes the low k for the slot.
+uint64_t point_hash(uint64_t key, const uint32_t q[3]) {
+  return splitmix64_mix(splitmix64_mix(key ^ q[0]) ^ (uint64_t(q[1]) << 32 | q[2]));
+}
+
+bool same_point(const uint32_t* a, const uint32_t* b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
 
 }  // namespace
 
 GridPointTable::GridPointTable(uint32_t capacity_for) {
-  size_t size = 16;
-  while (size < 2 * size_t(capacity_for)) size *= 2;
+  const size_t size = table_size(capacity_for);
   entries_.reset(new Entry[size]);
   for (size_t i = 0; i < size; ++i) entries_[i].vertex = kNone;
   mask_ = size - 1;
-  // Any key gives the same vertices; one a file cannot know keeps probes short.
-  key_ = splitmix64_mix(uint64_t(std::chrono::steady_clock::now().time_since_epoch().count()) ^
-             uint64_t(reinterpret_cast<uintptr_t>(entries_.get())));
+  key_ = table_key(entries_.get());
 }
 
-size_t GridPointTable::slot(const uint32_t q[3]) const {
-  const uint64_t h = splitmix64_mix(splitmix64_mix(key_ ^ q[0]) ^ (uint64_t(q[1]) << 32 | q[2]));
-  return size_t(h) & mask_;
-}
-
-uint32_t GridPointTable::find_beside(const uint32_t q[3], int axis) const {
-  const uint32_t vertex = find(q);
-  return vertex != kNone ? vertex : find_next_to(q, axis);
-}
-
-uint32_t GridPointTable::find_next_to(const uint32_t q[3], int axis) const {
-  uint32_t vertex = kNone;
-  for (const int step : {-1, 1}) {
-    uint32_t point[3] = {q[0], q[1], q[2]};  // below 0 wraps above 2^31: no vertex is there
-    point[axis] = uint32_t(int64_t(point[axis]) + step);
-    if ((vertex = find(point)) != kNone) break;
-  }
-  return vertex;
-}
+size_t GridPointTable::slot(const uint32_t q[3]) const { return size_t(point_hash(key_, q)) & mask_; }
 
 uint32_t GridPointTable::find(const uint32_t q[3]) const {
   for (size_t i = slot(q);; i = (i + 1) & mask_) {
     const Entry& e = entries_[i];
     if (e.vertex == kNone) return kNone;
-    if (e.q[0] == q[0] && e.q[1] == q[1] && e.q[2] == q[2]) return e.vertex;
+    if (same_point(e.q, q)) return e.vertex;
   }
 }
 
@@ -66,7 +65,50 @@ uint32_t GridPointTable::insert(const uint32_t q[3], uint32_t v) {
       e = Entry{{q[0], q[1], q[2]}, v};
       return kNone;
     }
-    if (e.q[0] == q[0] && e.q[1] == q[1] && e.q[2] == q[2]) return e.vertex;
+    if (same_point(e.q, q)) return e.vertex;
+  }
+}
+
+
+VertexPointTable::VertexPointTable(uint32_t capacity_for) {
+  const size_t size = table_size(capacity_for);
+  entries_.reset(new Entry[size]);
+  for (size_t i = 0; i < size; ++i) entries_[i] = Entry{kNone, 0};
+  mask_ = size - 1;
+  key_ = table_key(entries_.get());
+}
+
+uint32_t VertexPointTable::find(const uint32_t* points, const uint32_t q[3]) const {
+  const uint64_t h = point_hash(key_, q);
+  const uint32_t tag = uint32_t(h >> 32);
+  for (size_t i = size_t(h) & mask_;; i = (i + 1) & mask_) {
+    const Entry e = entries_[i];
+    if (e.vertex == kNone) return kNone;
+    if (e.tag == tag && same_point(&points[3 * size_t(e.vertex)], q)) return e.vertex;
+  }
+}
+
+uint32_t VertexPointTable::find_next_to(const uint32_t* points, const uint32_t q[3], int axis) const {
+  uint32_t vertex = kNone;
+  for (const int step : {-1, 1}) {
+    uint32_t point[3] = {q[0], q[1], q[2]};  // below 0 wraps above 2^31: no vertex is there
+    point[axis] = uint32_t(int64_t(point[axis]) + step);
+    if ((vertex = find(points, point)) != kNone) break;
+  }
+  return vertex;
+}
+
+uint32_t VertexPointTable::insert(const uint32_t* points, uint32_t v) {
+  const uint32_t* q = &points[3 * size_t(v)];
+  const uint64_t h = point_hash(key_, q);
+  const uint32_t tag = uint32_t(h >> 32);
+  for (size_t i = size_t(h) & mask_;; i = (i + 1) & mask_) {
+    Entry& e = entries_[i];
+    if (e.vertex == kNone) {
+      e = Entry{v, tag};
+      return kNone;
+    }
+    if (e.tag == tag && same_point(&points[3 * size_t(e.vertex)], q)) return e.vertex;
   }
 }
 
@@ -128,7 +170,7 @@ void MirrorCandidates::decoded(uint32_t v, const uint32_t* q) {
   std::copy(point, point + 3, img);
   const int axis = plane_.axis;
   img[axis] = uint32_t(std::clamp<int64_t>(int64_t(plane_.sum) - int64_t(point[axis]), 0, top_[axis]));
-  const uint32_t first = first_at_.insert(point, v);
+  const uint32_t first = first_at_.insert(q, v);
   if (first != GridPointTable::kNone) {  // a duplicate: its images are the first vertex's
     first_[v] = first;
     return;
@@ -138,9 +180,9 @@ void MirrorCandidates::decoded(uint32_t v, const uint32_t* q) {
   if (!image(point, m)) return;
   // v itself when v lies on the plane; in method 10 (14.11) else the first
   // vertex decoded a step beside the image along the axis.
-  uint32_t twin = first_at_.find(m);
+  uint32_t twin = first_at_.find(q, m);
   if (twin == GridPointTable::kNone && plane_.near_images) {
-    twin = first_at_.find_next_to(m, plane_.axis);
+    twin = first_at_.find_next_to(q, m, plane_.axis);
     pairs_beside_ += twin != GridPointTable::kNone;
   }
   if (twin == GridPointTable::kNone) return;

@@ -24,21 +24,16 @@ struct MirrorPlane {
   bool near_images = false;  // 14.11 (POSN method 10): image vertices also a step from the image
 };
 
-// The first vertex decoded at each grid point: an open-addressing table
-// whose hash is keyed per table, so that no file can make its probes long
-// (the vertices it returns do not depend on the key).
+// The first vertex inserted at each grid point (any three integers the
+// caller makes up: the encoder's plane search keeps columns and blocks in
+// one): an open-addressing table whose hash is keyed per table, so that no
+// file can make its probes long (the vertices it returns do not depend on
+// the key).
 class GridPointTable {
  public:
   explicit GridPointTable(uint32_t capacity_for);
   // The first vertex inserted at q, or kNone.
   uint32_t find(const uint32_t q[3]) const;
-  // 14.11: the same at q, else at q a step down the axis, else a step up:
-  // where a mirror image falls when the quantized halves round apart (the
-  // plane between grid points). POSN method 10's image vertices and aTTR
-  // coding 9's twins (15.14) look there.
-  uint32_t find_beside(const uint32_t q[3], int axis) const;
-  // The points a step down and up the axis alone (find_beside's second look).
-  uint32_t find_next_to(const uint32_t q[3], int axis) const;
   // Inserts v at q unless a vertex is there already; returns that vertex,
   // or kNone when v was inserted.
   uint32_t insert(const uint32_t q[3], uint32_t v);
@@ -50,6 +45,35 @@ class GridPointTable {
     uint32_t vertex;
   };
   size_t slot(const uint32_t q[3]) const;
+  std::unique_ptr<Entry[]> entries_;
+  size_t mask_ = 0;
+  uint64_t key_ = 0;
+};
+
+// The same for points that live in the caller's array of three integers a
+// vertex (points[3 v ..]): a slot holds the vertex and 32 more bits of the
+// point's hash, 8 bytes instead of 16, and the point itself is compared
+// only where those bits match. Half the table for the processor's caches:
+// 14.10's search looks up each decoded vertex's point and image.
+class VertexPointTable {
+ public:
+  explicit VertexPointTable(uint32_t capacity_for);
+  // The first vertex inserted at q, or kNone.
+  uint32_t find(const uint32_t* points, const uint32_t q[3]) const;
+  // 14.11: the first vertex at q a step down the axis, else a step up:
+  // where a mirror image falls when the quantized halves round apart (the
+  // plane between grid points). POSN method 10's image vertices and aTTR
+  // coding 9's twins (15.14) look there when none is at the image itself.
+  uint32_t find_next_to(const uint32_t* points, const uint32_t q[3], int axis) const;
+  // Inserts v (at points[3 v ..]) unless a vertex is at its point already;
+  // returns that vertex, or kNone when v was inserted.
+  uint32_t insert(const uint32_t* points, uint32_t v);
+  static constexpr uint32_t kNone = GridPointTable::kNone;
+
+ private:
+  struct Entry {
+    uint32_t vertex, tag;
+  };
   std::unique_ptr<Entry[]> entries_;
   size_t mask_ = 0;
   uint64_t key_ = 0;
@@ -87,7 +111,7 @@ class MirrorCandidates final : public MirrorSource {
   const VertexCorners& mesh_;
   MirrorPlane plane_;
   uint32_t top_[3];
-  GridPointTable first_at_;
+  VertexPointTable first_at_;
   // Per vertex: the first vertex decoded at its point (itself, or one it
   // duplicates; kNone while it is not decoded), and for such a first vertex
   // its image vertex once one is decoded (kNone before). Kept as vertices are decoded, so that a

@@ -28,15 +28,16 @@ ValueTwins::ValueTwins(const VertexCorners& values, const AttributeTwins& twins,
     : values_(values), twin_(twins.vertex_count, kNone), decoded_(values.vertex_count(), 0) {
   std::copy(top, top + 3, top_);
   vertices_.build(twins.vertex_count, twins.faces->face_sizes, twins.faces->corners);
-  GridPointTable first_at(twins.vertex_count);
-  for (uint32_t x = 0; x < twins.vertex_count; ++x) first_at.insert(&twins.positions[3 * size_t(x)], x);
+  VertexPointTable first_at(twins.vertex_count);
+  for (uint32_t x = 0; x < twins.vertex_count; ++x) first_at.insert(twins.positions, x);
   const int axis = twins.plane.axis;
   for (uint32_t x = 0; x < twins.vertex_count; ++x) {
     uint32_t image[3];
     std::copy(&twins.positions[3 * size_t(x)], &twins.positions[3 * size_t(x)] + 3, image);
     if (image[axis] > twins.plane.sum) continue;  // the image's coordinate would be below 0
     image[axis] = twins.plane.sum - image[axis];
-    twin_[x] = first_at.find_beside(image, axis);  // 15.14: 14.11's points beside the image too
+    twin_[x] = first_at.find(twins.positions, image);  // 15.14: 14.11's points beside the image too
+    if (twin_[x] == kNone) twin_[x] = first_at.find_next_to(twins.positions, image, axis);
   }
 }
 

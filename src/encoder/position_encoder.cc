@@ -565,8 +565,8 @@ std::vector<uint32_t> candidate_sums(const QuantizedPositions& positions, int ax
 bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, bool near) {
   const uint32_t n = uint32_t(positions.q.size() / 3);
   if (n < 16) return false;
-  GridPointTable points(n);
-  for (uint32_t v = 0; v < n; ++v) points.insert(&positions.q[3 * size_t(v)], v);
+  VertexPointTable points(n);
+  for (uint32_t v = 0; v < n; ++v) points.insert(positions.q.data(), v);
   // The second pass: a vertex within a step of the image on every axis
   // counts too (the halves of a scanned mesh, quantized, are often a step
   // apart on any axis; method 10's twins then are the ones a step beside the
@@ -592,7 +592,7 @@ bool find_mirror_plane(const QuantizedPositions& positions, MirrorPlane* plane, 
     if (near_hits)
       return count_images(candidate, stride, enough, [&](const uint32_t* image) { return occupied->near(image); });
     return count_images(candidate, stride, enough,
-                        [&](const uint32_t* image) { return points.find(image) != GridPointTable::kNone; });
+                        [&](const uint32_t* image) { return points.find(positions.q.data(), image) != VertexPointTable::kNone; });
   };
   const uint32_t sample_stride = std::max<uint32_t>(1, n / kMirrorSample);
   // Under kGradedStartBelow vertices the encoder codes the positions without
