@@ -16,7 +16,8 @@
 #include "bitio/polygon_symbols.h"
 #include "bitio/union_find.h"
 #include "bitio/quad_codings.h"
-#include "bitio/range_coder.h"
+#include "decoder/coded_faces.h"
+#include "decoder/connectivity_errors.h"
 #include "decoder/polygon_spirale_reversi.h"
 
 namespace qmc {
@@ -24,11 +25,6 @@ namespace {
 
 // Faces reserved per byte of codings 7 and 8's symbol stream before decoding it.
 constexpr uint64_t kReservedFacesPerSymbolByte = 32;
-
-Status payload_error(const std::string& why) { return Status(ErrorCode::kBadChunkPayload, "CONN: " + why); }
-Status symbol_error(const std::string& why) { return Status(ErrorCode::kBadSymbol, "CONN: " + why); }
-Status limit_error(const std::string& why) { return Status(ErrorCode::kLimitExceeded, "CONN: " + why); }
-Status truncated() { return Status(ErrorCode::kTruncated, "CONN: polygon stream ends early"); }
 
 // bitlen(max_value), at least 1 (5.4.7, 5.4.8): every label costs a bit,
 // so the counts read before them bound what they can allocate.
@@ -149,78 +145,6 @@ Status read_symbols(BitReader* in, int coding, uint64_t count, FaceShapes* shape
   }
   return Status::Ok();
 }
-
-// The fixed shapes of symbols 0 .. 17 (5.4.3), face f = symbol f.
-FaceShapes fixed_symbol_shapes() {
-  FaceShapes table;
-  table.reserve(kPolygonOtherSymbol);
-  for (int symbol = 0; symbol < kPolygonOtherSymbol; ++symbol) {
-    uint8_t status[2], gaps[3];
-    uint32_t gap_count = 0;
-    const uint32_t d = symbol_shape(symbol, status, gaps, &gap_count);
-    table.add(d, status, gaps, gap_count);
-  }
-  return table;
-}
-
-// Codings 7 and 8 (5.4.10): each symbol range decoded when Spirale Reversi is
-// about to apply it, in the context of the gate. Symbols 0 .. 17 are
-// applied from the fixed table; only symbol 18's shapes are stored.
-class CodedFaces : public FaceSymbolSource {
- public:
-  CodedFaces(const uint8_t* data, size_t size, uint8_t groups, bool quad_neighbours)
-      : range_(data, size), bytes_(size), fixed_(fixed_symbol_shapes()) {
-    model_.groups = groups;
-    model_.quad_neighbours = quad_neighbours;
-  }
-  Status start() const {
-    if (range_.bad_start()) return payload_error("face symbol stream starts with 0xFFFFFFFF");
-    return Status::Ok();
-  }
-  Status face(const GateContext& gate, size_t, const FaceShapes** shapes, size_t* index) override {
-    const int symbol = code_face_symbol(&range_, &model_, gate, 0);
-    if (range_.overrun()) return truncated();
-    if (symbol < 0) return symbol_error("quad code above 12 (5.4.10)");
-    if (symbol != kPolygonOtherSymbol) {
-      *shapes = &fixed_;
-      *index = size_t(symbol);
-      return Status::Ok();
-    }
-    if (Status s = other_shape(); !s.ok()) return s;
-    *shapes = &shapes_;
-    *index = shapes_.size() - 1;
-    return Status::Ok();
-  }
-  // 13.5.2's end check.
-  Status end() override {
-    if (range_.overrun()) return truncated();
-    if (range_.unread() != 0) return payload_error("bytes after the face symbol stream's coded data");
-    return Status::Ok();
-  }
-
- private:
-  Status other_shape() {
-    uint32_t extra = 0;
-    if (!code_other_degree(&range_, &extra))
-      return range_.overrun() ? truncated() : payload_error("face degree code with 32 leading zeros");
-    const uint64_t d = uint64_t(extra) + 5;
-    if (!range_stream_justifies(d - 2, bytes_)) return limit_error("a face of degree " + std::to_string(d) + " cannot fit");
-    scratch_.resize(2 * size_t(d - 2) + 1);
-    uint8_t* status = scratch_.data();
-    uint8_t* gaps = status + (d - 2);
-    const uint32_t gap_count = code_other_shape(&range_, &model_, uint32_t(d - 2), status, gaps);
-    if (gap_count == 0) return truncated();
-    shapes_.add(uint32_t(d), status, gaps, gap_count);
-    return Status::Ok();
-  }
-
-  RangeDecoder range_;
-  uint64_t bytes_;
-  PolygonSymbolModel model_ = kFreshPolygonSymbolModel;
-  const FaceShapes fixed_;
-  FaceShapes shapes_;  // symbol 18's faces so far
-  std::vector<uint8_t> scratch_;
-};
 
 struct Records {
   std::vector<uint8_t> is_virtual;  // per surface face
