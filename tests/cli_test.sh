@@ -206,6 +206,8 @@ check soup-verify 0 "$qmc" verify "$work/soup.off" "$work/soup.qmc"
 check verify-wrong-mesh 1 "$qmc" verify "$work/soup.off" "$work/torus.qmc"
 check help 0 "$qmc" --help
 contains help-version "$work/out" "format version 1.18, spec/qmc-format.md"
+check version 0 "$qmc" --version
+contains version-format "$work/out" "(format 1.18)"
 check encode-help 0 "$qmc" encode --help
 contains help-default-bits "$work/out" "1/4096"
 check no-args 2 "$qmc"
