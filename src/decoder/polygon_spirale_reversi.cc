@@ -61,6 +61,8 @@ class PolygonSpiraleReversi {
   // from `first_label` and appends its faces to the surface; with no
   // surface (the encoder's context run) only checks that it closes.
   Status finish_component(uint32_t d, size_t first_coded, size_t coded, PolygonSurface* surface);
+  // Section 5.4.5's last check, once every component is finished.
+  Status check_directed_edges(const PolygonSurface& s);
 
  private:
   // Every node starts a vertex of no faces yet (5.4.10).
@@ -93,6 +95,7 @@ class PolygonSpiraleReversi {
   std::vector<Detour> detours_;
   bool counting_ = false;
   std::vector<uint32_t> faces_at_;  // per vertex root: faces made with it (5.4.10); one per node
+  std::vector<uint32_t> label_;     // per vertex root: its surface label (codings 0 - 5)
 };
 
 // Merged vertices pool their faces: no face has both (5.4.5: faces have
@@ -301,7 +304,10 @@ Status PolygonSpiraleReversi::finish_component(uint32_t d, size_t first_coded, s
 }
 
 Status PolygonSpiraleReversi::label_component(uint32_t d, size_t coded, PolygonSurface* surface) {
-  std::vector<uint32_t> label(parent_.size(), kNone);
+  // Per vertex root. The face counts (codings 7 and 8), one per node as
+  // this is, are no longer needed: their pages serve again.
+  std::vector<uint32_t>& label = counting_ ? faces_at_ : label_;
+  label.assign(parent_.size(), kNone);
   const uint32_t base = surface->labels;
   uint32_t next_label = base;
   auto give = [&](uint32_t v) {
@@ -348,13 +354,16 @@ void PolygonSpiraleReversi::clear_component() {
   inner_.clear();
 }
 
-// Section 5.4.5: no directed edge twice among the surface's faces.
-Status check_directed_edges(const PolygonSurface& s) {
+// Section 5.4.5: no directed edge twice among the surface's faces. After the
+// last component, in the node tables' memory (their pages faulted in already).
+Status PolygonSpiraleReversi::check_directed_edges(const PolygonSurface& s) {
   const uint32_t n = s.labels;
-  std::vector<uint32_t> start(size_t(n) + 1, 0);
+  std::vector<uint32_t>&start = prev_, &fill = next_, &mark = vertex_;
+  start.assign(size_t(n) + 1, 0);
   for (uint32_t v : s.corners) ++start[v + 1];
   for (uint32_t v = 0; v < n; ++v) start[v + 1] += start[v];
-  std::vector<uint32_t> target(s.corners.size()), fill(start.begin(), start.end() - 1);
+  std::vector<uint32_t> target(s.corners.size());
+  fill.assign(start.begin(), start.end() - 1);
   size_t begin = 0;
   for (uint32_t d : s.face_degree) {
     if (d == 0) continue;  // never (5.4.1: 3 corners or more), but face[d - 1] must stay in bounds
@@ -363,7 +372,7 @@ Status check_directed_edges(const PolygonSurface& s) {
     target[fill[face[d - 1]]++] = face[0];
     begin += d;
   }
-  std::vector<uint32_t> mark(n, kNone);
+  mark.assign(n, kNone);
   for (uint32_t v = 0; v < n; ++v)
     for (uint32_t k = start[v]; k < start[v + 1]; ++k) {
       if (mark[target[k]] == v)
@@ -410,7 +419,7 @@ Status run_spirale_reversi(const std::vector<uint32_t>& components, const std::v
     first += coded;
   }
   if (Status s = source->end(); !s.ok()) return s;
-  return surface == nullptr ? Status::Ok() : check_directed_edges(*surface);
+  return surface == nullptr ? Status::Ok() : decoder.check_directed_edges(*surface);
 }
 
 // The encoder's own symbols: its largest component's face count.
