@@ -2,8 +2,11 @@
 // encoder's choice and round trips over every plane.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
+#include <random>
 #include <vector>
 
 #include "bitio/geometry_order.h"
@@ -90,6 +93,53 @@ TEST(MirrorCandidate, TheFirstVertexAtAPointIsItsImageVertex) {
   MirrorCandidates off_grid(corners, MirrorPlane{0, 30}, top);  // 0's image x = 22 > top
   off_grid.decoded(0, q.data());
   EXPECT_FALSE(off_grid.find(1, q.data(), p, c));
+}
+
+// The decoder's table of 14.10 and 14.11 reads each vertex's point from the
+// positions: the first vertex inserted at a point is the one found there,
+// whatever the table's key; beside a point, a step down the axis is looked at
+// before a step up.
+TEST(MirrorCandidate, VertexPointTableFindsTheFirstVertexAtEachPoint) {
+  std::mt19937 random(49);
+  std::uniform_int_distribution<uint32_t> coordinate(0, 15);  // 4,096 points for 3,000 vertices: many repeat
+  const uint32_t n = 3000;
+  std::vector<uint32_t> points(3 * n);
+  for (uint32_t& c : points) c = coordinate(random);
+  VertexPointTable table(n);
+  std::map<std::array<uint32_t, 3>, uint32_t> first;
+  for (uint32_t v = 0; v < n; ++v) {
+    const std::array<uint32_t, 3> point = {points[3 * v], points[3 * v + 1], points[3 * v + 2]};
+    const auto known = first.find(point);
+    EXPECT_EQ(table.insert(points.data(), v), known == first.end() ? VertexPointTable::kNone : known->second);
+    first.emplace(point, v);
+  }
+  uint32_t absent = 0;
+  for (uint32_t x = 0; x < 16; ++x)
+    for (uint32_t y = 0; y < 16; ++y)
+      for (uint32_t z = 0; z < 17; ++z) {
+        const uint32_t q[3] = {x, y, z};
+        const auto known = first.find({x, y, z});
+        const uint32_t want = known == first.end() ? VertexPointTable::kNone : known->second;
+        absent += want == VertexPointTable::kNone;
+        ASSERT_EQ(table.find(points.data(), q), want) << x << " " << y << " " << z;
+      }
+  EXPECT_GT(absent, 16u * 16u);  // z = 16 is off every point, and some others are empty
+  // Beside (x, y, z) on axis 2: (x, y, z - 1) first, then (x, y, z + 1).
+  int both = 0, above_only = 0;
+  for (const auto& [point, v] : first) {
+    const uint32_t q[3] = {point[0], point[1], point[2] + 1};
+    const auto up = first.find({point[0], point[1], point[2] + 2});
+    EXPECT_EQ(table.find_next_to(points.data(), q, 2), v);  // the step down, whatever is above
+    both += up != first.end();
+    const uint32_t lowest[3] = {point[0], point[1], 0};  // nothing below 0 (it wraps to 2^32 - 1)
+    const auto at1 = first.find({point[0], point[1], 1});
+    if (point[2] == 0 && at1 != first.end()) {
+      EXPECT_EQ(table.find_next_to(points.data(), lowest, 2), at1->second);
+      ++above_only;
+    }
+  }
+  EXPECT_GT(both, 100);
+  EXPECT_GT(above_only, 10);
 }
 
 // On a mirrored mesh the encoder writes method 9, the same integers as
