@@ -222,9 +222,12 @@ class MeteredRangeEncoder {
 // it cannot win (costs only add up), and a good first bound stops most of
 // them after an axis or two. The choice is the same as in ascending order.
 // all_selected: p already holds the selection of every candidate (the
-// mirror candidate's reference, 14.10), which is not made again.
+// mirror candidate's reference, 14.10), which is not made again. bits, if
+// given, gets the chosen mask's and residuals' bits when they were costed
+// (fewest bits, two or more candidates), else NAN.
 unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidualModel* model, CandidateChoice choice,
-                         int context, VertexPrediction* p, bool all_selected = false) {
+                         int context, VertexPrediction* p, bool all_selected = false, double* bits = nullptr) {
+  if (bits) *bits = NAN;
   if (p->candidates < 2) {
     const unsigned only = p->candidates == 1 ? 1u : 0u;
     if (!all_selected) select_candidates(p, only, top);
@@ -266,6 +269,7 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
   std::copy(best_mean, best_mean + 3, p->mean);
   std::copy(best_twist, best_twist + 3, p->twist_mean);
   p->kind = best_kind;
+  if (bits && fewest_bits) *bits = best_cost;
   return best;
 }
 
@@ -294,7 +298,8 @@ bool code_mirror_choice(MeteredRangeEncoder* rc, PositionResidualModel* model, c
   const bool has_candidate = mirrors.find(v, q.data(), *p, candidate);
   const int mirror = has_candidate ? mirror_context(candidate, p->value) : 0;
   const int context = mask_context(*model, *p);
-  *mask = best_candidates(&q[3 * size_t(v)], top, model, choice, context, p, true);
+  double plain_bits;
+  *mask = best_candidates(&q[3 * size_t(v)], top, model, choice, context, p, true, &plain_bits);
   if (!has_candidate) return false;
   // best_candidates changed only what the mirror candidate replaces (value,
   // mean, kind); the bucket's inputs (activity, scale) are v's.
@@ -305,8 +310,12 @@ bool code_mirror_choice(MeteredRangeEncoder* rc, PositionResidualModel* model, c
   use.code(1, &model->mirror[mirror]);
   code_residuals(&use, model, mirrored, &q[3 * size_t(v)]);
   plain.code(0, &model->mirror[mirror]);
-  code_candidate_mask(&plain, model, p->candidates, *mask, context);
-  code_residuals(&plain, model, *p, &q[3 * size_t(v)]);
+  if (std::isnan(plain_bits)) {  // not costed by best_candidates: priced here
+    code_candidate_mask(&plain, model, p->candidates, *mask, context);
+    code_residuals(&plain, model, *p, &q[3 * size_t(v)]);
+  } else {
+    plain.bits += plain_bits;
+  }
   const bool used = use.bits < plain.bits;
   rc->code(used, &model->mirror[mirror]);
   if (used) *p = mirrored;
