@@ -17,9 +17,11 @@
 // corners), a geometry image's attributes (its normals also become the
 // 'normal' attribute), the corner attributes of spec 15, the face labels of
 // spec 16 (a "material" label also makes the geometry's groups), bytesReceived
-// and decodeMs. A file with texture coordinates or normals per corner (spec 15)
-// gives a non-indexed geometry with 'uv' and 'normal', three corners a
-// triangle, since a seam gives one vertex several values.
+// and decodeMs. A file with texture coordinates, normals or colours per corner
+// (spec 15) gives 'uv', 'normal' and 'color' on an indexed geometry whose
+// vertices are split where a seam gives a position several values.
+// geometryFromMesh builds the same geometry from a mesh that web/src/qmc.js
+// decoded, for an application that runs the decoder itself.
 import { BufferAttribute, BufferGeometry, Loader } from 'three';
 
 export class QMCLoader extends Loader {
@@ -142,6 +144,12 @@ export class QMCLoader extends Loader {
   }
 }
 
+// The BufferGeometry of a mesh of web/src/qmc.js (decode, or a stream
+// decoder's mesh(level)), as the loader gives it, with `info` in userData.
+export function geometryFromMesh(mesh, info = {}) {
+  return toGeometry(mesh, info);
+}
+
 function toGeometry(mesh, info) {
   const geometry = cornerGeometry(mesh) ?? indexedGeometry(mesh);
   addMaterialGroups(mesh, geometry);
@@ -177,31 +185,104 @@ function indexedGeometry(mesh) {
   return geometry;
 }
 
-// Spec 15: texture coordinates (kind 1) and normals (kind 2) per corner, on
-// the polygons cut into fans from their first corner as mesh.indices are.
+// Spec 15: texture coordinates (kind 1), normals (kind 2) and colours (kind 3)
+// per corner, on the polygons cut into fans from their first corner as
+// mesh.indices are. Corners that share a position and every value share a
+// vertex, so the geometry is indexed and split only where a seam gives a
+// position several values (as a texture atlas's borders do). Without
+// normals in the file, each position gets the normal of all its faces, so a
+// texture seam does not show as a crease in the shading.
 function cornerGeometry(mesh) {
-  const uv = (mesh.cornerAttributes ?? []).find((a) => a.kind === 1 && a.components >= 2);
-  const normal = (mesh.cornerAttributes ?? []).find((a) => a.kind === 2 && a.components === 3);
-  if (!uv && !normal) return null;
-  const fan = [];
-  for (let f = 0, k0 = 0; f < mesh.faceSizes.length; k0 += mesh.faceSizes[f++]) {
-    for (let i = 1; i + 1 < mesh.faceSizes[f]; ++i) fan.push(k0, k0 + i, k0 + i + 1);
-  }
-  // One vertex per fan corner: `size` numbers from values[offsetOf(corner)].
+  const channel = (name, kind, accepts, size) => {
+    const attribute = (mesh.cornerAttributes ?? []).find((a) => a.kind === kind && accepts(a.components));
+    return attribute && { name, attribute, size: size ?? attribute.components };
+  };
+  const channels = [channel('uv', 1, (c) => c >= 2, 2), channel('normal', 2, (c) => c === 3),
+                    channel('color', 3, (c) => c === 3 || c === 4)].filter(Boolean);
+  if (!channels.length) return null;
+  const { vertexOf, cornerOf, count } = splitVertices(mesh, channels.map((c) => c.attribute.cornerValues));
+  // Per vertex, `size` numbers from values[offsetOf(its corner)].
   const gather = (values, offsetOf, size) => {
-    const out = new Float32Array(size * fan.length);
-    fan.forEach((corner, j) => {
-      const at = offsetOf(corner);
-      for (let c = 0; c < size; ++c) out[size * j + c] = values[at + c];
-    });
+    const out = new Float32Array(size * count);
+    for (let r = 0; r < count; ++r) {
+      const at = offsetOf(cornerOf[r]);
+      for (let c = 0; c < size; ++c) out[size * r + c] = values[at + c];
+    }
     return new BufferAttribute(out, size);
   };
   const geometry = new BufferGeometry();
   geometry.setAttribute('position', gather(mesh.positions, (k) => 3 * mesh.corners[k], 3));
-  if (uv) geometry.setAttribute('uv', gather(uv.values, (k) => uv.components * uv.cornerValues[k], 2));
-  if (normal) geometry.setAttribute('normal', gather(normal.values, (k) => 3 * normal.cornerValues[k], 3));
-  else geometry.computeVertexNormals();
+  for (const { name, attribute, size } of channels) {
+    const { values, components, cornerValues } = attribute;
+    geometry.setAttribute(name, gather(values, (k) => components * cornerValues[k], size));
+  }
+  if (!geometry.getAttribute('normal')) {
+    const normals = positionNormals(mesh);
+    geometry.setAttribute('normal', gather(normals, (k) => 3 * mesh.corners[k], 3));
+  }
+  const index = new Uint32Array(mesh.indices.length);
+  for (let f = 0, k0 = 0, j = 0; f < mesh.faceSizes.length; k0 += mesh.faceSizes[f++]) {
+    for (let i = 1; i + 1 < mesh.faceSizes[f]; ++i) {
+      index[j++] = vertexOf[k0];
+      index[j++] = vertexOf[k0 + i];
+      index[j++] = vertexOf[k0 + i + 1];
+    }
+  }
+  geometry.setIndex(new BufferAttribute(index, 1));
   return geometry;
+}
+
+// One vertex per distinct (position, value index of each channel) among the
+// corners, numbered in corner order: vertexOf[corner], cornerOf[vertex] (its
+// first corner) and count. The vertices of a position are chained from
+// firstOf[position] through nextOf, so a corner is compared only with those.
+function splitVertices(mesh, cornerValues) {
+  const cornerCount = mesh.corners.length;
+  const vertexOf = new Uint32Array(cornerCount);
+  const cornerOf = new Uint32Array(cornerCount);
+  const nextOf = new Int32Array(cornerCount);
+  const firstOf = new Int32Array(mesh.vertexCount).fill(-1);
+  const [u, n, c] = cornerValues;  // up to three channels, without a loop over them per corner
+  const same = (k, other) =>
+    u[k] === u[other] && (!n || n[k] === n[other]) && (!c || c[k] === c[other]);
+  let count = 0;
+  for (let k = 0; k < cornerCount; ++k) {
+    const position = mesh.corners[k];
+    let r = firstOf[position];
+    while (r >= 0 && !same(k, cornerOf[r])) r = nextOf[r];
+    if (r < 0) {
+      r = count++;
+      cornerOf[r] = k;
+      nextOf[r] = firstOf[position];
+      firstOf[position] = r;
+    }
+    vertexOf[k] = r;
+  }
+  return { vertexOf, cornerOf, count };
+}
+
+// Per position, the sum of its fan triangles' normals (each as long as twice
+// its area), normalized: the smooth normals three's computeVertexNormals
+// gives an indexed mesh, over positions rather than split vertices.
+function positionNormals(mesh) {
+  const p = mesh.positions, index = mesh.indices, normals = new Float32Array(3 * mesh.vertexCount);
+  for (let t = 0; t < index.length; t += 3) {
+    const a = 3 * index[t], b = 3 * index[t + 1], c = 3 * index[t + 2];
+    const ex = p[b] - p[a], ey = p[b + 1] - p[a + 1], ez = p[b + 2] - p[a + 2];
+    const fx = p[c] - p[a], fy = p[c + 1] - p[a + 1], fz = p[c + 2] - p[a + 2];
+    const nx = ey * fz - ez * fy, ny = ez * fx - ex * fz, nz = ex * fy - ey * fx;
+    for (let corner = 0; corner < 3; ++corner) {
+      const v = 3 * index[t + corner];
+      normals[v] += nx;
+      normals[v + 1] += ny;
+      normals[v + 2] += nz;
+    }
+  }
+  for (let v = 0; v < normals.length; v += 3) {
+    const length = Math.hypot(normals[v], normals[v + 1], normals[v + 2]);
+    if (length > 0) for (let axis = 0; axis < 3; ++axis) normals[v + axis] /= length;
+  }
+  return normals;
 }
 
 // A geometry image's normal planes (spec 13.2 kinds 3, 4, 5), interleaved.
