@@ -208,7 +208,7 @@ int main(int argc, char** argv) {
   for (const char* t : {"decode_file", "stream_decoder", "connectivity", "quad_connectivity", "polygon_connectivity", "polygon_coding7", "polygon_coding8", "positions",
                         "predicted_positions", "geometry_order",
                         "huffman", "roundtrip", "order", "loop_levels", "gim_file", "gim_plane", "attributes", "face_labels",
-                        "predicted_mapping", "attribute_twins", "level_corrections"})
+                        "predicted_mapping", "attribute_twins", "level_corrections", "c_api"})
     fs::create_directories(out / t);
   write_predicted_mapping_seeds(out / "predicted_mapping");
   write_level_corrections_seeds(out / "level_corrections");
@@ -218,6 +218,7 @@ int main(int argc, char** argv) {
     std::vector<uint8_t> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     const std::string name = entry.path().stem().string();
     write(out / "decode_file" / name, bytes.data(), bytes.size());
+    write(out / "c_api" / name, bytes.data(), bytes.size());
     std::vector<uint8_t> streamed{uint8_t(n)};
     streamed.insert(streamed.end(), bytes.begin(), bytes.end());
     write(out / "stream_decoder" / name, streamed.data(), streamed.size());

@@ -167,6 +167,26 @@ QMC_API int qmc_decoder_corner_attribute_count(const qmc_decoder* decoder);
 QMC_API int qmc_decoder_corner_attribute(const qmc_decoder* decoder, int index, qmc_corner_attribute* out);
 QMC_API void qmc_corner_attribute_free(qmc_corner_attribute* attribute); /* frees its arrays, zeroes it */
 
+/* The QMC_FINEST mesh split for drawing with its corner attributes: one
+ * vertex per distinct (mesh vertex, value of every corner attribute) among
+ * the corners, numbered in the order of their first corners, so a mesh vertex
+ * is split only where a seam gives it several values (a texture atlas's
+ * borders). Vertex i is drawn with the position of mesh vertex
+ * corners[first_corner[i]] and, of each corner attribute, the value
+ * corner_values[first_corner[i]]; triangles are qmc_mesh's fans over these
+ * vertices. Without corner attributes the vertices are the mesh vertices that
+ * some face uses. The arrays are freed with qmc_split_mesh_free, or kept one
+ * by one with qmc_free. */
+typedef struct qmc_split_mesh {
+  uint32_t vertex_count;
+  uint32_t triangle_count;
+  uint32_t* first_corner;  /* vertex_count corners of the mesh */
+  uint32_t* triangles;     /* 3 * triangle_count vertex numbers below vertex_count */
+} qmc_split_mesh;
+
+QMC_API int qmc_decoder_split_mesh(const qmc_decoder* decoder, qmc_split_mesh* out);
+QMC_API void qmc_split_mesh_free(qmc_split_mesh* mesh); /* frees its arrays, zeroes it */
+
 /* Section 16: labels of the faces (fLBL): OBJ objects, groups, materials,
  * smoothing groups. Face f of the QMC_FINEST mesh has label face_values[f],
  * an index below value_count, or value_count for none. face_values is freed

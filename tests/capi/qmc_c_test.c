@@ -245,6 +245,64 @@ static void check_attributes(const char* manifest) {
   free(gim);
 }
 
+/* Spec 15 for drawing: valid_attr_mapping3_texcoords has 160 vertices and,
+ * over its 960 corners, 176 distinct (vertex, texture coordinate) pairs;
+ * qmc_decoder_split_mesh gives one vertex per pair, and at every corner of
+ * every fan triangle a vertex whose first corner has that corner's vertex and
+ * texture coordinate. The cube, without corner attributes, keeps its 8. */
+static void check_split_mesh(const char* manifest) {
+  size_t file_size = 0, cube_size = 0;
+  uint8_t* file = read_file(vector_path(manifest, "valid_attr_mapping3_texcoords.qmc"), &file_size);
+  uint8_t* cube = read_file(vector_path(manifest, "valid_cube_8bit.qmc"), &cube_size);
+  qmc_decoder* d = qmc_decoder_create(NULL);
+  qmc_mesh mesh;
+  qmc_corner_attribute uv;
+  qmc_split_mesh split;
+  uint32_t f, i, j, k, t = 0, pairs = 0, faithful = 1;
+  check(qmc_decoder_decode(d, file, file_size) == QMC_OK && qmc_decoder_mesh(d, QMC_FINEST, &mesh) == QMC_OK &&
+            qmc_decoder_corner_attribute(d, 0, &uv) == QMC_OK && uv.kind == 1 && mesh.corner_count == 960,
+        "texture coordinates on 960 corners", "split");
+  for (k = 0; k < mesh.corner_count; ++k) {
+    for (j = 0; j < k; ++j)
+      if (mesh.corners[j] == mesh.corners[k] && uv.corner_values[j] == uv.corner_values[k]) break;
+    pairs += j == k;
+  }
+  check(qmc_decoder_split_mesh(d, &split) == QMC_OK && split.vertex_count == pairs && pairs == 176 &&
+            split.triangle_count == mesh.triangle_count,
+        "one vertex per distinct (vertex, texture coordinate): 176", "split");
+  for (f = 0, k = 0; f < mesh.face_count && split.triangles; k += mesh.face_sizes[f], ++f)
+    for (i = 1; i + 1 < mesh.face_sizes[f]; ++i) {
+      const uint32_t fan[3] = {k, k + i, k + i + 1};
+      for (j = 0; j < 3; ++j, ++t) {
+        const uint32_t first = split.first_corner[split.triangles[t]];
+        faithful &= split.triangles[t] < split.vertex_count && mesh.corners[first] == mesh.corners[fan[j]] &&
+                    uv.corner_values[first] == uv.corner_values[fan[j]];
+      }
+    }
+  check(faithful && t == 3 * mesh.triangle_count, "each fan corner's vertex has its position and value", "split");
+  qmc_split_mesh_free(&split);
+  check(split.triangles == NULL && split.vertex_count == 0, "qmc_split_mesh_free zeroes it", "split");
+  qmc_corner_attribute_free(&uv);
+  qmc_mesh_free(&mesh);
+  qmc_decoder_destroy(d);
+
+  d = qmc_decoder_create(NULL);
+  faithful = 1;
+  check(qmc_decoder_decode(d, cube, cube_size) == QMC_OK && qmc_decoder_mesh(d, QMC_FINEST, &mesh) == QMC_OK &&
+            qmc_decoder_split_mesh(d, &split) == QMC_OK && split.vertex_count == 8 && split.triangle_count == 12,
+        "without corner attributes, the cube's 8 vertices", "split");
+  for (t = 0; t < 3 * split.triangle_count && split.triangles; ++t)
+    faithful &= mesh.corners[split.first_corner[split.triangles[t]]] == mesh.triangles[t];
+  check(faithful, "... under qmc_mesh's triangles", "split");
+  qmc_split_mesh_free(&split);
+  qmc_mesh_free(&mesh);
+  check(qmc_decoder_split_mesh(NULL, &split) == QMC_INVALID_ARGUMENT && qmc_decoder_split_mesh(d, NULL) == QMC_INVALID_ARGUMENT,
+        "NULL arguments", "split");
+  qmc_decoder_destroy(d);
+  free(file);
+  free(cube);
+}
+
 int main(int argc, char** argv) {
   int vectors;
   if (argc != 2) {
@@ -257,6 +315,7 @@ int main(int argc, char** argv) {
   check_peek(argv[1]);
   check_mesh_arrays(argv[1]);
   check_attributes(argv[1]);
+  check_split_mesh(argv[1]);
   printf("%d vectors x %d ways\n%d passed, %d failed\n", vectors, MODE_COUNT, passed, failed);
   return failed ? 1 : 0;
 }
