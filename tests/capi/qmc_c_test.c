@@ -3,7 +3,8 @@
  * streamed in 1-byte, random and 4 KB pieces (spec 3.5). A valid vector must
  * give the manifest's SHA-256 of the canonical output (10.2), an invalid one
  * the manifest's error identifier (section 9). Then the API's own promises:
- * limits, peek, polygon and triangle arrays, attributes, ownership, bad arguments.
+ * limits, peek, polygon and triangle arrays, attributes, the split mesh, ownership,
+ * bad arguments.
  *
  *   qmc_c_test conformance/MANIFEST
  *
