@@ -242,9 +242,10 @@ function splitVertices(mesh, cornerValues) {
   const cornerOf = new Uint32Array(cornerCount);
   const nextOf = new Int32Array(cornerCount);
   const firstOf = new Int32Array(mesh.vertexCount).fill(-1);
-  const [u, n, c] = cornerValues;  // up to three channels, without a loop over them per corner
-  const same = (k, other) =>
-    u[k] === u[other] && (!n || n[k] === n[other]) && (!c || c[k] === c[other]);
+  // One to three channels, compared without a loop over them per corner.
+  const [first, second, third] = cornerValues;
+  const same = (k, other) => first[k] === first[other] && (!second || second[k] === second[other]) &&
+    (!third || third[k] === third[other]);
   let count = 0;
   for (let k = 0; k < cornerCount; ++k) {
     const position = mesh.corners[k];
