@@ -217,7 +217,8 @@ function cornerGeometry(mesh) {
     geometry.setAttribute(name, gather(values, (k) => components * cornerValues[k], size));
   }
   if (!geometry.getAttribute('normal')) {
-    const normals = positionNormals(mesh);
+    // The smooth normals of the mesh indexed by positions alone, the same for every split vertex of one.
+    const normals = indexedGeometry(mesh).getAttribute('normal').array;
     geometry.setAttribute('normal', gather(normals, (k) => 3 * mesh.corners[k], 3));
   }
   const index = new Uint32Array(mesh.indices.length);
@@ -260,30 +261,6 @@ function splitVertices(mesh, cornerValues) {
     vertexOf[k] = r;
   }
   return { vertexOf, cornerOf, count };
-}
-
-// Per position, the sum of its fan triangles' normals (each as long as twice
-// its area), normalized: the smooth normals three's computeVertexNormals
-// gives an indexed mesh, over positions rather than split vertices.
-function positionNormals(mesh) {
-  const p = mesh.positions, index = mesh.indices, normals = new Float32Array(3 * mesh.vertexCount);
-  for (let t = 0; t < index.length; t += 3) {
-    const a = 3 * index[t], b = 3 * index[t + 1], c = 3 * index[t + 2];
-    const ex = p[b] - p[a], ey = p[b + 1] - p[a + 1], ez = p[b + 2] - p[a + 2];
-    const fx = p[c] - p[a], fy = p[c + 1] - p[a + 1], fz = p[c + 2] - p[a + 2];
-    const nx = ey * fz - ez * fy, ny = ez * fx - ex * fz, nz = ex * fy - ey * fx;
-    for (let corner = 0; corner < 3; ++corner) {
-      const v = 3 * index[t + corner];
-      normals[v] += nx;
-      normals[v + 1] += ny;
-      normals[v + 2] += nz;
-    }
-  }
-  for (let v = 0; v < normals.length; v += 3) {
-    const length = Math.hypot(normals[v], normals[v + 1], normals[v + 2]);
-    if (length > 0) for (let axis = 0; axis < 3; ++axis) normals[v + axis] /= length;
-  }
-  return normals;
 }
 
 // A geometry image's normal planes (spec 13.2 kinds 3, 4, 5), interleaved.
