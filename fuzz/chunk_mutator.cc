@@ -1,5 +1,5 @@
 // See chunk_mutator.h. The chunk framing of spec 3.2 is written here only;
-// the CRC is src/bitio's.
+// the CRC is src/common's.
 #include "chunk_mutator.h"
 
 #include <algorithm>
@@ -7,8 +7,8 @@
 #include <iterator>
 #include <limits>
 
-#include "bitio/byte_io.h"
-#include "bitio/crc32.h"
+#include "common/byte_io.h"
+#include "common/crc32.h"
 #include "qmc/format.h"
 
 namespace qmc::fuzz {

@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/byte_io.h"
+#include "common/byte_io.h"
 #include "decoder/polygon_connectivity_decoder.h"
 #include "encoder/polygon_connectivity_encoder.h"
 #include "qmc/format.h"

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/geometry_order.h"
+#include "common/geometry_order.h"
 #include "conn_prefix.h"
 #include "geometry_order_rule.h"
 #include "fuzz_limits.h"

@@ -11,8 +11,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/byte_io.h"
-#include "bitio/crc32.h"
+#include "common/byte_io.h"
+#include "common/crc32.h"
 #include "fuzz_limits.h"
 #include "qmc/decoder.h"
 #include "qmc/format.h"

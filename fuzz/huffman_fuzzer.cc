@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/bit_reader.h"
-#include "bitio/huffman.h"
+#include "common/bit_reader.h"
+#include "common/huffman.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;

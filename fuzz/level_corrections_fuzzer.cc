@@ -12,7 +12,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/byte_io.h"
+#include "common/byte_io.h"
 #include "decoder/loop_level_decoder.h"
 
 namespace {

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "bitio/byte_io.h"
-#include "bitio/displacement_coding.h"
-#include "bitio/polygon_symbol_coding.h"
-#include "bitio/predicted_mapping.h"
-#include "bitio/range_coder.h"
+#include "common/byte_io.h"
+#include "common/displacement_coding.h"
+#include "common/polygon_symbol_coding.h"
+#include "common/predicted_mapping.h"
+#include "common/range_coder.h"
 #include "qmc/format.h"
 
 namespace fs = std::filesystem;

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "bitio/byte_io.h"
+#include "common/byte_io.h"
 #include "decoder/position_decoder.h"
 #include "fuzz_limits.h"
 

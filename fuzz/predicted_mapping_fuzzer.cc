@@ -11,8 +11,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "bitio/predicted_mapping.h"
-#include "bitio/range_coder.h"
+#include "common/predicted_mapping.h"
+#include "common/range_coder.h"
 
 namespace {
 

@@ -6,8 +6,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "bitio/bit_reader.h"
-#include "bitio/quad_codings.h"
+#include "common/bit_reader.h"
+#include "common/quad_codings.h"
 #include "decoder/spirale_reversi_decoder.h"
 #include "encoder/opposite_edge_table.h"
 #include "encoder/quad_traversal_encoder.h"

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "bitio/octahedral_normal.h"
+#include "common/octahedral_normal.h"
 #include "mesh_generators.h"
 #include "qmc/decoder.h"
 #include "qmc/encoder.h"

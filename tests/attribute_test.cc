@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "attribute_generators.h"
-#include "bitio/attribute_mapping.h"
-#include "bitio/octahedral_normal.h"
-#include "bitio/range_coder.h"
+#include "common/attribute_mapping.h"
+#include "common/octahedral_normal.h"
+#include "common/range_coder.h"
 #include "chunk_list.h"
 #include "corpus_dir.h"
 #include "mesh_generators.h"

@@ -4,10 +4,10 @@
 #include <cstring>
 #include <random>
 
-#include "bitio/bit_reader.h"
-#include "bitio/bit_writer.h"
-#include "bitio/byte_io.h"
-#include "bitio/crc32.h"
+#include "common/bit_reader.h"
+#include "common/bit_writer.h"
+#include "common/byte_io.h"
+#include "common/crc32.h"
 
 namespace qmc {
 namespace {

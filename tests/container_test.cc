@@ -1,7 +1,7 @@
 // The container of spec sections 3 and 4: framing, CRC, order, streaming.
 #include <gtest/gtest.h>
 
-#include "bitio/byte_io.h"
+#include "common/byte_io.h"
 #include "encoder/chunk_writer.h"
 #include "mesh_generators.h"
 #include "qmc/decoder.h"

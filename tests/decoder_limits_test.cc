@@ -11,7 +11,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "bitio/byte_io.h"
+#include "common/byte_io.h"
 #include "chunk_list.h"
 #include "decoder/output_budget.h"
 #include "qmc/decoder.h"

@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include "bitio/plane_prediction.h"
-#include "bitio/range_coder.h"
+#include "common/plane_prediction.h"
+#include "common/range_coder.h"
 #include "decoder/plane_decoder.h"
 #include "encoder/plane_encoder.h"
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "attribute_generators.h"
-#include "bitio/vertex_prediction.h"
+#include "common/vertex_prediction.h"
 #include "mesh_generators.h"
 #include "splitmix64.h"
 #include "qmc/decoder.h"

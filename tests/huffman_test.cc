@@ -5,7 +5,7 @@
 #include <functional>
 #include <random>
 
-#include "bitio/huffman.h"
+#include "common/huffman.h"
 
 namespace qmc {
 namespace {

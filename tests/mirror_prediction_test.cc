@@ -9,9 +9,9 @@
 #include <random>
 #include <vector>
 
-#include "bitio/geometry_order.h"
-#include "bitio/mirror_prediction.h"
-#include "bitio/vertex_prediction.h"
+#include "common/geometry_order.h"
+#include "common/mirror_prediction.h"
+#include "common/vertex_prediction.h"
 #include "decoder/position_decoder.h"
 #include "encoder/occupied_blocks.h"
 #include "encoder/position_encoder.h"

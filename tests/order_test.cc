@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "bitio/bit_writer.h"
-#include "bitio/huffman.h"
-#include "bitio/magnitude_code.h"
+#include "common/bit_writer.h"
+#include "common/huffman.h"
+#include "common/magnitude_code.h"
 #include "decoder/order_decoder.h"
 #include "mesh_generators.h"
 #include "qmc/decoder.h"
 #include "qmc/encoder.h"
-#include "bitio/byte_io.h"
+#include "common/byte_io.h"
 #include "chunk_list.h"
 #include "roundtrip_check.h"
 #include "splitmix64.h"

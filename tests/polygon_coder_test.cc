@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <string>
 
-#include "bitio/bit_writer.h"
-#include "bitio/byte_io.h"
-#include "bitio/polygon_symbol_coding.h"
-#include "bitio/polygon_symbols.h"
+#include "common/bit_writer.h"
+#include "common/byte_io.h"
+#include "common/polygon_symbol_coding.h"
+#include "common/polygon_symbols.h"
 #include "decoder/connectivity_decoder.h"
 #include "decoder/polygon_spirale_reversi.h"
 #include "encoder/polygon_surface.h"

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "bitio/predicted_mapping.h"
-#include "bitio/range_coder.h"
+#include "common/predicted_mapping.h"
+#include "common/range_coder.h"
 #include "mesh_generators.h"
 #include "splitmix64.h"
 #include "qmc/mesh.h"

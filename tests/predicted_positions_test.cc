@@ -8,10 +8,10 @@
 #include <cstdlib>
 #include <random>
 
-#include "bitio/geometry_order.h"
-#include "bitio/position_coding.h"
-#include "bitio/range_coder.h"
-#include "bitio/vertex_prediction.h"
+#include "common/geometry_order.h"
+#include "common/position_coding.h"
+#include "common/range_coder.h"
+#include "common/vertex_prediction.h"
 #include "decoder/position_decoder.h"
 #include "encoder/position_encoder.h"
 #include "encoder/residual_costs.h"

@@ -5,9 +5,9 @@
 
 #include <filesystem>
 
-#include "bitio/bit_writer.h"
-#include "bitio/byte_io.h"
-#include "bitio/quad_codings.h"
+#include "common/bit_writer.h"
+#include "common/byte_io.h"
+#include "common/quad_codings.h"
 #include "decoder/connectivity_decoder.h"
 #include "decoder/spirale_reversi_decoder.h"
 #include "encoder/opposite_edge_table.h"

@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/mirror_prediction.h"
-#include "bitio/value_twins.h"
-#include "bitio/vertex_prediction.h"
+#include "common/mirror_prediction.h"
+#include "common/value_twins.h"
+#include "common/vertex_prediction.h"
 #include "decoder/position_decoder.h"
 #include "encoder/position_encoder.h"
 #include "attribute_generators.h"

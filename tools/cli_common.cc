@@ -10,7 +10,7 @@
 #include <unistd.h>
 
 #include "atomic_file.h"
-#include "bitio/position_coding.h"
+#include "common/position_coding.h"
 #include "mesh_io.h"
 
 namespace qmc::cli {

@@ -8,12 +8,12 @@
 #include <cstring>
 #include <string>
 
-#include "bitio/attribute_mapping.h"
-#include "bitio/byte_io.h"
-#include "bitio/exact_arith.h"
-#include "bitio/octahedral_normal.h"
-#include "bitio/predicted_mapping.h"
-#include "bitio/range_coder.h"
+#include "common/attribute_mapping.h"
+#include "common/byte_io.h"
+#include "common/exact_arith.h"
+#include "common/octahedral_normal.h"
+#include "common/predicted_mapping.h"
+#include "common/range_coder.h"
 #include "decoder/position_decoder.h"
 
 namespace qmc {

@@ -2,7 +2,7 @@
 // 10.2, 12.9 and 13.10), hashed by the conformance manifest.
 #include <cstring>
 
-#include "bitio/byte_io.h"
+#include "common/byte_io.h"
 #include "decoder/no_throw.h"
 #include "qmc/decoder.h"
 

@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "bitio/byte_io.h"
-#include "bitio/crc32.h"
+#include "common/byte_io.h"
+#include "common/crc32.h"
 #include "qmc/decoder.h"
 
 namespace qmc {

@@ -10,9 +10,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/polygon_symbol_coding.h"
-#include "bitio/polygon_symbols.h"
-#include "bitio/range_coder.h"
+#include "common/polygon_symbol_coding.h"
+#include "common/polygon_symbols.h"
+#include "common/range_coder.h"
 #include "decoder/polygon_spirale_reversi.h"
 #include "qmc/status.h"
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "bitio/byte_io.h"
+#include "common/byte_io.h"
 #include "decoder/indexed_connectivity_decoder.h"
 #include "decoder/polygon_connectivity_decoder.h"
 #include "decoder/quad_connectivity_decoder.h"

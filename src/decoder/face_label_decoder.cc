@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "bitio/byte_io.h"
-#include "bitio/face_label_coding.h"
-#include "bitio/range_coder.h"
+#include "common/byte_io.h"
+#include "common/face_label_coding.h"
+#include "common/range_coder.h"
 
 namespace qmc {
 namespace {

@@ -6,11 +6,11 @@
 #include <cstring>
 #include <string>
 
-#include "bitio/byte_io.h"
-#include "bitio/exact_arith.h"
-#include "bitio/gim_face_code.h"
-#include "bitio/range_coder.h"
-#include "bitio/union_find.h"
+#include "common/byte_io.h"
+#include "common/exact_arith.h"
+#include "common/gim_face_code.h"
+#include "common/range_coder.h"
+#include "common/union_find.h"
 #include "decoder/gim_mesh_builder.h"
 #include "decoder/plane_decoder.h"
 

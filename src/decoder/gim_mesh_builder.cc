@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "bitio/exact_arith.h"
-#include "bitio/union_find.h"
+#include "common/exact_arith.h"
+#include "common/union_find.h"
 
 namespace qmc {
 namespace {

@@ -5,10 +5,10 @@
 
 #include <string>
 
-#include "bitio/bit_reader.h"
-#include "bitio/huffman.h"
-#include "bitio/magnitude_code.h"
-#include "bitio/recent_vertex_list.h"
+#include "common/bit_reader.h"
+#include "common/huffman.h"
+#include "common/magnitude_code.h"
+#include "common/recent_vertex_list.h"
 
 namespace qmc {
 namespace {

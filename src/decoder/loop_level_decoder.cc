@@ -7,11 +7,11 @@
 #include <cmath>
 #include <string>
 
-#include "bitio/bit_reader.h"
-#include "bitio/byte_io.h"
-#include "bitio/displacement_coding.h"
-#include "bitio/exact_arith.h"
-#include "bitio/range_coder.h"
+#include "common/bit_reader.h"
+#include "common/byte_io.h"
+#include "common/displacement_coding.h"
+#include "common/exact_arith.h"
+#include "common/range_coder.h"
 #include "decoder/no_throw.h"
 #include "decoder/position_decoder.h"
 

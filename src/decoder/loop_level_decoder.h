@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/displacement_coding.h"
+#include "common/displacement_coding.h"
 #include "decoder/loop_subdivision.h"
 #include "qmc/decoder.h"
 #include "qmc/status.h"

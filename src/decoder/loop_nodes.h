@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/union_find.h"
+#include "common/union_find.h"
 
 namespace qmc {
 

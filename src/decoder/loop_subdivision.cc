@@ -2,13 +2,13 @@
 // masks and §3.1.2 limit normals; C. Loop 1987; Hoppe et al. 1994 for the
 // boundary tangents). The arithmetic is binary64, one rounding per
 // operation, in the order written; every product goes through mul()
-// (bitio/exact_arith.h) so that no compiler flag fuses a multiply-add.
+// (common/exact_arith.h) so that no compiler flag fuses a multiply-add.
 #include "decoder/loop_subdivision.h"
 
 #include <string>
 
-#include "bitio/exact_arith.h"
-#include "bitio/union_find.h"
+#include "common/exact_arith.h"
+#include "common/union_find.h"
 
 namespace qmc {
 namespace {

@@ -5,10 +5,10 @@
 
 #include <string>
 
-#include "bitio/bit_reader.h"
-#include "bitio/byte_io.h"
-#include "bitio/huffman.h"
-#include "bitio/magnitude_code.h"
+#include "common/bit_reader.h"
+#include "common/byte_io.h"
+#include "common/huffman.h"
+#include "common/magnitude_code.h"
 
 namespace qmc {
 namespace {

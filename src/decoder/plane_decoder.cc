@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "bitio/plane_prediction.h"
-#include "bitio/range_coder.h"
+#include "common/plane_prediction.h"
+#include "common/range_coder.h"
 
 namespace qmc {
 namespace {

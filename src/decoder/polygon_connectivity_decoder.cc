@@ -10,12 +10,12 @@
 #include <utility>
 #include <vector>
 
-#include "bitio/bit_reader.h"
-#include "bitio/byte_io.h"
-#include "bitio/huffman.h"
-#include "bitio/polygon_symbols.h"
-#include "bitio/union_find.h"
-#include "bitio/quad_codings.h"
+#include "common/bit_reader.h"
+#include "common/byte_io.h"
+#include "common/huffman.h"
+#include "common/polygon_symbols.h"
+#include "common/union_find.h"
+#include "common/quad_codings.h"
 #include "decoder/coded_faces.h"
 #include "decoder/connectivity_errors.h"
 #include "decoder/polygon_spirale_reversi.h"

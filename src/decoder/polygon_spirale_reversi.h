@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/polygon_symbol_coding.h"
-#include "bitio/polygon_symbols.h"
+#include "common/polygon_symbol_coding.h"
+#include "common/polygon_symbols.h"
 #include "qmc/status.h"
 
 namespace qmc {

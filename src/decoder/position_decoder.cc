@@ -8,12 +8,12 @@
 #include <cmath>
 #include <string>
 
-#include "bitio/bit_reader.h"
-#include "bitio/byte_io.h"
-#include "bitio/exact_arith.h"
-#include "bitio/huffman.h"
-#include "bitio/magnitude_code.h"
-#include "bitio/position_coding.h"
+#include "common/bit_reader.h"
+#include "common/byte_io.h"
+#include "common/exact_arith.h"
+#include "common/huffman.h"
+#include "common/magnitude_code.h"
+#include "common/position_coding.h"
 
 namespace qmc {
 namespace {

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "bitio/position_coding.h"
-#include "bitio/geometry_order.h"
-#include "bitio/mirror_prediction.h"
-#include "bitio/value_twins.h"
+#include "common/position_coding.h"
+#include "common/geometry_order.h"
+#include "common/mirror_prediction.h"
+#include "common/value_twins.h"
 #include "qmc/decoder.h"
 #include "qmc/status.h"
 

@@ -7,11 +7,11 @@
 #include <memory>
 #include <string>
 
-#include "bitio/geometry_order.h"
-#include "bitio/mirror_prediction.h"
-#include "bitio/position_coding.h"
-#include "bitio/range_coder.h"
-#include "bitio/vertex_prediction.h"
+#include "common/geometry_order.h"
+#include "common/mirror_prediction.h"
+#include "common/position_coding.h"
+#include "common/range_coder.h"
+#include "common/vertex_prediction.h"
 #include "decoder/position_decoder.h"
 
 namespace qmc {

@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "bitio/bit_reader.h"
-#include "bitio/byte_io.h"
-#include "bitio/quad_codings.h"
+#include "common/bit_reader.h"
+#include "common/byte_io.h"
+#include "common/quad_codings.h"
 #include "decoder/spirale_reversi_decoder.h"
 
 namespace qmc {

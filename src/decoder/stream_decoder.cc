@@ -5,7 +5,7 @@
 #include <new>
 #include <string>
 
-#include "bitio/byte_io.h"
+#include "common/byte_io.h"
 #include "decoder/attribute_decoder.h"
 #include "decoder/chunk_frame.h"
 #include "decoder/connectivity_decoder.h"

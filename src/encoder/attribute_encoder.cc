@@ -9,11 +9,11 @@
 #include <cmath>
 #include <string>
 
-#include "bitio/attribute_mapping.h"
-#include "bitio/predicted_mapping.h"
-#include "bitio/byte_io.h"
-#include "bitio/octahedral_normal.h"
-#include "bitio/range_coder.h"
+#include "common/attribute_mapping.h"
+#include "common/predicted_mapping.h"
+#include "common/byte_io.h"
+#include "common/octahedral_normal.h"
+#include "common/range_coder.h"
 #include "encoder/position_encoder.h"
 
 namespace qmc {

@@ -7,7 +7,7 @@
 
 #include "qmc/encoder.h"
 #include "qmc/mesh.h"
-#include "bitio/mirror_prediction.h"
+#include "common/mirror_prediction.h"
 #include "qmc/status.h"
 
 namespace qmc {

@@ -1,8 +1,8 @@
 // Chunk framing of spec/qmc-format.md sections 3.1-3.4.
 #include "encoder/chunk_writer.h"
 
-#include "bitio/byte_io.h"
-#include "bitio/crc32.h"
+#include "common/byte_io.h"
+#include "common/crc32.h"
 #include "qmc/format.h"
 
 namespace qmc {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "bitio/byte_io.h"
+#include "common/byte_io.h"
 #include "encoder/attribute_encoder.h"
 #include "encoder/chunk_writer.h"
 #include "encoder/gim_encoder.h"

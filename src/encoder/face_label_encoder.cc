@@ -2,9 +2,9 @@
 // string tables as given, then each face's label in file order (16.2).
 #include "encoder/face_label_encoder.h"
 
-#include "bitio/byte_io.h"
-#include "bitio/face_label_coding.h"
-#include "bitio/range_coder.h"
+#include "common/byte_io.h"
+#include "common/face_label_coding.h"
+#include "common/range_coder.h"
 
 namespace qmc {
 namespace {

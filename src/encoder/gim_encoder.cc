@@ -8,7 +8,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "bitio/union_find.h"
+#include "common/union_find.h"
 #include "geometry/triangle_bvh.h"  // Vec3d
 
 #include "geometry/gim_adaptive_sampling.h"

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <cstring>
 
-#include "bitio/byte_io.h"
-#include "bitio/gim_face_code.h"
-#include "bitio/range_coder.h"
+#include "common/byte_io.h"
+#include "common/gim_face_code.h"
+#include "common/range_coder.h"
 #include "encoder/chunk_writer.h"
 #include "encoder/encoder_internal.h"
 #include "encoder/plane_encoder.h"

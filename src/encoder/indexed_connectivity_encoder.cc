@@ -3,11 +3,11 @@
 // recent-vertex list, or a back distance to an older label.
 #include "encoder/indexed_connectivity_encoder.h"
 
-#include "bitio/bit_writer.h"
-#include "bitio/byte_io.h"
-#include "bitio/huffman.h"
-#include "bitio/magnitude_code.h"
-#include "bitio/recent_vertex_list.h"
+#include "common/bit_writer.h"
+#include "common/byte_io.h"
+#include "common/huffman.h"
+#include "common/magnitude_code.h"
+#include "common/recent_vertex_list.h"
 #include "qmc/format.h"
 
 namespace qmc {

@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "bitio/bit_writer.h"
-#include "bitio/byte_io.h"
-#include "bitio/displacement_coding.h"
-#include "bitio/range_coder.h"
+#include "common/bit_writer.h"
+#include "common/byte_io.h"
+#include "common/displacement_coding.h"
+#include "common/range_coder.h"
 #include "encoder/chunk_writer.h"
 #include "encoder/position_encoder.h"
 

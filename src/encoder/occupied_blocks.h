@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/mirror_prediction.h"  // GridPointTable
+#include "common/mirror_prediction.h"  // GridPointTable
 
 namespace qmc {
 

@@ -4,8 +4,8 @@
 
 #include <utility>
 
-#include "bitio/plane_prediction.h"
-#include "bitio/range_coder.h"
+#include "common/plane_prediction.h"
+#include "common/range_coder.h"
 
 namespace qmc {
 

@@ -6,14 +6,14 @@
 
 #include <algorithm>
 
-#include "bitio/bit_writer.h"
-#include "bitio/byte_io.h"
-#include "bitio/huffman.h"
-#include "bitio/polygon_symbols.h"
-#include "bitio/union_find.h"
-#include "bitio/quad_codings.h"
-#include "bitio/polygon_symbol_coding.h"
-#include "bitio/range_coder.h"
+#include "common/bit_writer.h"
+#include "common/byte_io.h"
+#include "common/huffman.h"
+#include "common/polygon_symbols.h"
+#include "common/union_find.h"
+#include "common/quad_codings.h"
+#include "common/polygon_symbol_coding.h"
+#include "common/range_coder.h"
 #include "decoder/polygon_spirale_reversi.h"
 #include "encoder/polygon_surface.h"
 #include "encoder/polygon_traversal_encoder.h"

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "bitio/polygon_symbols.h"
+#include "common/polygon_symbols.h"
 #include "qmc/format.h"
 #include "qmc/mesh.h"
 

@@ -5,7 +5,7 @@
 #include <numeric>
 #include <utility>
 
-#include "bitio/union_find.h"
+#include "common/union_find.h"
 #include "encoder/edge_buckets.h"
 
 namespace qmc {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "bitio/polygon_symbols.h"
+#include "common/polygon_symbols.h"
 #include "encoder/polygon_surface.h"
 
 namespace qmc {

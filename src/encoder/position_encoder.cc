@@ -9,16 +9,16 @@
 #include <limits>
 #include <memory>
 
-#include "bitio/bit_writer.h"
-#include "bitio/byte_io.h"
-#include "bitio/exact_arith.h"
-#include "bitio/geometry_order.h"
-#include "bitio/huffman.h"
-#include "bitio/magnitude_code.h"
-#include "bitio/mirror_prediction.h"
-#include "bitio/position_coding.h"
-#include "bitio/range_coder.h"
-#include "bitio/vertex_prediction.h"
+#include "common/bit_writer.h"
+#include "common/byte_io.h"
+#include "common/exact_arith.h"
+#include "common/geometry_order.h"
+#include "common/huffman.h"
+#include "common/magnitude_code.h"
+#include "common/mirror_prediction.h"
+#include "common/position_coding.h"
+#include "common/range_coder.h"
+#include "common/vertex_prediction.h"
 #include "encoder/occupied_blocks.h"
 #include "encoder/residual_costs.h"
 

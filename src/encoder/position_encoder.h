@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "bitio/geometry_order.h"
-#include "bitio/mirror_prediction.h"
-#include "bitio/value_twins.h"
-#include "bitio/position_coding.h"
+#include "common/geometry_order.h"
+#include "common/mirror_prediction.h"
+#include "common/value_twins.h"
+#include "common/position_coding.h"
 #include "qmc/encoder.h"
 #include "qmc/mesh.h"
 #include "qmc/status.h"

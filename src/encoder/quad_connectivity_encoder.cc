@@ -3,9 +3,9 @@
 // the smallest (ties go to the lower coding number).
 #include "encoder/quad_connectivity_encoder.h"
 
-#include "bitio/bit_writer.h"
-#include "bitio/byte_io.h"
-#include "bitio/quad_codings.h"
+#include "common/bit_writer.h"
+#include "common/byte_io.h"
+#include "common/quad_codings.h"
 #include "qmc/format.h"
 
 namespace qmc {

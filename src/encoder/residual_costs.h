@@ -7,8 +7,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "bitio/position_coding.h"
-#include "bitio/range_coder.h"
+#include "common/position_coding.h"
+#include "common/range_coder.h"
 
 namespace qmc {
 

@@ -1,7 +1,7 @@
 // Seed 002 "Methods": Euler circuit cutting to obtain a topological disk (Gu
 // et al.'s cut graph, its pruning and straightening, a long path for closed
 // genus 0). See gim_cut.h for the contract.
-#include "bitio/union_find.h"
+#include "common/union_find.h"
 #include "geometry/gim_cut.h"
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // grid of the parameter rectangle (regular sampling; the adaptive sampling of
 // §3.1 passes its own column and row positions), with seed 002's seam pairs
 // so the rebuilt surface has no cracks. See gim_sampling.h for the contract.
-#include "bitio/union_find.h"
+#include "common/union_find.h"
 #include "geometry/gim_sampling.h"
 
 #include <algorithm>

@@ -7,7 +7,7 @@
 #include <limits>
 #include <unordered_map>
 
-#include "bitio/splitmix64_mix.h"
+#include "common/splitmix64_mix.h"
 #include "geometry/loop_fitting.h"
 
 namespace qmc {

@@ -7,7 +7,7 @@
 #include <array>
 #include <vector>
 
-#include "bitio/union_find.h"
+#include "common/union_find.h"
 
 namespace qmc {
 namespace {

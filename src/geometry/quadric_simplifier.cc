@@ -24,7 +24,7 @@
 #include <string>
 #include <vector>
 
-#include "bitio/union_find.h"
+#include "common/union_find.h"
 #include "geometry/manifold_cut.h"
 
 namespace qmc {

@@ -5,7 +5,7 @@
 #include <map>
 #include <utility>
 
-#include "bitio/union_find.h"
+#include "common/union_find.h"
 
 namespace qmc {
 namespace {

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Spec 6.4 / Appendix A: the decoder's exact arithmetic must not rest on our
-# CMake flags. Compiles src/decoder and src/bitio the way an embedder might
+# CMake flags. Compiles src/decoder and src/common the way an embedder might
 # (their compiler and flags, none of our options; by default -O2
 # -march=native -ffp-contract=fast, or $QMC_EMBEDDER_FLAGS) and checks every
 # conformance vector.
@@ -18,7 +18,7 @@ for cxx in "$@"; do
   bin="$work/check_vectors_$(basename "$cxx")"
   # shellcheck disable=SC2086  # the flags are words
   "$cxx" -std=c++17 $flags -I"$src/include" -I"$src/src" -I"$src/tools/lib" \
-    "$src"/src/decoder/*.cc "$src"/src/bitio/*.cc "$src/tools/lib/sha256.cc" \
+    "$src"/src/decoder/*.cc "$src"/src/common/*.cc "$src/tools/lib/sha256.cc" \
     "$src/tests/embedder_flags/check_vectors.cc" -o "$bin"
   echo "== $cxx $flags"
   "$bin" "$src/conformance"

@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "bitio/byte_io.h"
+#include "common/byte_io.h"
 #include "encoder/chunk_writer.h"
 #include "qmc/decoder.h"
 

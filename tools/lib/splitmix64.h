@@ -6,7 +6,7 @@
 
 #include <cstdint>
 
-#include "bitio/splitmix64_mix.h"
+#include "common/splitmix64_mix.h"
 
 namespace qmc::tools {
 

@@ -1,11 +1,11 @@
 // Section 14.3 of spec/qmc-format.md: the prediction rules, one function
 // per rule, combined by weight in units of 2^-16; and 15.12's guided rule
 // for texture coordinates.
-#include "bitio/vertex_prediction.h"
+#include "common/vertex_prediction.h"
 
 #include <algorithm>
 
-#include "bitio/exact_arith.h"  // floor_div, floor_shift, integer_sqrt, shift_into_15_bits
+#include "common/exact_arith.h"  // floor_div, floor_shift, integer_sqrt, shift_into_15_bits
 
 namespace qmc {
 namespace {

@@ -1,5 +1,5 @@
 // Bit reader of spec/qmc-format.md section 7.1.
-#include "bitio/bit_reader.h"
+#include "common/bit_reader.h"
 
 namespace qmc {
 

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/bit_reader.h"
-#include "bitio/bit_writer.h"
+#include "common/bit_reader.h"
+#include "common/bit_writer.h"
 #include "qmc/status.h"
 
 namespace qmc {

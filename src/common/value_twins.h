@@ -12,8 +12,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/mirror_prediction.h"
-#include "bitio/vertex_prediction.h"
+#include "common/mirror_prediction.h"
+#include "common/vertex_prediction.h"
 #include "qmc/mesh.h"
 
 namespace qmc {

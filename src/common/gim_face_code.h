@@ -7,7 +7,7 @@
 
 #include <cstdint>
 
-#include "bitio/range_coder.h"
+#include "common/range_coder.h"
 
 namespace qmc {
 

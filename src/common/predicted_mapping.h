@@ -14,8 +14,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/attribute_mapping.h"
-#include "bitio/octahedral_normal.h"
+#include "common/attribute_mapping.h"
+#include "common/octahedral_normal.h"
 
 namespace qmc {
 

@@ -13,7 +13,7 @@
 #include <memory>
 #include <vector>
 
-#include "bitio/vertex_prediction.h"
+#include "common/vertex_prediction.h"
 
 namespace qmc {
 

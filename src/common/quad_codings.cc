@@ -1,10 +1,10 @@
 // Codings of seed 001 chapter 4 (tables 4-2, 4-6, 4-8), the plain 4-bit
 // code of its section 4.1, and the Huffman coding of spec 5.3.5.
-#include "bitio/quad_codings.h"
+#include "common/quad_codings.h"
 
 #include <string>
 
-#include "bitio/huffman.h"
+#include "common/huffman.h"
 
 namespace qmc {
 namespace {

@@ -1,5 +1,5 @@
 // Bit writer of spec/qmc-format.md section 7.1.
-#include "bitio/bit_writer.h"
+#include "common/bit_writer.h"
 
 #include <utility>
 

@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <cstdint>
 
-#include "bitio/residual_code.h"
+#include "common/residual_code.h"
 
 namespace qmc {
 

@@ -9,9 +9,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/exact_arith.h"
-#include "bitio/position_coding.h"
-#include "bitio/residual_code.h"
+#include "common/exact_arith.h"
+#include "common/position_coding.h"
+#include "common/residual_code.h"
 
 namespace qmc {
 

@@ -1,5 +1,5 @@
 // Canonical length-limited Huffman of spec/qmc-format.md section 7.3.
-#include "bitio/huffman.h"
+#include "common/huffman.h"
 
 #include <algorithm>
 #include <string>

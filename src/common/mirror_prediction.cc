@@ -1,12 +1,12 @@
 // Section 14.10 of spec/qmc-format.md: the mirror candidate.
-#include "bitio/mirror_prediction.h"
+#include "common/mirror_prediction.h"
 
 #include <algorithm>
 #include <chrono>
 #include <limits>
 
-#include "bitio/exact_arith.h"  // bit_length64
-#include "bitio/splitmix64_mix.h"
+#include "common/exact_arith.h"  // bit_length64
+#include "common/splitmix64_mix.h"
 
 namespace qmc {
 namespace {

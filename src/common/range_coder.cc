@@ -1,5 +1,5 @@
 // Adaptive binary range coder (spec/qmc-format.md section 13.5.2).
-#include "bitio/range_coder.h"
+#include "common/range_coder.h"
 
 #include <utility>
 

@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/vertex_prediction.h"
+#include "common/vertex_prediction.h"
 
 namespace qmc {
 

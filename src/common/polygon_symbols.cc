@@ -1,7 +1,7 @@
 // Symbol tables of spec/qmc-format.md 5.4.3.
-#include "bitio/polygon_symbols.h"
+#include "common/polygon_symbols.h"
 
-#include "bitio/polygon_symbol_coding.h"
+#include "common/polygon_symbol_coding.h"
 
 namespace qmc {
 namespace {

@@ -11,7 +11,7 @@
 #include <array>
 #include <cstdint>
 
-#include "bitio/range_coder.h"
+#include "common/range_coder.h"
 #include "qmc/format.h"
 
 namespace qmc {

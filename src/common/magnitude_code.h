@@ -6,8 +6,8 @@
 
 #include <cstdint>
 
-#include "bitio/bit_reader.h"
-#include "bitio/bit_writer.h"
+#include "common/bit_reader.h"
+#include "common/bit_writer.h"
 
 namespace qmc {
 

@@ -1,6 +1,6 @@
 // CRC-32 of spec/qmc-format.md section 3.4, table driven (one table of 256
 // entries built at compile time).
-#include "bitio/crc32.h"
+#include "common/crc32.h"
 
 #include <array>
 

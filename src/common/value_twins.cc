@@ -1,6 +1,6 @@
 // Section 15.14 of spec/qmc-format.md: the twin candidate of an attribute
 // value (aTTR coding 9).
-#include "bitio/value_twins.h"
+#include "common/value_twins.h"
 
 #include <algorithm>
 

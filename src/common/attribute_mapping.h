@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "bitio/position_coding.h"
+#include "common/position_coding.h"
 
 namespace qmc {
 

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "bitio/position_coding.h"
+#include "common/position_coding.h"
 
 namespace qmc {
 

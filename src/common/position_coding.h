@@ -8,10 +8,10 @@
 #include <cstdint>
 #include <cstring>
 
-#include "bitio/exact_arith.h"  // bit_length64
-#include "bitio/mirror_prediction.h"
-#include "bitio/residual_code.h"
-#include "bitio/vertex_prediction.h"
+#include "common/exact_arith.h"  // bit_length64
+#include "common/mirror_prediction.h"
+#include "common/residual_code.h"
+#include "common/vertex_prediction.h"
 
 namespace qmc {
 

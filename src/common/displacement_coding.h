@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <cstdlib>
 
-#include "bitio/residual_code.h"
+#include "common/residual_code.h"
 
 namespace qmc {
 

@@ -1,5 +1,5 @@
 // Section 14.6 of spec/qmc-format.md: the geometry order.
-#include "bitio/geometry_order.h"
+#include "common/geometry_order.h"
 
 #include <cstddef>
 

@@ -1,5 +1,5 @@
 // Byte-level fields of spec/qmc-format.md section 2.2.
-#include "bitio/byte_io.h"
+#include "common/byte_io.h"
 
 #include <cstring>
 
