@@ -233,16 +233,26 @@ function cornerGeometry(mesh) {
   return geometry;
 }
 
+// A position has at most this many vertices found by comparing its corners
+// with them; a corner of another value beyond them is set aside.
+const kComparedVertices = 32;
+
 // One vertex per distinct (position, value index of each channel) among the
-// corners, numbered in corner order: vertexOf[corner], cornerOf[vertex] (its
-// first corner) and count. The vertices of a position are chained from
-// firstOf[position] through nextOf, so a corner is compared only with those.
+// corners, numbered in the order of their first corners: vertexOf[corner],
+// cornerOf[vertex] (its first corner) and count. The vertices of a position
+// are chained from firstOf[position] through nextOf, so a corner is compared
+// only with those, at most kComparedVertices; the corners whose values none
+// of them has are set aside and sorted (splitSetAside), where comparing
+// with every vertex found before would take a fan of a million corners of
+// distinct values 5 10^11 steps.
 function splitVertices(mesh, cornerValues) {
   const cornerCount = mesh.corners.length;
   const vertexOf = new Uint32Array(cornerCount);
   const cornerOf = new Uint32Array(cornerCount);
   const nextOf = new Int32Array(cornerCount);
   const firstOf = new Int32Array(mesh.vertexCount).fill(-1);
+  const vertices = new Uint8Array(mesh.vertexCount);  // per position, the chain's length
+  const setAside = [];
   // One to three channels, compared without a loop over them per corner.
   const [first, second, third] = cornerValues;
   const same = (k, other) => first[k] === first[other] && (!second || second[k] === second[other]) &&
@@ -253,12 +263,41 @@ function splitVertices(mesh, cornerValues) {
     let r = firstOf[position];
     while (r >= 0 && !same(k, cornerOf[r])) r = nextOf[r];
     if (r < 0) {
+      if (vertices[position] === kComparedVertices) {
+        setAside.push(k);
+        continue;
+      }
       r = count++;
       cornerOf[r] = k;
       nextOf[r] = firstOf[position];
       firstOf[position] = r;
+      vertices[position] += 1;
     }
     vertexOf[k] = r;
+  }
+  return setAside.length ? splitSetAside(mesh, cornerValues, vertexOf, cornerOf, setAside) : { vertexOf, cornerOf, count };
+}
+
+// splitVertices's result where corners were set aside: those corners sorted
+// by position, values and corner, so that each run of equal position and
+// values is one vertex led by its first corner (n log n); then every vertex
+// numbered again in the order of its first corner.
+function splitSetAside(mesh, [first, second, third], vertexOf, cornerOf, setAside) {
+  const cornerCount = mesh.corners.length;
+  const leader = new Uint32Array(cornerCount);  // the first corner of each corner's vertex
+  for (let k = 0; k < cornerCount; ++k) leader[k] = cornerOf[vertexOf[k]];
+  const key = (a, b) => mesh.corners[a] - mesh.corners[b] || first[a] - first[b] ||
+    (second ? second[a] - second[b] : 0) || (third ? third[a] - third[b] : 0);
+  const sorted = setAside.sort((a, b) => key(a, b) || a - b);
+  sorted.forEach((k, i) => { leader[k] = i > 0 && key(sorted[i - 1], k) === 0 ? leader[sorted[i - 1]] : k; });
+  let count = 0;
+  for (let k = 0; k < cornerCount; ++k) {
+    if (leader[k] === k) {
+      cornerOf[count] = k;
+      vertexOf[k] = count++;
+    } else {
+      vertexOf[k] = vertexOf[leader[k]];  // leader[k] < k: numbered already
+    }
   }
   return { vertexOf, cornerOf, count };
 }

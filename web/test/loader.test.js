@@ -103,3 +103,38 @@ test('a mesh without corner attributes keeps the decoder\'s positions and indice
   assert.equal(geometry.getIndex().array, mesh.indices);
   assert.equal(geometry.userData.level, 0);
 });
+
+// A fan of `spokes` triangles around position 0 whose centre corners take
+// `groups` texture coordinates in turn, each rim position one of its own.
+function fanMesh(spokes, groups) {
+  const positions = [0, 0, 0.5], corners = [], cornerValues = [], values = [];
+  for (let i = 0; i < spokes; ++i) positions.push(Math.cos(2 * Math.PI * i / spokes), Math.sin(2 * Math.PI * i / spokes), 0);
+  for (let g = 0; g < groups; ++g) values.push(g / groups, 0);
+  for (let i = 0; i < spokes; ++i) values.push(i / spokes, 1);
+  for (let i = 0; i < spokes; ++i) {
+    const next = (i + 1) % spokes;
+    corners.push(0, 1 + i, 1 + next);
+    cornerValues.push(i % groups, groups + i, groups + next);
+  }
+  return {
+    level: 0, vertexCount: spokes + 1, faceCount: spokes, positions: new Float32Array(positions),
+    corners: new Uint32Array(corners), indices: new Uint32Array(corners), faceSizes: new Uint32Array(spokes).fill(3),
+    attributes: [], faceLabels: [],
+    cornerAttributes: [{ name: 'texcoord', kind: 1, components: 2, values: new Float32Array(values),
+                         cornerValues: new Uint32Array(cornerValues) }],
+  };
+}
+
+test('a position of many values splits into the groups of its values, numbered by their first corners', () => {
+  // 3,000 corners and 100 values at the centre: beyond the 32 vertices a corner is compared with, the corners
+  // are set aside and sorted by their values.
+  for (const [spokes, groups] of [[3000, 100], [3000, 7], [20, 3]]) {
+    const mesh = fanMesh(spokes, groups);
+    const geometry = geometryFromMesh(mesh);
+    assertFaithful(mesh, geometry);
+    assert.equal(geometry.getAttribute('position').count, spokes + groups);
+    // The centre's vertices come first in each of the first `groups` triangles.
+    const index = geometry.getIndex().array;
+    for (let g = 0; g < groups; ++g) assert.equal(index[3 * g], g === 0 ? 0 : 2 + 2 * (g - 1) + 1, `group ${g}`);
+  }
+});
