@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <utility>
 #include <vector>
 
 #include "decoder/no_throw.h"
@@ -53,7 +54,7 @@ constexpr uint8_t kComparedVertices = 32;
 // vertex, values and corner, so that each run of equal vertex and values is
 // one split vertex led by its first corner (K log K); then every split
 // vertex numbered again in the order of its first corner.
-void split_set_aside(const qmc_mesh& mesh, const CornerValues& values, std::vector<uint32_t>* set_aside,
+void split_set_aside(const qmc_mesh& mesh, const CornerValues& values, std::vector<uint32_t> sorted,
                      std::vector<uint32_t>* first_corner, std::vector<uint32_t>* of_corner) {
   const uint32_t* vertex = mesh.corners;
   std::vector<uint32_t> leader(mesh.corner_count);  // the first corner of each corner's split vertex
@@ -61,7 +62,6 @@ void split_set_aside(const qmc_mesh& mesh, const CornerValues& values, std::vect
     leader[k] = (*of_corner)[k] != kNone ? (*first_corner)[(*of_corner)[k]] : k;
   const auto same = [&](uint32_t a, uint32_t b) { return vertex[a] == vertex[b] && values.same(a, b); };
   const auto before = [&](uint32_t a, uint32_t b) { return vertex[a] != vertex[b] ? vertex[a] < vertex[b] : values.less(a, b); };
-  std::vector<uint32_t>& sorted = *set_aside;
   std::sort(sorted.begin(), sorted.end(),
             [&](uint32_t a, uint32_t b) { return before(a, b) || (!before(b, a) && a < b); });
   for (size_t i = 1; i < sorted.size(); ++i)
@@ -105,7 +105,7 @@ void split(const qmc_mesh& mesh, const CornerValues& values, std::vector<uint32_
     }
     (*of_corner)[k] = s;
   }
-  if (!set_aside.empty()) split_set_aside(mesh, values, &set_aside, first_corner, of_corner);
+  if (!set_aside.empty()) split_set_aside(mesh, values, std::move(set_aside), first_corner, of_corner);
 }
 
 // qmc_mesh's fans (each polygon from its first corner) over the split vertices.

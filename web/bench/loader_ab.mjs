@@ -15,12 +15,12 @@ const [pathA, pathB, roundsArgument, ...files] = process.argv.slice(2);
 const load = async (path) => (await import(pathToFileURL(resolve(path)).href)).geometryFromMesh;
 const versions = [['A', await load(pathA)], ['B', await load(pathB)]];
 const qmc = await loadQMC();
+const bytesOf = new Map(files.map((f) => [f, readFileSync(f)]));
 const times = new Map(files.map((f) => [f, { A: [], B: [] }]));
 for (let round = 0; round < Number(roundsArgument); ++round) {
   for (const file of files) {
-    const bytes = readFileSync(file);
     for (const [name, geometryFromMesh] of round % 2 ? versions : [...versions].reverse()) {
-      const mesh = qmc.decode(bytes);
+      const mesh = qmc.decode(bytesOf.get(file));
       const start = performance.now();
       geometryFromMesh(mesh);
       times.get(file)[name].push(performance.now() - start);

@@ -251,7 +251,7 @@ function splitVertices(mesh, cornerValues) {
   const cornerOf = new Uint32Array(cornerCount);
   const nextOf = new Int32Array(cornerCount);
   const firstOf = new Int32Array(mesh.vertexCount).fill(-1);
-  const vertices = new Uint8Array(mesh.vertexCount);  // per position, the chain's length
+  const chained = new Uint8Array(mesh.vertexCount);  // per position, its vertices so far
   const setAside = [];
   // One to three channels, compared without a loop over them per corner.
   const [first, second, third] = cornerValues;
@@ -263,7 +263,7 @@ function splitVertices(mesh, cornerValues) {
     let r = firstOf[position];
     while (r >= 0 && !same(k, cornerOf[r])) r = nextOf[r];
     if (r < 0) {
-      if (vertices[position] === kComparedVertices) {
+      if (chained[position] === kComparedVertices) {
         setAside.push(k);
         continue;
       }
@@ -271,7 +271,7 @@ function splitVertices(mesh, cornerValues) {
       cornerOf[r] = k;
       nextOf[r] = firstOf[position];
       firstOf[position] = r;
-      vertices[position] += 1;
+      chained[position] += 1;
     }
     vertexOf[k] = r;
   }
