@@ -1401,6 +1401,10 @@ void write_gim_reading_vectors(VectorWriter* w) {
   Chunks c = split_chunks(gim_file(qmc::tools::make_torus_geometry_image(9), false));
   c[find_chunk(c, qmc::kChunkGimSeams)].payload = varints({1, 0, 8, 0, 0, 0});
   w->invalid("invalid_gim_seam_zero_count", join_chunks(c), qmc::ErrorCode::kBadChunkPayload);
+  // 13.7: the running total of pairs is the exact sum: a second run of
+  // 2^64 - 1 pairs after one pair must not wrap it to 0 (and pass W H).
+  c[find_chunk(c, qmc::kChunkGimSeams)].payload = varints({2, 0, 8, 1, 0, 0, 0, 8, ~uint64_t(0), 0, 0});
+  w->invalid("invalid_gim_seam_count_wraps", join_chunks(c), qmc::ErrorCode::kLimitExceeded);
   // 13.5.2: an empty stream is zero bytes. No triangle (T = 0) with the
   // empty stream decodes; with one byte after it, that byte is trailing data.
   const Chunks sparse = split_chunks(gim_file(qmc::tools::make_sparse_triangle_image(9), false));

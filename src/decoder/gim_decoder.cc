@@ -173,9 +173,10 @@ Status GimChunkDecoder::seams(const uint8_t* payload, uint32_t length) {
     uint64_t a = 0, b = 0, count = 0, za = 0, zb = 0;
     if (!in.get_varint(&a) || !in.get_varint(&b) || !in.get_varint(&count) || count == 0)
       return payload_error(name + ": a field is missing or malformed, or count is 0");
-    total += count;
-    if (total > uint64_t(pixels))
+    // Compared before the sum so that a count near 2^64 cannot wrap it.
+    if (count > uint64_t(pixels) - total)
       return Status(ErrorCode::kLimitExceeded, name + ": more seam pairs than pixels");
+    total += count;
     if (g.occupied.empty() && total > max_unmasked_pairs)
       return Status(ErrorCode::kLimitExceeded, name + ": " + std::to_string(total) + " seam pairs in " +
                                                    std::to_string(length) +
