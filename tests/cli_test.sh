@@ -435,6 +435,15 @@ check decode-limit-fraction 2 "$qmc" decode "$work/torus.qmc" "$work/t.obj" --ma
 check decode-limit-generous 0 "$qmc" decode "$work/torus.qmc" "$work/t.obj" --max-output-mb 1
 check info-limit 3 "$qmc" info "$bomb"
 contains info-limit-named "$work/out" "--max-output-mb raises it"
+# A count the file cannot justify (13.7: more seam pairs than pixels) is
+# limit_exceeded too, but no option changes it: no hint to raise a limit.
+check decode-count-unjustified 3 "$qmc" decode "$vectors/invalid_gim_seam_count_wraps.qmc" "$work/wraps.obj"
+cp "$work/err" "$work/wraps.err"
+contains decode-count-unjustified-rule "$work/wraps.err" "limit_exceeded: .*more seam pairs than pixels"
+check decode-count-unjustified-no-hint 1 grep -q "raises it" "$work/wraps.err"
+check info-count-unjustified 3 "$qmc" info "$vectors/invalid_gim_seam_count_wraps.qmc"
+cp "$work/out" "$work/wraps.out"
+check info-count-unjustified-no-hint 1 grep -q "raises it" "$work/wraps.out"
 
 # Spec 15: texture coordinates and normals travel in aTTR chunks, with a seam.
 cat >"$work/uv.obj" <<'OBJ'

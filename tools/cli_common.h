@@ -65,6 +65,9 @@ inline const char kMaxOutputHelp[] =
     "                     (default 256, at most 2^24 vertices; 0: no limit)\n";
 Status decoder_limits(const CommandLine& cl, DecoderLimits* limits);
 
+// A refusal by one of the decoder's limits (spec 8.1) with the option that
+// raises it appended; any other status as it is.
+Status name_limit_option(const Status& s);
 // decode() with those limits; a refusal by a limit names the option.
 Status decode_with_limits(const DecoderLimits& limits, const std::vector<uint8_t>& bytes, DecodedFile* out);
 

@@ -250,8 +250,7 @@ int run_info(int argc, char** argv) {
   StreamDecoder decoder(limits);
   Status status = decoder.feed(bytes.data(), bytes.size());
   if (status.ok()) status = decoder.finish();
-  if (status.code() == ErrorCode::kLimitExceeded)
-    status = Status(status.code(), status.message() + " [" + kMaxOutputOption + " raises it]");
+  status = name_limit_option(status);
   if (json)
     print_json(input, decoder.file(), bytes.size(), status);
   else
