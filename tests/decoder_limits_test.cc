@@ -7,11 +7,15 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <functional>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 
+#include "common/bit_writer.h"
 #include "common/byte_io.h"
+#include "common/polygon_symbol_coding.h"
+#include "common/range_coder.h"
 #include "chunk_list.h"
 #include "decoder/output_budget.h"
 #include "qmc/decoder.h"
@@ -260,6 +264,96 @@ TEST(DecoderLimits, PeekReadsTheCountsOfAProgressiveFileWithoutDecoding) {
 
 // Issue 12 item 5: an empty input is truncated, with no null pointer handed
 // to memcmp (UBSan flags that).
+// A file of QHDR 1.18, a CONN of polygon coding 7 (5.4.10) and QEND: the
+// face symbols `code_symbols` codes, then the Exp-Golomb fields of the
+// stream (components, then the records H, S, I, L and the loose faces).
+std::vector<uint8_t> coding7_file(uint8_t groups, uint32_t faces,
+                                  const std::function<void(RangeEncoder*, PolygonSymbolModel*)>& code_symbols,
+                                  const std::vector<uint32_t>& stream_fields) {
+  RangeEncoder range;
+  PolygonSymbolModel model;
+  model.groups = groups;
+  code_symbols(&range, &model);
+  const std::vector<uint8_t> symbols = range.finish();
+  std::vector<uint8_t> conn{uint8_t(ConnectivityMethod::kPolygon), 8};
+  put_varint(&conn, faces);
+  conn.insert(conn.end(), {0, kPolygonContextCoded, groups});
+  put_varint(&conn, symbols.size());
+  conn.insert(conn.end(), symbols.begin(), symbols.end());
+  BitWriter stream;
+  for (uint32_t v : stream_fields) stream.write_exp_golomb(v);
+  const std::vector<uint8_t> bits = stream.finish();
+  conn.insert(conn.end(), bits.begin(), bits.end());
+  return tools::join_chunks({Chunk{kChunkHeader, {1, 18}}, Chunk{kChunkConnectivity, conn}, Chunk{kChunkEnd, {}}});
+}
+
+// One component of two faces, a pentagon first, then one symbol 18 (the
+// only group) of degree `d` whose shape `code_shape` codes.
+std::vector<uint8_t> coding7_file_with_other_face(uint64_t d, const std::function<void(RangeEncoder*, PolygonSymbolModel*)>& code_shape) {
+  return coding7_file(kGroupOther, 2, [&](RangeEncoder* r, PolygonSymbolModel* m) {
+    uint32_t extra = uint32_t(d - 5);
+    EXPECT_TRUE(code_other_degree(r, &extra));
+    code_shape(r, m);
+  }, {1, 0, 2, 0, 0, 0, 0});  // C = 1, n - 2, d - 3, H, S, I, L
+}
+
+// 5.4.3, 5.4.10: d - 5 may code up to 2^32 - 2, but no face has more than
+// 2^32 - 1 corners (10.2 writes a degree as u32). Checked before the stream
+// is asked to justify d - 2 statuses, so a few bytes show it.
+TEST(DecoderLimits, AFaceOfSymbol18AboveTwoToThe32IsRefusedBeforeItsStatuses) {
+  const auto nothing = [](RangeEncoder*, PolygonSymbolModel*) {};
+  DecodedFile decoded;
+  const std::vector<uint8_t> above = coding7_file_with_other_face(uint64_t(UINT32_MAX) + 1, nothing);
+  const Status s = decode(above.data(), above.size(), &decoded, DecoderLimits::unlimited());
+  EXPECT_EQ(s.code(), ErrorCode::kLimitExceeded);
+  EXPECT_NE(s.message().find("above 2^32 - 1"), std::string::npos) << s.to_string();
+  const std::vector<uint8_t> at = coding7_file_with_other_face(UINT32_MAX, nothing);
+  const Status t = decode(at.data(), at.size(), &decoded, DecoderLimits::unlimited());
+  EXPECT_EQ(t.code(), ErrorCode::kLimitExceeded);
+  EXPECT_NE(t.message().find("cannot fit"), std::string::npos) << t.to_string();
+}
+
+// 5.4.8: the same for a loose face, whose d - 3 may code up to 2^32 - 2.
+TEST(DecoderLimits, ALooseFaceAboveTwoToThe32IsRefusedBeforeItsLabels) {
+  const auto pillow = [](RangeEncoder* r, PolygonSymbolModel* m) { code_face_symbol(r, m, GateContext{}, 0); };
+  DecodedFile decoded;
+  for (uint32_t extra : {UINT32_MAX - 1, UINT32_MAX - 3}) {
+    // The pillow (two quads), then L = 1 loose face of degree extra + 3.
+    const std::vector<uint8_t> file = coding7_file(kGroupQuads, 3, pillow, {1, 0, 1, 0, 0, 0, 1, extra});
+    const Status s = decode(file.data(), file.size(), &decoded, DecoderLimits::unlimited());
+    EXPECT_EQ(s.code(), ErrorCode::kLimitExceeded);
+    const bool above = uint64_t(extra) + 3 > UINT32_MAX;
+    EXPECT_EQ(s.message().find("above 2^32 - 1") != std::string::npos, above) << s.to_string();
+    EXPECT_EQ(s.message().find("cannot fit") != std::string::npos, !above) << s.to_string();
+  }
+}
+
+// 8.1: a face of symbol 18 whose statuses are all anchors and gaps all edges
+// codes some 180 corners a byte; its corners beyond 3 are checked against
+// what is left of max_output_bytes when its degree is read, before Spirale
+// Reversi reserves some 24 bytes for each.
+TEST(DecoderLimits, TheCornersOfSymbol18AreCheckedAgainstTheOutputLimitBeforeTheFaceIsBuilt) {
+  const uint64_t d = 300000;
+  const std::vector<uint8_t> file = coding7_file_with_other_face(d, [&](RangeEncoder* r, PolygonSymbolModel* m) {
+    std::vector<uint8_t> anchors(d - 2, 1), edges(d - 1, 1);
+    code_other_shape(r, m, uint32_t(d - 2), anchors.data(), edges.data());
+  });
+  EXPECT_LT(file.size(), 2000u);
+  DecoderLimits limits;
+  limits.max_output_bytes = 1 << 20;  // 262,084 corners once CONN's header is charged
+  DecodedFile decoded;
+  const Status s = decode(file.data(), file.size(), &decoded, limits);
+  EXPECT_EQ(s.code(), ErrorCode::kLimitExceeded);
+  EXPECT_NE(s.message().find("DecoderLimits::max_output_bytes"), std::string::npos) << s.to_string();
+  EXPECT_NE(s.message().find("degree 300000"), std::string::npos) << s.to_string();
+  // With room for its corners the face gets to Spirale Reversi, which finds
+  // the anchors that are not there.
+  limits.max_output_bytes = 2 << 20;
+  const Status t = decode(file.data(), file.size(), &decoded, limits);
+  EXPECT_FALSE(t.ok());
+  EXPECT_EQ(t.message().find("max_output_bytes"), std::string::npos) << t.to_string();
+}
+
 TEST(DecoderLimits, EmptyInputIsTruncated) {
   DecodedFile decoded;
   EXPECT_EQ(decode(nullptr, 0, &decoded).code(), ErrorCode::kTruncated);

@@ -23,8 +23,9 @@ FaceShapes fixed_symbol_shapes() {
 
 }  // namespace
 
-CodedFaces::CodedFaces(const uint8_t* data, size_t size, uint8_t groups, bool quad_neighbours)
-    : range_(data, size), bytes_(size), fixed_(fixed_symbol_shapes()) {
+CodedFaces::CodedFaces(const uint8_t* data, size_t size, uint8_t groups, bool quad_neighbours,
+                       OtherFaceCorners* corners)
+    : range_(data, size), corners_(corners), bytes_(size), fixed_(fixed_symbol_shapes()) {
   model_.groups = groups;
   model_.quad_neighbours = quad_neighbours;
 }
@@ -61,7 +62,9 @@ Status CodedFaces::other_shape() {
   if (!code_other_degree(&range_, &extra))
     return range_.overrun() ? truncated() : payload_error("face degree code with 32 leading zeros");
   const uint64_t d = uint64_t(extra) + 5;
+  if (d > UINT32_MAX) return limit_error("a face of degree " + std::to_string(d) + ", above 2^32 - 1");
   if (!range_stream_justifies(d - 2, bytes_)) return limit_error("a face of degree " + std::to_string(d) + " cannot fit");
+  if (Status s = corners_->take(d); !s.ok()) return s;
   scratch_.resize(2 * size_t(d - 2) + 1);
   uint8_t* status = scratch_.data();
   uint8_t* gaps = status + (d - 2);

@@ -13,6 +13,7 @@
 #include "common/polygon_symbol_coding.h"
 #include "common/polygon_symbols.h"
 #include "common/range_coder.h"
+#include "decoder/output_budget.h"
 #include "decoder/polygon_spirale_reversi.h"
 #include "qmc/status.h"
 
@@ -22,7 +23,8 @@ namespace qmc {
 // are stored.
 class CodedFaces final : public FaceSymbolSource {
  public:
-  CodedFaces(const uint8_t* data, size_t size, uint8_t groups, bool quad_neighbours);
+  // `corners` checks symbol 18's faces against the output's limit (8.1).
+  CodedFaces(const uint8_t* data, size_t size, uint8_t groups, bool quad_neighbours, OtherFaceCorners* corners);
   // 13.5.2's check of the stream's first bytes.
   Status start() const;
   Status face(const GateContext& gate, size_t f, const FaceShapes** shapes, size_t* index) override;
@@ -33,6 +35,7 @@ class CodedFaces final : public FaceSymbolSource {
   Status other_shape();
 
   RangeDecoder range_;
+  OtherFaceCorners* corners_;
   uint64_t bytes_;
   PolygonSymbolModel model_ = kFreshPolygonSymbolModel;
   const FaceShapes fixed_;

@@ -29,4 +29,14 @@ Status OutputBudget::check(uint64_t bytes, const std::string& what) const {
   return Status::Ok();
 }
 
+Status OtherFaceCorners::take(uint64_t degree) {
+  const uint64_t extra = degree - 3;
+  if (extra > corners_left_)
+    return Status(ErrorCode::kLimitExceeded, "CONN: a face of degree " + std::to_string(degree) +
+                                                 ": the corners beyond 3 of the faces of symbol 18 exceed what is left"
+                                                 " of this decoder's limit (DecoderLimits::max_output_bytes, section 8.1)");
+  corners_left_ -= extra;
+  return Status::Ok();
+}
+
 }  // namespace qmc

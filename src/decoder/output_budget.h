@@ -53,10 +53,26 @@ class OutputBudget {
   // Whether `bytes` more would still fit, charging nothing.
   Status check(uint64_t bytes, const std::string& what) const;
   uint64_t used() const { return used_; }
+  uint64_t left() const { return limit_ - used_; }
 
  private:
   uint64_t limit_;
   uint64_t used_ = 0;
+};
+
+// 8.1: the corners beyond 3 of the polygon coder's symbol-18 faces (5.4.3,
+// 5.4.10), virtual ones included, checked at 4 bytes each against what is
+// left of max_output_bytes as soon as each degree is read. Spirale Reversi
+// reserves memory for every corner of a face, and CONN's corners are charged
+// only once all of them are decoded.
+class OtherFaceCorners {
+ public:
+  explicit OtherFaceCorners(uint64_t output_bytes_left) : corners_left_(output_bytes_left / 4) {}
+  // kLimitExceeded when a face of `degree` (>= 3) is more than is left.
+  Status take(uint64_t degree);
+
+ private:
+  uint64_t corners_left_;
 };
 
 }  // namespace qmc

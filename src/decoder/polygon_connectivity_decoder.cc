@@ -18,6 +18,7 @@
 #include "common/quad_codings.h"
 #include "decoder/coded_faces.h"
 #include "decoder/connectivity_errors.h"
+#include "decoder/output_budget.h"
 #include "decoder/polygon_spirale_reversi.h"
 
 namespace qmc {
@@ -74,11 +75,13 @@ Status read_components(BitReader* in, int64_t symbol_bytes, Components* c) {
 }
 
 // Symbol 18's degree and bits (5.4.3).
-Status read_other_shape(BitReader* in, FaceShapes* shapes, std::vector<uint8_t>* scratch) {
+Status read_other_shape(BitReader* in, FaceShapes* shapes, OtherFaceCorners* corners, std::vector<uint8_t>* scratch) {
   uint32_t extra = 0;
   if (Status s = read_ue(in, &extra); !s.ok()) return s;
   const uint64_t d = uint64_t(extra) + 5;
+  if (d > UINT32_MAX) return limit_error("a face of degree " + std::to_string(d) + ", above 2^32 - 1");
   if (d - 2 > in->bits_remaining()) return limit_error("a face of degree " + std::to_string(d) + " cannot fit");
+  if (Status s = corners->take(d); !s.ok()) return s;
   const uint32_t m = uint32_t(d - 2);
   scratch->resize(2 * size_t(m) + 1);
   uint8_t* status = scratch->data();
@@ -101,7 +104,7 @@ Status read_other_shape(BitReader* in, FaceShapes* shapes, std::vector<uint8_t>*
   return Status::Ok();
 }
 
-Status read_mixed_symbols(BitReader* in, uint64_t count, FaceShapes* shapes) {
+Status read_mixed_symbols(BitReader* in, uint64_t count, FaceShapes* shapes, OtherFaceCorners* corners) {
   HuffmanDecoder table[2];
   bool present[2] = {false, false};
   for (int c = 0; c < 2; ++c) {
@@ -118,7 +121,7 @@ Status read_mixed_symbols(BitReader* in, uint64_t count, FaceShapes* shapes) {
     if (in->overrun()) return truncated();
     if (symbol < 0) return symbol_error("invalid face symbol code word");
     if (symbol == kPolygonOtherSymbol) {
-      if (Status s = read_other_shape(in, shapes, &scratch); !s.ok()) return s;
+      if (Status s = read_other_shape(in, shapes, corners, &scratch); !s.ok()) return s;
     } else {
       uint8_t status[2], gaps[3];
       uint32_t gap_count = 0;
@@ -130,10 +133,10 @@ Status read_mixed_symbols(BitReader* in, uint64_t count, FaceShapes* shapes) {
   return Status::Ok();
 }
 
-Status read_symbols(BitReader* in, int coding, uint64_t count, FaceShapes* shapes) {
+Status read_symbols(BitReader* in, int coding, uint64_t count, FaceShapes* shapes, OtherFaceCorners* corners) {
   // count <= the stream's bits (read_components), so this is bounded by the input.
   shapes->reserve(size_t(count));
-  if (coding == kPolygonMixedHuffman) return read_mixed_symbols(in, count, shapes);
+  if (coding == kPolygonMixedHuffman) return read_mixed_symbols(in, count, shapes, corners);
   if (count == 0) return symbol_error("quad codings need at least one face symbol");
   std::vector<uint8_t> types;
   if (Status s = read_quad_stream(QuadCoding(coding), uint32_t(count), in, &types); !s.ok()) return s;
@@ -219,6 +222,7 @@ Status read_loose_faces(BitReader* in, uint32_t vertex_count, Mesh* loose) {
     uint32_t extra = 0;
     if (Status s = read_ue(in, &extra); !s.ok()) return s;
     const uint64_t d = uint64_t(extra) + 3;
+    if (d > UINT32_MAX) return limit_error("a loose face of degree " + std::to_string(d) + ", above 2^32 - 1");
     if (d * uint64_t(w) > in->bits_remaining()) return limit_error("a loose face cannot fit in the stream");
     loose->face_sizes.push_back(uint32_t(d));
     for (uint64_t k = 0; k < d; ++k) {
@@ -299,11 +303,11 @@ Status read_records(BitReader* in, const std::vector<uint32_t>& degree, uint64_t
 
 // Codings 0 .. 5: symbols, records, then Spirale Reversi (5.4.1's order).
 Status decode_stored(BitReader* in, const PolygonHeader& h, uint32_t vertex_count, PolygonSurface* surface,
-                     Records* records, Mesh* loose, Components* components_out) {
+                     Records* records, Mesh* loose, Components* components_out, OtherFaceCorners* corners) {
   Components& components = *components_out;
   if (Status s = read_components(in, -1, &components); !s.ok()) return s;
   FaceShapes shapes;
-  if (Status s = read_symbols(in, h.coding, components.coded, &shapes); !s.ok()) return s;
+  if (Status s = read_symbols(in, h.coding, components.coded, &shapes, corners); !s.ok()) return s;
   // Degrees of the surface faces and N (5.4.7), known before decoding.
   std::vector<uint32_t> degree;
   degree.reserve(components.faces.size() + size_t(components.coded));
@@ -324,7 +328,8 @@ Status decode_stored(BitReader* in, const PolygonHeader& h, uint32_t vertex_coun
 // Codings 7 and 8: components, Spirale Reversi decoding each symbol as it goes,
 // then the records (5.4.10).
 Status decode_context_coded(BitReader* in, const PolygonHeader& h, uint32_t vertex_count, uint32_t face_count,
-                            PolygonSurface* surface, Records* records, Mesh* loose, Components* components_out) {
+                            PolygonSurface* surface, Records* records, Mesh* loose, Components* components_out,
+                            OtherFaceCorners* corners) {
   Components& components = *components_out;
   if (Status s = read_components(in, h.symbol_bytes, &components); !s.ok()) return s;
   // The surface's C + K faces are face_count - L real ones and H virtual
@@ -335,7 +340,7 @@ Status decode_context_coded(BitReader* in, const PolygonHeader& h, uint32_t vert
     return limit_error(std::to_string(surface_faces) + " surface faces for face_count " + std::to_string(face_count) +
                        " and " + std::to_string(in->bits_remaining()) + " bits of records");
   if (h.groups == 0 && components.coded > 0) return symbol_error("face symbols but no symbol group");
-  CodedFaces faces(h.symbols, size_t(h.symbol_bytes), h.groups, h.coding == kPolygonQuadContextCoded);
+  CodedFaces faces(h.symbols, size_t(h.symbol_bytes), h.groups, h.coding == kPolygonQuadContextCoded, corners);
   if (Status s = faces.start(); !s.ok()) return s;
   // 512 (B + 8) faces may be far more than the decisions in the stream
   // actually build before it ends (5.4.10), so only what a well-compressed
@@ -350,7 +355,7 @@ Status decode_context_coded(BitReader* in, const PolygonHeader& h, uint32_t vert
 }  // namespace
 
 Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t vertex_count, uint32_t face_count,
-                                   Mesh* mesh, PolygonConnectivityInfo* info) {
+                                   Mesh* mesh, PolygonConnectivityInfo* info, uint64_t output_bytes_left) {
   ByteReader bytes(data, size);
   PolygonHeader header;
   if (Status s = read_polygon_header(&bytes, &header); !s.ok()) return s;
@@ -360,10 +365,12 @@ Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t ve
   Records records;
   Mesh loose;
   Components components;
+  OtherFaceCorners corners(output_bytes_left);
   const Status decoded = is_context_coding(header.coding)
                              ? decode_context_coded(&in, header, vertex_count, face_count, &surface, &records, &loose,
-                                                    &components)
-                             : decode_stored(&in, header, vertex_count, &surface, &records, &loose, &components);
+                                                    &components, &corners)
+                             : decode_stored(&in, header, vertex_count, &surface, &records, &loose, &components,
+                                             &corners);
   if (!decoded.ok()) return decoded;
   const std::vector<uint32_t>& degree = surface.face_degree;
   std::vector<uint32_t> final;

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "qmc/decoder.h"
 #include "qmc/mesh.h"
 #include "qmc/status.h"
 
@@ -15,8 +16,10 @@ struct PolygonConnectivityInfo {
   uint32_t components = 0, virtual_faces = 0, seams = 0, identifications = 0, loose_faces = 0;
 };
 
-// Decodes the method data that follows the CONN header fields.
+// Decodes the method data that follows the CONN header fields; the faces of
+// symbol 18 may take 4 bytes for each corner beyond 3 from
+// `output_bytes_left` (8.1).
 Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t vertex_count, uint32_t face_count,
-                                   Mesh* mesh, PolygonConnectivityInfo* info);
+                                   Mesh* mesh, PolygonConnectivityInfo* info, uint64_t output_bytes_left = kNoLimit);
 
 }  // namespace qmc

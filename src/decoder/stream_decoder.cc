@@ -197,7 +197,8 @@ Status StreamDecoder::State::handle_connectivity(const uint8_t* payload, uint32_
   if (Status s = check_connectivity_counts(payload, length); !s.ok()) return s;
   QuadConnectivityInfo quad;
   PolygonConnectivityInfo polygon;
-  if (Status s = decode_connectivity(payload, length, &vertex_count, &file.method, &file.mesh, &quad, &polygon);
+  if (Status s = decode_connectivity(payload, length, &vertex_count, &file.method, &file.mesh, &quad, &polygon,
+                                     budget.left());
       !s.ok())
     return s;
   const uint64_t extra_corners = file.mesh.corners.size() - 3 * uint64_t(file.mesh.face_count());
