@@ -62,9 +62,7 @@ Status CodedFaces::other_shape() {
   if (!code_other_degree(&range_, &extra))
     return range_.overrun() ? truncated() : payload_error("face degree code with 32 leading zeros");
   const uint64_t d = uint64_t(extra) + 5;
-  if (d > UINT32_MAX) return limit_error("a face of degree " + std::to_string(d) + ", above 2^32 - 1");
-  if (!range_stream_justifies(d - 2, bytes_)) return limit_error("a face of degree " + std::to_string(d) + " cannot fit");
-  if (Status s = corners_->take(d); !s.ok()) return s;
+  if (Status s = check_other_face(d, range_stream_justifies(d - 2, bytes_), corners_); !s.ok()) return s;
   scratch_.resize(2 * size_t(d - 2) + 1);
   uint8_t* status = scratch_.data();
   uint8_t* gaps = status + (d - 2);

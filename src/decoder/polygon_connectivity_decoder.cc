@@ -22,6 +22,18 @@
 #include "decoder/polygon_spirale_reversi.h"
 
 namespace qmc {
+
+Status check_face_degree(uint64_t d, const char* face) {
+  if (d <= UINT32_MAX) return Status::Ok();
+  return limit_error(std::string(face) + " of degree " + std::to_string(d) + ", above 2^32 - 1");
+}
+
+Status check_other_face(uint64_t d, bool fits, OtherFaceCorners* corners) {
+  if (Status s = check_face_degree(d, "a face"); !s.ok()) return s;
+  if (!fits) return limit_error("a face of degree " + std::to_string(d) + " cannot fit");
+  return corners->take(d);
+}
+
 namespace {
 
 // Faces reserved per byte of codings 7 and 8's symbol stream before decoding it.
@@ -79,9 +91,7 @@ Status read_other_shape(BitReader* in, FaceShapes* shapes, OtherFaceCorners* cor
   uint32_t extra = 0;
   if (Status s = read_ue(in, &extra); !s.ok()) return s;
   const uint64_t d = uint64_t(extra) + 5;
-  if (d > UINT32_MAX) return limit_error("a face of degree " + std::to_string(d) + ", above 2^32 - 1");
-  if (d - 2 > in->bits_remaining()) return limit_error("a face of degree " + std::to_string(d) + " cannot fit");
-  if (Status s = corners->take(d); !s.ok()) return s;
+  if (Status s = check_other_face(d, d - 2 <= in->bits_remaining(), corners); !s.ok()) return s;
   const uint32_t m = uint32_t(d - 2);
   scratch->resize(2 * size_t(m) + 1);
   uint8_t* status = scratch->data();
@@ -222,7 +232,7 @@ Status read_loose_faces(BitReader* in, uint32_t vertex_count, Mesh* loose) {
     uint32_t extra = 0;
     if (Status s = read_ue(in, &extra); !s.ok()) return s;
     const uint64_t d = uint64_t(extra) + 3;
-    if (d > UINT32_MAX) return limit_error("a loose face of degree " + std::to_string(d) + ", above 2^32 - 1");
+    if (Status s = check_face_degree(d, "a loose face"); !s.ok()) return s;
     if (d * uint64_t(w) > in->bits_remaining()) return limit_error("a loose face cannot fit in the stream");
     loose->face_sizes.push_back(uint32_t(d));
     for (uint64_t k = 0; k < d; ++k) {
