@@ -354,6 +354,34 @@ TEST(DecoderLimits, TheCornersOfSymbol18AreCheckedAgainstTheOutputLimitBeforeThe
   EXPECT_EQ(t.message().find("max_output_bytes"), std::string::npos) << t.to_string();
 }
 
+// 8.1: a table of fLBL (16.1) reserves a string (32 bytes) per count before
+// the strings are read; each count is checked at 4 bytes a string against
+// what is left of max_output_bytes first. A million references whose first
+// length is malformed: refused by the limit, not read.
+TEST(DecoderLimits, FaceLabelTablesAreCheckedAgainstTheOutputLimitBeforeTheyAreReserved) {
+  Chunks c = tools::split_chunks(read_vector("valid_flbl_hand_made.qmc"));
+  const size_t labels = tools::find_chunk(c, kChunkFaceLabels);
+  ByteReader old(c[labels].payload.data(), c[labels].payload.size());
+  uint64_t face_count = 0;
+  ASSERT_TRUE(old.get_varint(&face_count));
+  std::vector<uint8_t> payload = varints({face_count});
+  payload.insert(payload.end(), {1, 'g'});
+  const std::vector<uint8_t> count = varints({1000000});
+  payload.insert(payload.end(), count.begin(), count.end());
+  payload.insert(payload.end(), 1000000, 0xFF);
+  c[labels].payload = payload;
+  const std::vector<uint8_t> file = tools::join_chunks(c);
+  DecoderLimits limits;
+  limits.max_output_bytes = 1 << 20;
+  DecodedFile decoded;
+  const Status s = decode(file.data(), file.size(), &decoded, limits);
+  EXPECT_EQ(s.code(), ErrorCode::kLimitExceeded) << s.to_string();
+  EXPECT_NE(s.message().find("max_output_bytes"), std::string::npos) << s.to_string();
+  // Within the limit the table is read, and its first string is cut short.
+  limits.max_output_bytes = 8 << 20;
+  EXPECT_EQ(decode(file.data(), file.size(), &decoded, limits).code(), ErrorCode::kBadChunkPayload);
+}
+
 TEST(DecoderLimits, EmptyInputIsTruncated) {
   DecodedFile decoded;
   EXPECT_EQ(decode(nullptr, 0, &decoded).code(), ErrorCode::kTruncated);

@@ -16,11 +16,15 @@ Status bad(const std::string& label, const std::string& message) {
 }
 
 // A count of strings, each at least its length byte: above the bytes left
-// it cannot be there.
-Status read_strings(ByteReader* in, const std::string& label, const char* what, std::vector<std::string>* out) {
+// it cannot be there. Then 8.1: the strings so far (`earlier` and these) at 4
+// bytes each of the output against what is left of the limit, before the
+// table is reserved (a string takes more memory than it charges).
+Status read_strings(ByteReader* in, const std::string& label, const char* what, uint64_t earlier,
+                    const OutputBudget& budget, std::vector<std::string>* out) {
   uint64_t count = 0;
   if (!in->get_varint(&count) || count > in->remaining())
     return bad(label, std::string(what) + " count missing, malformed or above the bytes left");
+  if (Status s = budget.check(4 * (earlier + count), label); !s.ok()) return s;
   out->resize(size_t(count));
   for (std::string& s : *out) {
     uint64_t length = 0;
@@ -32,8 +36,8 @@ Status read_strings(ByteReader* in, const std::string& label, const char* what, 
   return Status::Ok();
 }
 
-Status read_tables(ByteReader* in, uint64_t face_count, const std::vector<FaceLabels>& earlier, std::string* label,
-                   FaceLabels* out) {
+Status read_tables(ByteReader* in, uint64_t face_count, const std::vector<FaceLabels>& earlier,
+                   const OutputBudget& budget, std::string* label, FaceLabels* out) {
   uint64_t faces = 0;
   if (!in->get_varint(&faces) || faces != face_count)
     return bad(*label, "face_count missing, malformed or not CONN's " + std::to_string(face_count));
@@ -45,8 +49,8 @@ Status read_tables(ByteReader* in, uint64_t face_count, const std::vector<FaceLa
   *label = "fLBL \"" + out->name + "\"";
   for (const FaceLabels& e : earlier)
     if (e.name == out->name) return bad(*label, "a second label of this name");
-  if (Status s = read_strings(in, *label, "references", &out->references); !s.ok()) return s;
-  return read_strings(in, *label, "values", &out->values);
+  if (Status s = read_strings(in, *label, "references", 0, budget, &out->references); !s.ok()) return s;
+  return read_strings(in, *label, "values", out->references.size(), budget, &out->values);
 }
 
 }  // namespace
@@ -63,14 +67,13 @@ Status decode_face_labels(const uint8_t* payload, size_t size, uint64_t face_cou
   *out = FaceLabels{};
   ByteReader in(payload, size);
   std::string label = "fLBL";
-  if (Status s = read_tables(&in, face_count, earlier, &label, out); !s.ok()) return s;
+  if (Status s = read_tables(&in, face_count, earlier, *budget, &label, out); !s.ok()) return s;
   if (!range_stream_justifies(face_count, in.remaining()))
     return Status(ErrorCode::kLimitExceeded, label + ": " + std::to_string(face_count) + " faces for " +
                                                  std::to_string(in.remaining()) +
                                                  " stream bytes, above 512 (L + 8) (section 16.2)");
-  FaceLabels sized = *out;
-  sized.face_values.clear();
-  if (Status s = budget->charge(face_label_output_bytes(sized) + 4 * face_count, label); !s.ok()) return s;
+  // The tables alone so far (face_values is still empty): no copy of them.
+  if (Status s = budget->charge(face_label_output_bytes(*out) + 4 * face_count, label); !s.ok()) return s;
   RangeDecoder rc(in.cursor(), in.remaining());
   if (rc.bad_start())
     return Status(ErrorCode::kBadChunkPayload, label + ": the stream starts with 0xFFFFFFFF (section 13.5.2)");
