@@ -11,36 +11,23 @@
 #include <vector>
 
 #include "chunk_list.h"
-#include "common/bit_writer.h"
-#include "common/byte_io.h"
-#include "common/polygon_symbol_coding.h"
-#include "common/range_coder.h"
+#include "polygon_payloads.h"
 #include "qmc/format.h"
 
 namespace {
 
-std::vector<uint8_t> one_face_symbols(uint64_t d) {
-  qmc::RangeEncoder range;
-  qmc::PolygonSymbolModel model;
-  model.groups = qmc::kGroupOther;  // the only group: symbol 18 costs no decision
-  uint32_t extra = uint32_t(d - 5);
-  qmc::code_other_degree(&range, &extra);
-  std::vector<uint8_t> anchors(d - 2, 1), edges(d - 1, 1);
-  qmc::code_other_shape(&range, &model, uint32_t(d - 2), anchors.data(), edges.data());
-  return range.finish();
-}
-
 std::vector<uint8_t> conn_payload(uint64_t d) {
-  const std::vector<uint8_t> symbols = one_face_symbols(d);
-  std::vector<uint8_t> conn{uint8_t(qmc::ConnectivityMethod::kPolygon), 8, 2, 0, qmc::kPolygonContextCoded,
-                            qmc::kGroupOther};  // V 8, F 2, flags, coding 7, groups
-  qmc::put_varint(&conn, symbols.size());
-  conn.insert(conn.end(), symbols.begin(), symbols.end());
-  qmc::BitWriter stream;
-  for (uint32_t v : {1, 0, 2, 0, 0, 0, 0}) stream.write_exp_golomb(v);  // C = 1, n - 2, d - 3, H, S, I, L
-  const std::vector<uint8_t> bits = stream.finish();
-  conn.insert(conn.end(), bits.begin(), bits.end());
-  return conn;
+  // Symbol 18 is the only group, so it costs no decision.
+  const std::vector<uint8_t> symbols =
+      qmc::tools::coding7_symbols(qmc::kGroupOther, [d](qmc::RangeEncoder* range, qmc::PolygonSymbolModel* model) {
+        uint32_t extra = uint32_t(d - 5);
+        qmc::code_other_degree(range, &extra);
+        std::vector<uint8_t> anchors(d - 2, 1), edges(d - 1, 1);
+        qmc::code_other_shape(range, model, uint32_t(d - 2), anchors.data(), edges.data());
+      });
+  return qmc::tools::coding7_conn(8, 2, qmc::kGroupOther, symbols, [](qmc::BitWriter* stream) {
+    for (uint32_t v : {1, 0, 2, 0, 0, 0, 0}) stream->write_exp_golomb(v);  // C = 1, n - 2, d - 3, H, S, I, L
+  });
 }
 
 }  // namespace

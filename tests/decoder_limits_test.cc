@@ -12,11 +12,9 @@
 #include <fstream>
 #include <iterator>
 
-#include "common/bit_writer.h"
 #include "common/byte_io.h"
-#include "common/polygon_symbol_coding.h"
-#include "common/range_coder.h"
 #include "chunk_list.h"
+#include "polygon_payloads.h"
 #include "decoder/output_budget.h"
 #include "qmc/decoder.h"
 #include "qmc/encoder.h"
@@ -262,28 +260,16 @@ TEST(DecoderLimits, PeekReadsTheCountsOfAProgressiveFileWithoutDecoding) {
   EXPECT_EQ(peek(bad.data(), bad.size(), &summary).code(), ErrorCode::kBadSignature);
 }
 
-// Issue 12 item 5: an empty input is truncated, with no null pointer handed
-// to memcmp (UBSan flags that).
 // A file of QHDR 1.18, a CONN of polygon coding 7 (5.4.10) and QEND: the
 // face symbols `code_symbols` codes, then the Exp-Golomb fields of the
 // stream (components, then the records H, S, I, L and the loose faces).
 std::vector<uint8_t> coding7_file(uint8_t groups, uint32_t faces,
                                   const std::function<void(RangeEncoder*, PolygonSymbolModel*)>& code_symbols,
                                   const std::vector<uint32_t>& stream_fields) {
-  RangeEncoder range;
-  PolygonSymbolModel model;
-  model.groups = groups;
-  code_symbols(&range, &model);
-  const std::vector<uint8_t> symbols = range.finish();
-  std::vector<uint8_t> conn{uint8_t(ConnectivityMethod::kPolygon), 8};
-  put_varint(&conn, faces);
-  conn.insert(conn.end(), {0, kPolygonContextCoded, groups});
-  put_varint(&conn, symbols.size());
-  conn.insert(conn.end(), symbols.begin(), symbols.end());
-  BitWriter stream;
-  for (uint32_t v : stream_fields) stream.write_exp_golomb(v);
-  const std::vector<uint8_t> bits = stream.finish();
-  conn.insert(conn.end(), bits.begin(), bits.end());
+  const std::vector<uint8_t> conn =
+      tools::coding7_conn(8, faces, groups, tools::coding7_symbols(groups, code_symbols), [&](BitWriter* b) {
+        for (uint32_t v : stream_fields) b->write_exp_golomb(v);
+      });
   return tools::join_chunks({Chunk{kChunkHeader, {1, 18}}, Chunk{kChunkConnectivity, conn}, Chunk{kChunkEnd, {}}});
 }
 
@@ -382,6 +368,8 @@ TEST(DecoderLimits, FaceLabelTablesAreCheckedAgainstTheOutputLimitBeforeTheyAreR
   EXPECT_EQ(decode(file.data(), file.size(), &decoded, limits).code(), ErrorCode::kBadChunkPayload);
 }
 
+// Issue 12 item 5: an empty input is truncated, with no null pointer handed
+// to memcmp (UBSan flags that).
 TEST(DecoderLimits, EmptyInputIsTruncated) {
   DecodedFile decoded;
   EXPECT_EQ(decode(nullptr, 0, &decoded).code(), ErrorCode::kTruncated);

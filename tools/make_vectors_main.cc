@@ -35,6 +35,7 @@
 #include "encoder/position_encoder.h"
 #include "chunk_list.h"
 #include "mesh_generators.h"
+#include "polygon_payloads.h"
 #include "quad_disk_generator.h"
 #include "random_polygon_mesh.h"
 #include "decoder/connectivity_decoder.h"
@@ -1716,36 +1717,8 @@ void write_predicted_position_errors(VectorWriter* w) {
 
 // Section 5.4.10 (format 1.6): polygon coding 7, the face symbols range
 // coded in the contexts of Spirale Reversi's gate.
-std::vector<uint8_t> coding7_conn(uint32_t vertices, uint32_t faces, uint8_t groups, const std::vector<uint8_t>& symbols,
-                                  const std::function<void(qmc::BitWriter*)>& stream, uint64_t length_extra = 0,
-                                  int coding = qmc::kPolygonContextCoded) {
-  std::vector<uint8_t> p{uint8_t(qmc::ConnectivityMethod::kPolygon)};
-  qmc::put_varint(&p, vertices);
-  qmc::put_varint(&p, faces);
-  p.push_back(0);
-  p.push_back(uint8_t(coding));
-  p.push_back(groups);
-  qmc::put_varint(&p, symbols.size() + length_extra);
-  p.insert(p.end(), symbols.begin(), symbols.end());
-  qmc::BitWriter bits;
-  stream(&bits);
-  const std::vector<uint8_t> raw = bits.finish();
-  p.insert(p.end(), raw.begin(), raw.end());
-  return p;
-}
-
-// A hand-made symbol stream: `body` codes decisions with the model of 5.4.10
-// (coding 8's with quad_neighbours).
-std::vector<uint8_t> coding7_symbols(uint8_t groups,
-                                     const std::function<void(qmc::RangeEncoder*, qmc::PolygonSymbolModel*)>& body,
-                                     bool quad_neighbours = false) {
-  qmc::RangeEncoder range;
-  qmc::PolygonSymbolModel model;
-  model.groups = groups;
-  model.quad_neighbours = quad_neighbours;
-  body(&range, &model);
-  return range.finish();
-}
+using qmc::tools::coding7_conn;
+using qmc::tools::coding7_symbols;
 
 // One component of n - 2 = `faces_minus_2`, first degree d - 3, then the
 // records H, S, I, L all 0.

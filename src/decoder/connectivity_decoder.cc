@@ -26,7 +26,7 @@ Status read_connectivity_header(const uint8_t* payload, size_t size, uint8_t* me
 
 Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex_count,
                            ConnectivityMethod* method, Mesh* mesh, QuadConnectivityInfo* quad_info,
-                           PolygonConnectivityInfo* polygon_info, uint64_t output_bytes_left) {
+                           PolygonConnectivityInfo* polygon_info, const OutputBudget* budget) {
   uint8_t method_id = 0;
   uint64_t vertices = 0, faces = 0;
   size_t start = 0;
@@ -38,7 +38,7 @@ Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex
   } else if (method_id == uint8_t(ConnectivityMethod::kPolygon)) {
     PolygonConnectivityInfo polygon;
     s = decode_polygon_connectivity(in.cursor(), in.remaining(), uint32_t(vertices), uint32_t(faces), mesh, &polygon,
-                                    output_bytes_left);
+                                    budget);
     if (polygon_info) *polygon_info = polygon;
   } else {
     QuadConnectivityInfo quad;

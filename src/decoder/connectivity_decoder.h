@@ -4,7 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "qmc/decoder.h"
+#include "decoder/output_budget.h"
 #include "qmc/format.h"
 #include "qmc/mesh.h"
 #include "decoder/polygon_connectivity_decoder.h"
@@ -20,10 +20,10 @@ Status read_connectivity_header(const uint8_t* payload, size_t size, uint8_t* me
 
 // Decodes a CONN payload into mesh->face_sizes / mesh->corners. For method
 // 1, `quad` (if given) receives the flags and coding; for method 2,
-// `polygon` its coding and record counts. `output_bytes_left`: what is left
-// of DecoderLimits::max_output_bytes for method 2's faces of symbol 18 (8.1).
+// `polygon` its coding and record counts. `budget` (if given): the output
+// charged so far, against which method 2's faces of symbol 18 are checked (8.1).
 Status decode_connectivity(const uint8_t* payload, size_t size, uint32_t* vertex_count,
                            ConnectivityMethod* method, Mesh* mesh, QuadConnectivityInfo* quad = nullptr,
-                           PolygonConnectivityInfo* polygon = nullptr, uint64_t output_bytes_left = kNoLimit);
+                           PolygonConnectivityInfo* polygon = nullptr, const OutputBudget* budget = nullptr);
 
 }  // namespace qmc

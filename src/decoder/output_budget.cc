@@ -30,13 +30,13 @@ Status OutputBudget::check(uint64_t bytes, const std::string& what) const {
 }
 
 Status OtherFaceCorners::take(uint64_t degree) {
-  const uint64_t extra = degree - 3;
-  if (extra > corners_left_)
-    return Status(ErrorCode::kLimitExceeded, "CONN: a face of degree " + std::to_string(degree) +
-                                                 ": the corners beyond 3 of the faces of symbol 18 exceed what is left"
-                                                 " of this decoder's limit (DecoderLimits::max_output_bytes, section 8.1)");
-  corners_left_ -= extra;
-  return Status::Ok();
+  if (budget_ == nullptr) return Status::Ok();
+  // Every d - 2 is justified by the chunk's bits (5.4.3) or 512 per byte of
+  // its symbols (5.4.10), and a chunk is below 2^31 bytes: 4 corners_ < 2^44.
+  corners_ += degree - 3;
+  if (4 * corners_ <= budget_->left()) return Status::Ok();
+  return budget_->check(4 * corners_, "CONN: a face of degree " + std::to_string(degree) +
+                                          ", with the corners beyond 3 of the faces of symbol 18 before it");
 }
 
 }  // namespace qmc

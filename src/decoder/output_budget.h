@@ -65,14 +65,17 @@ class OutputBudget {
 // left of max_output_bytes as soon as each degree is read. Spirale Reversi
 // reserves memory for every corner of a face, and CONN's corners are charged
 // only once all of them are decoded.
+// Without a budget (a component decoded on its own) nothing is checked.
 class OtherFaceCorners {
  public:
-  explicit OtherFaceCorners(uint64_t output_bytes_left) : corners_left_(output_bytes_left / 4) {}
-  // kLimitExceeded when a face of `degree` (>= 3) is more than is left.
+  explicit OtherFaceCorners(const OutputBudget* budget) : budget_(budget) {}
+  // kLimitExceeded when the corners of a face of `degree` (>= 3), with those
+  // taken before, are more than is left.
   Status take(uint64_t degree);
 
  private:
-  uint64_t corners_left_;
+  const OutputBudget* budget_;
+  uint64_t corners_ = 0;
 };
 
 }  // namespace qmc

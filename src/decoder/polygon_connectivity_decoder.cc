@@ -365,7 +365,7 @@ Status decode_context_coded(BitReader* in, const PolygonHeader& h, uint32_t vert
 }  // namespace
 
 Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t vertex_count, uint32_t face_count,
-                                   Mesh* mesh, PolygonConnectivityInfo* info, uint64_t output_bytes_left) {
+                                   Mesh* mesh, PolygonConnectivityInfo* info, const OutputBudget* budget) {
   ByteReader bytes(data, size);
   PolygonHeader header;
   if (Status s = read_polygon_header(&bytes, &header); !s.ok()) return s;
@@ -375,7 +375,7 @@ Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t ve
   Records records;
   Mesh loose;
   Components components;
-  OtherFaceCorners corners(output_bytes_left);
+  OtherFaceCorners corners(budget);
   const Status decoded = is_context_coding(header.coding)
                              ? decode_context_coded(&in, header, vertex_count, face_count, &surface, &records, &loose,
                                                     &components, &corners)

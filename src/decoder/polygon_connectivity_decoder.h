@@ -5,7 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "qmc/decoder.h"
+#include "decoder/output_budget.h"
 #include "qmc/mesh.h"
 #include "qmc/status.h"
 
@@ -17,9 +17,9 @@ struct PolygonConnectivityInfo {
 };
 
 // Decodes the method data that follows the CONN header fields; the faces of
-// symbol 18 may take 4 bytes for each corner beyond 3 from
-// `output_bytes_left` (8.1).
+// symbol 18 are checked at 4 bytes a corner beyond 3 against `budget`, if
+// given (8.1).
 Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t vertex_count, uint32_t face_count,
-                                   Mesh* mesh, PolygonConnectivityInfo* info, uint64_t output_bytes_left = kNoLimit);
+                                   Mesh* mesh, PolygonConnectivityInfo* info, const OutputBudget* budget = nullptr);
 
 }  // namespace qmc

@@ -198,7 +198,7 @@ Status StreamDecoder::State::handle_connectivity(const uint8_t* payload, uint32_
   QuadConnectivityInfo quad;
   PolygonConnectivityInfo polygon;
   if (Status s = decode_connectivity(payload, length, &vertex_count, &file.method, &file.mesh, &quad, &polygon,
-                                     budget.left());
+                                     &budget);
       !s.ok())
     return s;
   const uint64_t extra_corners = file.mesh.corners.size() - 3 * uint64_t(file.mesh.face_count());
