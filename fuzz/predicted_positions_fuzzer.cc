@@ -1,11 +1,13 @@
 // libFuzzer target: a POSN payload (spec sections 6 and 14) against the faces
 // of a CONN payload in the same input: u16le length of the CONN payload, the
-// CONN payload, then the POSN payload. Methods 1 and 3 - 9 predict every
-// vertex from those faces (14.2-14.3; methods 4 - 9 in 14.6's order,
+// CONN payload, then the POSN payload. Methods 1 and 3 - 14 predict every
+// vertex from those faces (14.2-14.3; methods 4 - 14 in 14.6's order,
 // renamed; 5 and 7 with 14.7's twist of quads; 6 and 7 with 14.8's contexts
-// of the candidate decisions; 8 and 9 with the features their byte names,
-// 14.9's twist of triangles and its learnt weight among them; 9 with 14.10's
-// mirror candidate, its plane any the payload states),
+// of the candidate decisions; 8 - 14 with the features their byte names,
+// 14.9's twist of triangles and its learnt weight among them; 9 - 14 with
+// 14.10's mirror candidate, its plane any the payload states; 11 - 14 with
+// 14.12's shear, 12 - 14 with 14.13's edges, 13 and 14 with 14.14's
+// classes per axis, 14 on 14.15's lattice, its factor any the payload states),
 // so any face list CONN accepts, degenerate faces and unreferenced vertices
 // included, reaches the predictor. Accepted
 // values must lie on the grid the payload declares, every output coordinate

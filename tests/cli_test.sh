@@ -119,7 +119,7 @@ for vector in "$vectors"/invalid_*.qmc; do
 done
 if [ -z "$info_crashed" ]; then passed=$((passed + 1)); else
   failed=$((failed + 1)); echo "FAIL info-invalid-vectors:$info_crashed"; fi
-check format-1.19-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f119.qmc" --format 1.19
+check format-1.20-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f120.qmc" --format 1.20
 # Spec 14.13: an open grid of quads, whose boundary the geometry order walks first, takes POSN method 12
 # (format 1.16); --format 1.15 keeps method 11 or below, in a larger file.
 "$meshgen" grid 24 16 "$work/grid.obj" >/dev/null
@@ -155,6 +155,22 @@ contains format-1.17-torus-coding-7 "$work/out" "polygon coder (spec 5.4), codin
 contains format-1.17-torus-no-1.18 "$work/out" 'format 1\.\([4-9]\|1[0-7]\)$'
 smaller format-1.18-smaller "$work/f118.qmc" "$work/f117t.qmc" "coding 8's file is not smaller than the 1.17 file"
 check verify-coding-8 0 "$qmc" verify "$work/torus.obj" "$work/f118.qmc"
+# Spec 14.15: --surface-lattice K writes POSN method 14 (format 1.19), smaller than the grid's file;
+# verify allows K steps per axis and says so; --format 1.18, a progressive file and K outside 2..16 refuse it.
+"$meshgen" jittered-sphere 4 5 "$work/lattice.obj" >/dev/null
+check lattice-grid 0 "$qmc" encode "$work/lattice.obj" "$work/lattice1.qmc" --quiet
+check lattice-4 0 "$qmc" encode "$work/lattice.obj" "$work/lattice4.qmc" --surface-lattice 4
+contains lattice-4-report "$work/out" "method 14: geometry order.*surface lattice of 4 steps"
+check lattice-4-info 0 "$qmc" info "$work/lattice4.qmc"
+contains lattice-4-written "$work/out" "format 1.19"
+contains lattice-4-info-method "$work/out" "method 14: .*surface lattice of 4 steps"
+smaller lattice-4-smaller "$work/lattice4.qmc" "$work/lattice1.qmc" "the lattice's file is not smaller than the grid's"
+check lattice-4-verify 0 "$qmc" verify "$work/lattice.obj" "$work/lattice4.qmc"
+contains lattice-4-verify-bound "$work/out" "within 4 quantization steps per axis"
+check lattice-4-not-1.18 2 "$qmc" encode "$work/lattice.obj" "$work/lattice18.qmc" --surface-lattice 4 --format 1.18
+contains lattice-4-not-1.18-says "$work/err" "needs --format 1.19"
+check lattice-17-refused 2 "$qmc" encode "$work/lattice.obj" "$work/lattice17.qmc" --surface-lattice 17
+check lattice-progressive-refused 2 "$qmc" encode "$work/lattice.obj" "$work/latticep.qmc" --surface-lattice 4 --progressive
 # Spec 14.12: an irregular triangulation takes POSN method 11 (format 1.15); --format 1.14 keeps method 10 or below.
 "$meshgen" jittered-sphere 3 11 "$work/jittered.obj" >/dev/null
 check format-1.15 0 "$qmc" encode "$work/jittered.obj" "$work/f115.qmc" --quiet --format 1.16
@@ -205,9 +221,9 @@ check soup-encode 0 "$qmc" encode "$work/soup.off" "$work/soup.qmc" -q 16 --text
 check soup-verify 0 "$qmc" verify "$work/soup.off" "$work/soup.qmc"
 check verify-wrong-mesh 1 "$qmc" verify "$work/soup.off" "$work/torus.qmc"
 check help 0 "$qmc" --help
-contains help-version "$work/out" "format version 1.18, spec/qmc-format.md"
+contains help-version "$work/out" "format version 1.19, spec/qmc-format.md"
 check version 0 "$qmc" --version
-contains version-format "$work/out" "(format 1.18)"
+contains version-format "$work/out" "(format 1.19)"
 check encode-help 0 "$qmc" encode --help
 contains help-default-bits "$work/out" "1/4096"
 check no-args 2 "$qmc"
@@ -404,7 +420,7 @@ check decode-groups-off-refused 3 "$qmc" decode "$work/groups.qmc" "$work/groups
 { echo "v 0 0 0 1 0 0"; echo "v 1 0 0 0 1 0"; echo "v 0 1 0 0 0 1 1"; echo "f 1 2 3"; echo "l 1 2"; } >"$work/colours.obj"
 check encode-colours-refused 3 "$qmc" encode "$work/colours.obj" "$work/colours.qmc"
 contains encode-colours-refused-names-flag "$work/err" "pass --drop-unsupported"
-contains encode-colours-refused-names-format "$work/err" "holds what format 1.18 cannot carry yet"
+contains encode-colours-refused-names-format "$work/err" "holds what format 1.19 cannot carry yet"
 contains encode-colours-refused-colours "$work/err" "  ignored per-vertex colours on v lines of 7 numbers: 1"
 contains encode-colours-refused-partial "$work/err" "  ignored per-vertex colours on v lines: only 2 of 3 vertices have one"
 check encode-colours-refused-no-output 0 test ! -e "$work/colours.qmc"

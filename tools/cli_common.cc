@@ -165,7 +165,7 @@ double max_quantization_step(const QuantizationInfo& q) {
   return std::max({q.step[0], q.step[1], q.step[2]});
 }
 
-std::string position_method_traits(int method, int features, int mirror, int shear) {
+std::string position_method_traits(int method, int features, int mirror, int shear, int lattice) {
   if (method < 4) return "";
   std::string traits = ": geometry order";
   if (features & kQuadTwistFeature) traits += ", quads' twist";
@@ -175,7 +175,8 @@ std::string position_method_traits(int method, int features, int mirror, int she
   if (mirror == 2) traits += ", mirror images a step away";
   if (shear > 0) traits += ", parallelograms sheared by " + std::to_string(shear) + "/16";
   if (method >= 12) traits += ", edges extrapolated";
-  if (method == 13) traits += ", class probabilities per axis";
+  if (method >= 13) traits += ", class probabilities per axis";
+  if (lattice > 1) traits += ", surface lattice of " + std::to_string(lattice) + " steps";
   return traits;
 }
 

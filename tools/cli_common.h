@@ -86,7 +86,7 @@ double max_quantization_step(const QuantizationInfo& q);
 // What a predicted POSN method (section 14.1) adds to method 1: "" for 1
 // and 3, else ": geometry order" and the additions its features name
 // (14.7 - 14.9; methods 5 - 7 have the features their selector implies).
-std::string position_method_traits(int method, int features, int mirror, int shear);
+std::string position_method_traits(int method, int features, int mirror, int shear, int lattice = 1);
 
 std::string human_bytes(uint64_t bytes);
 

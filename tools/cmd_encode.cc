@@ -39,6 +39,12 @@ const char kHelp[] =
     "  --max-error E       the coarsest uniform grid that keeps every vertex\n"
     "                      within distance E (model units) of its input, binary32\n"
     "                      rounding included; instead of --bits\n"
+    "  --surface-lattice K positions keep the grid's step along the axis nearest\n"
+    "                      the surface's normal and take steps of K (2..16)\n"
+    "                      along the other two (POSN method 14, spec 14.15):\n"
+    "                      smaller files at the same distance between the\n"
+    "                      surfaces, but a vertex may move up to K steps per\n"
+    "                      axis along the surface (verify allows that)\n"
     "  --positions M       auto (default): predicted positions (spec 14), or on\n"
     "                      the per-axis grid the smaller of them and deltas;\n"
     "                      predicted; deltas: spec 6's deltas (--grid per-axis)\n"
@@ -104,6 +110,7 @@ const char kHelp[] =
     "  --gim-store-blank   also code the samples of blank pixels (smooth planes\n"
     "                      for image tools, at some cost in bytes)\n"
     "  --format 1.N        write nothing that decoders older than 1.N cannot read:\n"
+    "                      1.18 has no --surface-lattice (POSN method 14),\n"
     "                      1.17 codes quads in the gate's context alone (polygon\n"
     "                      coding 7, not 8), 1.16 also\n"
     "                      codes the three axes' classes with one set of\n"
@@ -128,7 +135,7 @@ const char kHelp[] =
     "                      (method 1 or 3, not 4) and attribute values with\n"
     "                      coding 0 (not 4), 1.6 as method 1 only, 1.5\n"
     "                      also leaves out polygon coding 7, 1.4 also predicted\n"
-    "                      positions (deltas on the per-axis grid); default 1.18\n"
+    "                      positions (deltas on the per-axis grid); default 1.19\n"
     "  --uv-bits N         texture coordinates (spec 15) on a grid of 2^N - 1 steps\n"
     "                      over their range (default 12: 1/4 texel of a 1024\n"
     "                      texture)\n"
@@ -173,7 +180,7 @@ const CommandSpec kSpec{"encode",
                         {"--quiet", "--allow-empty", "--drop-unsupported", "--keep-order", "--progressive", "--topology-preserving",
                          "--gim-float", "--gim-quads", "--gim-store-blank", "--gim-normals", "--exact-attributes"},
                         {{"--bits", "-q"}, {"--text"}, {"--connectivity"}, {"--levels"}, {"--gim"}, {"--sampling"},
-                         {"--roi"}, {"--grid"}, {"--step"}, {"--max-error"}, {"--positions"}, {"--format"},
+                         {"--roi"}, {"--grid"}, {"--step"}, {"--max-error"}, {"--surface-lattice"}, {"--positions"}, {"--format"},
                          {"--uv-bits"}, {"--normal-bits"}, {"--color-bits"}, {"--drop"},
                          {"--finest-step-scale"}, {"--target-error"}, {"--target-hausdorff"}, {"--max-bytes"},
                          {"--max-deviation"}},
@@ -239,6 +246,11 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
     } else if (name == "--max-error") {
       if (!parse_length(value, &o.max_position_error))
         return usage_error("encode", "--max-error takes a number > 0 in model units, got '" + value + "'");
+    } else if (name == "--surface-lattice") {
+      long k = 0;
+      if (!parse_int(value, 2, 16, &k))
+        return usage_error("encode", "--surface-lattice takes a factor 2..16 (spec 14.15), got '" + value + "'");
+      o.surface_lattice = int(k);
     } else if (name == "--positions") {
       if (value == "auto") o.position_method = PositionMethod::kAuto;
       else if (value == "deltas") o.position_method = PositionMethod::kDeltas;
@@ -256,6 +268,12 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
     return usage_error("encode", "--grid, --step and --max-error are for plain files: a progressive base takes "
                                  "--bits on spec 6.1's grid, a geometry image its own planes");
   if (grids > 1) return usage_error("encode", "give one of --bits/--grid, --step or --max-error");
+  if (o.surface_lattice > 1 && (args->progressive || args->options.gim.size > 0))
+    return usage_error("encode", "--surface-lattice (POSN method 14) is for plain files, not progressive ones or "
+                                 "geometry images");
+  if (o.surface_lattice > 1 && (o.position_method == PositionMethod::kDeltas || !o.geometry_order))
+    return usage_error("encode", "--surface-lattice (POSN method 14) needs predicted positions in the geometry "
+                                 "order");
   if (o.position_method == PositionMethod::kDeltas && !args->progressive &&
       (o.position_grid != PositionGrid::kPerAxis || o.position_step > 0 || o.max_position_error > 0))
     return usage_error("encode", "--positions deltas (spec 6) carries only the grid of --grid per-axis");
@@ -266,6 +284,8 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
 // error naming the option that needs a newer version.
 int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   EncodeOptions& o = args->options;
+  if (args->newest_minor >= 19) return -1;
+  if (o.surface_lattice > 1) return usage_error("encode", "--surface-lattice (POSN method 14, spec 14.15) needs --format 1.19");
   if (args->newest_minor >= 18) return -1;
   o.polygon_quad_contexts = false;  // CONN coding 8 (5.4.10) came with 1.18
   if (args->newest_minor >= 17) return -1;
@@ -358,12 +378,14 @@ int parse(int argc, char** argv, EncodeArgs* args) {
   if (int rc = parse_positions(cl, args); rc >= 0) return rc;
   for (const auto& [name, value] : cl.options) {
     if (name == "--gim" || name == "--sampling" || name == "--roi") continue;  // parse_gim
-    if (name == "--grid" || name == "--step" || name == "--max-error" || name == "--positions") continue;
+    if (name == "--grid" || name == "--step" || name == "--max-error" || name == "--positions" ||
+        name == "--surface-lattice")
+      continue;
     if (name == "--format") {
       long minor = 0;
       if (value.compare(0, 2, "1.") != 0 || !parse_int(value.substr(2), kOldestTargetMinor, kNewestMinor, &minor) ||
           value.substr(2) != std::to_string(minor))
-        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 1.10, 1.11, 1.12, 1.13, 1.14, 1.15, 1.16, 1.17 or 1.18, got '" +
+        return usage_error("encode", "--format takes 1.4, 1.5, 1.6, 1.7, 1.8, 1.9, 1.10, 1.11, 1.12, 1.13, 1.14, 1.15, 1.16, 1.17, 1.18 or 1.19, got '" +
                                          value + "'");
       args->newest_minor = int(minor);
       continue;
@@ -490,7 +512,7 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
   const PositionStats& ps = stats.positions;
   const std::string positions_method =
       ps.method == 0 ? "deltas (spec 6)"
-                     : "predicted (spec 14, method " + std::to_string(ps.method) + position_method_traits(ps.method, ps.features, ps.mirror, ps.shear) +
+                     : "predicted (spec 14, method " + std::to_string(ps.method) + position_method_traits(ps.method, ps.features, ps.mirror, ps.shear, ps.lattice) +
                            (ps.graded_start ? (ps.method >= 4 ? ", graded start" : ": graded start") : "") + ")";
   std::printf("positions   %s, %s grid, step %.6g%s; bound %.6g, max error %.6g (%.3g of largest bbox side), "
               "rms %.6g\n",
@@ -498,6 +520,12 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
               ps.step[0] == ps.step[1] && ps.step[1] == ps.step[2] ? "uniform" : "per-axis", ps.step[0],
               ps.step[0] == ps.step[1] && ps.step[1] == ps.step[2] ? "" : " (x)", ps.error_bound, check.max_error,
               check.max_error / side, check.rms_error);
+  if (ps.lattice_payload_bytes > 0)
+    std::printf("             surface lattice of %d steps (spec 14.15): %s; its POSN payload %llu bytes, the grid's %llu\n",
+                args.options.surface_lattice,
+                ps.lattice > 1 ? "kept" : "not kept, the grid's is smaller (and nearer the input)",
+                static_cast<unsigned long long>(ps.lattice_payload_bytes),
+                static_cast<unsigned long long>(ps.grid_payload_bytes));
   if (ps.method >= 1) {
     static const char* const kKinds[5] = {"previous vertex", "neighbour mean", "one rule", "several rules",
                                          "mirror"};

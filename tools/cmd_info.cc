@@ -48,14 +48,17 @@ std::string order_description(uint8_t flags) {
 void print_predicted_positions(const DecodedFile& f, bool decoded) {
   const QuantizationInfo& q = f.quantization;
   const bool uniform = q.step[0] == q.step[1] && q.step[1] == q.step[2];
-  const double bound = 0.5 * std::sqrt(q.step[0] * q.step[0] + q.step[1] * q.step[1] + q.step[2] * q.step[2]);
+  // 14.1: half a step per axis; 14.15's lattice: the encoder's k steps.
+  const double within = q.lattice > 1 ? double(q.lattice) : 0.5;
+  const double bound = within * std::sqrt(q.step[0] * q.step[0] + q.step[1] * q.step[1] + q.step[2] * q.step[2]);
   std::printf("positions    predicted (spec 14, method %d%s%s), %s grid, step %.9g", q.method,
-              position_method_traits(q.method, q.features, q.mirror_axis < 0 ? 0 : q.near_images ? 2 : 1, q.shear).c_str(), q.graded_start ? ": graded start" : "",
+              position_method_traits(q.method, q.features, q.mirror_axis < 0 ? 0 : q.near_images ? 2 : 1, q.shear, q.lattice).c_str(), q.graded_start ? ": graded start" : "",
               uniform ? "uniform" : "per-axis", q.step[0]);
   if (!uniform) std::printf(" %.9g %.9g", q.step[1], q.step[2]);
   std::printf(", tops %u %u %u, origin (%g %g %g); error bound %.6g\n", q.top[0], q.top[1], q.top[2], q.min[0],
               q.min[1], q.min[2], bound);
   if (!decoded || f.order_restored || f.loop_level_count > 0) return;  // faces no longer in the coder's order
+  if (q.lattice > 1) return;  // 14.15: where the encoder placed a vertex depended on its input, not kept
   QuantizedPositions grid;
   grid.min = q.min;
   grid.step = q.step;
@@ -191,6 +194,8 @@ void print_json(const std::string& path, const DecodedFile& f, uint64_t size, co
               f.quantization.mirror_sum);
   // Spec 14.12's shear weight k (method 11), or 0.
   std::printf("\"position_shear\":%d,", f.quantization.shear);
+  // Spec 14.15's lattice factor k (method 14), or 1.
+  std::printf("\"position_lattice\":%d,", f.quantization.lattice);
   std::printf("\"order_restored\":%s,\"order_flags\":%u,", f.order_restored ? "true" : "false", f.order_flags);
   std::printf("\"loop_levels\":%u,\"levels\":[", f.loop_level_count);
   for (size_t j = 0; j < f.levels.size(); ++j) {

@@ -14,7 +14,8 @@ static const char kVerifyHelp[] =
     "\n"
     "Decodes OUT.qmc and checks it against IN: the same faces after the vertex\n"
     "relabelling of spec section 5.2.1, every coordinate within half a\n"
-    "quantization step, and every attribute (spec 15: texture coordinates,\n"
+    "quantization step (k steps on POSN method 14's surface lattice of factor\n"
+    "k, spec 14.15), and every attribute (spec 15: texture coordinates,\n"
     "normals) at every corner within half its step, or bit for bit if exact. A file with an oRDR chunk (qmc encode --keep-order,\n"
     "spec 4.5) must match IN exactly in IN's order: vertex order, face order and\n"
     "each face's first corner. Exit 0 if both hold, 1 if not, 3 on unreadable input.\n"
@@ -54,9 +55,12 @@ int run_verify(int argc, char** argv) {
   for (size_t i = 0; r.faces_equal && i < decoded.mesh.face_labels.size(); ++i)
     std::printf("labels    %s: on every face, %zu values\n", decoded.mesh.face_labels[i].name.c_str(),
                 decoded.mesh.face_labels[i].values.size());
+  const int lattice = decoded.quantization.lattice;
+  const std::string bound = lattice > 1 ? "within " + std::to_string(lattice) +
+                                              " quantization steps per axis (the surface lattice, spec 14.15)"
+                                        : "within half a quantization step";
   std::printf("positions %s; max error %.6g, rms %.6g\n",
-              r.positions_within_bound ? "within half a quantization step" : r.position_mismatch.c_str(),
-              r.max_error, r.rms_error);
+              r.positions_within_bound ? bound.c_str() : r.position_mismatch.c_str(), r.max_error, r.rms_error);
   std::printf("%s\n", r.ok() ? "verify: OK" : "verify: FAILED");
   return r.ok() ? kExitOk : kExitCheckFailed;
 }

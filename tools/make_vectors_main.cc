@@ -3819,18 +3819,27 @@ qmc::MirrorPlane mirror_plane_of(const std::vector<uint8_t>& file, bool near) {
 // in a file of that version. stats, if given, gets the coding's counts.
 std::vector<uint8_t> recoded_posn(const std::vector<uint8_t>& file, uint8_t features, int k,
                                   const qmc::MirrorPlane* plane, bool extrapolate, qmc::PositionStats* stats = nullptr,
-                                  bool axis_classes = false) {
+                                  bool axis_classes = false, int lattice = 1) {
   Chunks c = split_chunks(file);
   Mesh faces;
   qmc::QuantizedPositions grid;
   decode_grid(c, &faces, &grid);
+  if (lattice > 1) {  // 14.15: placed near the decoded grid points, across the decoded faces' normals
+    faces.positions.resize(grid.q.size());
+    for (size_t i = 0; i < grid.q.size(); ++i)
+      faces.positions[i] = float(double(grid.min[i % 3]) + double(grid.q[i]) * grid.step[i % 3]);
+    if (!qmc::set_surface_lattice(faces, lattice, &grid).ok()) {
+      std::fprintf(stderr, "qmc-make-vectors: the lattice does not apply to a file to rewrite\n");
+      std::exit(3);
+    }
+  }
   const qmc::ClassStart start =
       grid.q.size() / 3 < qmc::kGradedStartBelow ? qmc::ClassStart::kGraded : qmc::ClassStart::kFlat;
   c[find_chunk(c, qmc::kChunkPositions)].payload = qmc::encode_predicted_positions(
       grid, faces, stats, qmc::CandidateChoice::kFewestBits, start, qmc::PredictionOrder::kGeometry,
       features & qmc::kQuadTwistFeature, features & qmc::kMaskContextsFeature,
       features & qmc::kTriangleTwistFeature, plane, k, extrapolate, axis_classes);
-  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, uint8_t(axis_classes ? 17 : extrapolate ? 16 : 15)};
+  c[find_chunk(c, qmc::kChunkHeader)].payload = {1, uint8_t(lattice > 1 ? 19 : axis_classes ? 17 : extrapolate ? 16 : 15)};
   return join_chunks(c);
 }
 
@@ -4157,6 +4166,153 @@ void write_posn13_vectors(VectorWriter* w) {
   const std::vector<uint8_t> file = write_encoder_files(w, "posn13", "torus", torus, textured, options, 13);
 
   write_shear_and_plane_invalids(w, "posn13", file, torus.vertex_count());
+}
+
+// A sphere of triangles, `segments` around and `rings` rings (rows of
+// alternate offsets), radius jittered by up to 10 % (splitmix64, seed): the
+// bottom pole's fan first, the rings' strips from the bottom up, the top
+// pole's fan last, so that 14.6's order decodes the top pole once most of
+// its ring is decoded (more than 16 corners with both neighbours decoded).
+Mesh sphere_with_pole_last(uint32_t segments, uint32_t rings, uint64_t seed) {
+  uint64_t state = seed;
+  const auto unit = [&state] { return double(qmc::splitmix64_mix(++state) >> 11) / double(uint64_t(1) << 53); };
+  const double pi = 3.14159265358979323846;
+  Mesh m;
+  // The poles' axis turned to (1, 1, 0.1), between x and y, where the normals'
+  // sums over 16 corners and over all of them may favour different axes.
+  const double d[3] = {0.70534, 0.70534, 0.070534}, e[3] = {0.70711, -0.70711, 0};
+  const double f[3] = {d[1] * e[2] - d[2] * e[1], d[2] * e[0] - d[0] * e[2], d[0] * e[1] - d[1] * e[0]};
+  const auto add = [&](double x, double y, double z) {
+    m.positions.insert(m.positions.end(), {float(x * e[0] + y * f[0] + z * d[0]), float(x * e[1] + y * f[1] + z * d[1]),
+                                           float(x * e[2] + y * f[2] + z * d[2])});
+  };
+  for (uint32_t r = 1; r < rings; ++r)
+    for (uint32_t i = 0; i < segments; ++i) {
+      const double theta = pi * r / rings, phi = 2 * pi * (i + 0.5 * (r % 2)) / segments;
+      const double j = 1 + 0.2 * (unit() - 0.5);
+      add(j * std::sin(theta) * std::cos(phi), j * std::sin(theta) * std::sin(phi), j * std::cos(theta));
+    }
+  const uint32_t bottom = (rings - 1) * segments, top = bottom + 1;
+  add(0, 0, -1);
+  add(0, 0, 1.0 + 0.4 * (unit() - 0.5));
+  const auto at = [&](uint32_t r, uint32_t i) { return (r - 1) * segments + i % segments; };
+  const auto triangle = [&m](uint32_t a, uint32_t b, uint32_t c) {
+    m.face_sizes.push_back(3);
+    m.corners.insert(m.corners.end(), {a, b, c});
+  };
+  for (uint32_t i = 0; i < segments; ++i) triangle(bottom, at(rings - 1, i + 1), at(rings - 1, i));
+  for (uint32_t r = rings - 1; r > 1; --r)
+    for (uint32_t i = 0; i < segments; ++i) {
+      triangle(at(r, i), at(r, i + 1), at(r - 1, i + 1));
+      triangle(at(r, i), at(r - 1, i + 1), at(r - 1, i));
+    }
+  for (uint32_t i = 0; i < segments; ++i) triangle(top, at(1, i), at(1, i + 1));
+  return m;
+}
+
+// 14.15's lattice byte, and the tops it allows, on `file`, an encoder's
+// method-14 file with no mirror plane: a lattice of 1 and of 17, the byte
+// missing, and a top of 2^24 (the largest a grid may have otherwise).
+void write_lattice_invalids(VectorWriter* w, const std::vector<uint8_t>& file, size_t vertex_count) {
+  using qmc::ErrorCode;
+  const ChunkReplacer with_posn(file, qmc::kChunkPositions);
+  const std::vector<uint8_t> payload = with_posn.payload();
+  std::vector<uint8_t> count;
+  qmc::put_varint(&count, vertex_count);
+  const size_t lattice = count.size() + 5;  // after selector, start, features, shear and plane
+  std::vector<uint8_t> p = payload;
+  p[lattice] = 1;
+  w->invalid("invalid_posn14_lattice_1", with_posn(p), ErrorCode::kBadChunkPayload);
+  p[lattice] = 17;
+  w->invalid("invalid_posn14_lattice_17", with_posn(p), ErrorCode::kBadChunkPayload);
+  w->invalid("invalid_posn14_lattice_missing",
+             with_posn(std::vector<uint8_t>(payload.begin(), payload.begin() + long(lattice))),
+             ErrorCode::kBadChunkPayload);
+  // After the lattice byte, with a plane its axis byte and sum; then grid 0
+  // (one step): the grid byte, the origin (12 bytes) and the step (8), then the tops.
+  size_t grid = lattice + 1;
+  if (payload[lattice - 1] != 0) {  // the plane byte
+    ++grid;
+    while (payload[grid] & 0x80) ++grid;
+    ++grid;
+  }
+  if (payload[grid] != 0) {
+    std::fprintf(stderr, "qmc-make-vectors: a method-14 file without one step\n");
+    std::exit(3);
+  }
+  const size_t top = grid + 1 + 12 + 8;
+  size_t first_top_end = top;
+  while (payload[first_top_end] & 0x80) ++first_top_end;
+  p.assign(payload.begin(), payload.begin() + long(top));
+  qmc::put_varint(&p, uint64_t(1) << 24);
+  p.insert(p.end(), payload.begin() + long(first_top_end) + 1, payload.end());
+  w->invalid("invalid_posn14_top_2_24", with_posn(p), ErrorCode::kBadChunkPayload);
+}
+
+// The vectors of POSN method 14 (14.15): the small meshes of 14.13's
+// vectors recoded on a lattice of 4 (no source check: placed near the
+// decoded grid points, a vertex may lie k + 1/2 steps from its input), and
+// what the encoder writes with --surface-lattice on a jittered sphere (a
+// scan's noise) at 12 and 16 bits, with texture coordinates, and at k = 2
+// and k = 16.
+void write_posn14_vectors(VectorWriter* w) {
+  qmc::EncodeOptions options;  // what `qmc encode` writes
+  const qmc::EncodeOptions unit = on_unit_grid(options);
+  const auto lattice = [](const std::vector<uint8_t>& file, uint8_t features, int k, const qmc::MirrorPlane* plane) {
+    return recoded_posn(file, features, k, plane, true, nullptr, true, 4);
+  };
+  const Mesh example = extrapolation_example();
+  w->valid("valid_posn14_example", lattice(encode_with(example, unit, "extrapolation example"), 0, 0, nullptr),
+           nullptr);
+  const Mesh mixed = quads_over_triangles(12);
+  w->valid("valid_posn14_every_feature_and_shear",
+           lattice(encode_with(mixed, unit, "quads over triangles"), 7, 8, nullptr), nullptr);
+  const Mesh grid = qmc::tools::make_mirrored_across_x(qmc::tools::make_grid(6, 4));
+  const std::vector<uint8_t> grid_file = encode_with(grid, options, "mirrored grid");
+  qmc::MirrorPlane near_plane = mirror_plane_of(grid_file, false);
+  near_plane.near_images = true;
+  w->valid("valid_posn14_plane_2_shear", lattice(grid_file, 1, 16, &near_plane), nullptr);
+
+  const Mesh sphere = qmc::tools::make_jittered_sphere(4, 0.01f, 7);
+  options.position_bits = 12;
+  options.surface_lattice = 4;
+  Mesh textured = sphere;
+  qmc::tools::add_chart_texcoords(&textured);
+  const std::vector<uint8_t> file = write_encoder_files(w, "posn14", "sphere", sphere, textured, options, 14);
+  for (int k : {2, 16}) {
+    qmc::EncodeOptions other = options;
+    other.surface_lattice = k;
+    w->valid("valid_posn14_sphere_lattice_" + std::to_string(k), encode_posn_method(sphere, other, 14), &sphere);
+  }
+  write_shear_and_plane_invalids(w, "posn14", file, sphere.vertex_count());
+  write_lattice_invalids(w, file, sphere.vertex_count());
+
+  // Added after the spec-only check of 14.15, for readings the vectors above
+  // left open: a polygon soup whose vertices have corners without both
+  // neighbours decoded (those do not count towards the 16), 14.9's twist
+  // correcting the P the normal is taken around (the encoder's triangle twist
+  // on a jittered sphere), poles of 25 corners decoded after most of their
+  // ring (the limit of 16 corners), a 20-bit grid (coarse buckets capped at
+  // 15) and a per-axis grid of steps of three sizes (the normal in grid steps).
+  const Mesh soup = qmc::tools::make_random_soup(1, qmc::tools::RandomSoupOptions{});
+  w->valid("valid_posn14_soup", lattice(encode_with(soup, options, "random soup"), 2, 0, nullptr), nullptr);
+  const Mesh jittered = qmc::tools::make_jittered_sphere(3, 0.3f, 3);  // qmc-meshgen jittered-sphere 3 3
+  w->valid("valid_posn14_triangle_twist", encode_posn_method(jittered, options, 14), &jittered);
+  for (uint64_t seed : {5, 7, 8}) {  // of seeds 1 - 8, those that tell 16 corners from 15, 17 and all
+    const Mesh pole = sphere_with_pole_last(25, 6, seed);
+    w->valid("valid_posn14_pole_last_seed_" + std::to_string(seed),
+             recoded_posn(encode_with(pole, options, "sphere with its pole last"), 0, 0, nullptr, true, nullptr, true,
+                          4),
+             nullptr);
+  }
+  qmc::EncodeOptions twenty = options;
+  twenty.position_bits = 20;
+  w->valid("valid_posn14_sphere_20_bits", encode_posn_method(sphere, twenty, 14), &sphere);
+  qmc::EncodeOptions per_axis = options;
+  per_axis.position_grid = qmc::PositionGrid::kPerAxis;
+  Mesh flattened = sphere;  // axes of three lengths: steps of three sizes
+  for (size_t i = 0; i < flattened.positions.size(); ++i) flattened.positions[i] *= i % 3 == 0 ? 1.0f : i % 3 == 1 ? 0.4f : 0.15f;
+  w->valid("valid_posn14_ellipsoid_per_axis_grid", encode_posn_method(flattened, per_axis, 14), &flattened);
 }
 
 // Section 15.9: aTTR coding 4, what `qmc encode` writes when it is the
@@ -4949,6 +5105,7 @@ int main(int argc, char** argv) {
   write_posn12_vectors(&w);
   write_posn13_vectors(&w);
   write_coding8_vectors(&w);
+  write_posn14_vectors(&w);
   w.finish();
   return 0;
 }

@@ -28,7 +28,7 @@ struct ChunkInfo {
 std::string chunk_type_name(uint32_t type);
 
 struct QuantizationInfo {
-  int method = 0;                 // POSN method: 0 deltas (section 6), 1 or 3 - 13 predicted (section 14)
+  int method = 0;                 // POSN method: 0 deltas (section 6), 1 or 3 - 14 predicted (section 14)
   bool graded_start = false;      // method 3, and methods 4 - 13 with start 1: 14.4.1's class probabilities
   int bits = 0;                   // method 0: n of section 6.1; method 1: bit length of the largest top
   std::array<float, 3> min{};     // method 0: the stored box; method 1: the origin
@@ -41,7 +41,8 @@ struct QuantizationInfo {
   bool near_images = false;       // method 10, and 11 - 13 with plane 2: image vertices may lie a step from the image (14.11)
   int shear = 0;                  // methods 11 - 13: 14.12's weight k of the shear, 1 - 16 (k / 16); 0: none
   bool edge_extrapolation = false;  // methods 12 and 13: 14.13's edge extrapolation
-  bool axis_classes = false;        // method 13: 14.14's class probabilities per axis
+  bool axis_classes = false;        // methods 13 and 14: 14.14's class probabilities per axis
+  int lattice = 1;                  // method 14: 14.15's lattice factor k (2 - 16); 1: none
 };
 
 // Section 12: one level of a progressive file. Level 0 is the base mesh of

@@ -79,6 +79,15 @@ struct EncodeOptions {
   // Euclidean distance of its input (binary32 rounding included); instead
   // of bits, grid and step.
   double max_position_error = 0;
+  // > 1: POSN method 14 (format 1.19, spec 14.15), the surface lattice of
+  // this factor k (2 .. 16): each vertex keeps the grid's step along the
+  // axis nearest its surface's normal and moves in steps of k along the
+  // other two, so that it stays near the input's surface (within a step of
+  // it, nearly) but up to k steps from its input position along it.
+  // Smaller positions at the same distance between surfaces on dense
+  // meshes (scans); vertices no longer on the nearest grid point. Kept only
+  // where its POSN is smaller than the grid's (PositionStats says). 1: off.
+  int surface_lattice = 1;
   PositionMethod position_method = PositionMethod::kAuto;
   CandidateChoice candidate_choice = CandidateChoice::kFewestBits;
   ConnectivityChoice connectivity = ConnectivityChoice::kAuto;
@@ -319,12 +328,16 @@ struct GimEncodeStats {
 
 // Sections 6 and 14: how the positions were coded.
 struct PositionStats {
-  int method = 0;                  // POSN method: 0 deltas, 1 or 3 - 13 predicted
+  int method = 0;                  // POSN method: 0 deltas, 1 or 3 - 14 predicted
   int features = 0;                // methods 4 - 13: 14.9's features (1 quad twist, 2 mask contexts, 4 triangle twist)
   bool graded_start = false;       // methods 3 - 13: 14.4.1's start
   int shear = 0;                   // methods 11 - 13: 14.12's weight k of the shear (k / 16); 0 none
   uint32_t extrapolated_vertices = 0;  // methods 12 and 13: the vertices 14.13's rule gave candidates
-  bool axis_classes = false;           // method 13: 14.14's class probabilities per axis
+  bool axis_classes = false;           // methods 13 and 14: 14.14's class probabilities per axis
+  int lattice = 1;                     // method 14: 14.15's lattice factor k; 1 none
+  // With EncodeOptions::surface_lattice: the POSN payloads of the lattice and
+  // of the grid, the smaller kept (lattice > 1 if it was the lattice's).
+  uint64_t lattice_payload_bytes = 0, grid_payload_bytes = 0;
   int mirror = 0;                  // methods 9 - 13: 1 image vertices at the image (14.10), 2 a step away too (14.11)
   std::array<double, 3> step{};    // the grid's step per axis
   std::array<uint32_t, 3> top{};   // the largest grid coordinate per axis

@@ -17,10 +17,10 @@ inline constexpr uint8_t kSignature[8] = {0x89, 'Q', 'M', 'C', '\r', '\n', 0x1A,
 // method 4, minor 9 POSN method 5, minor 10 POSN methods 6 and 7, minor 11 POSN
 // method 8, minor 12 POSN method 9, minor 13 POSN method 10, minor 14 LEVL
 // code 4, minor 15 POSN method 11, minor 16 POSN method 12, minor 17 POSN method 13, minor 18
-// polygon coding 8 (section 11);
+// polygon coding 8, minor 19 POSN method 14 (section 11);
 // a file says the lowest minor version that defines everything it uses.
 inline constexpr uint8_t kFormatMajor = 1;
-inline constexpr uint8_t kFormatMinor = 18;
+inline constexpr uint8_t kFormatMinor = 19;
 
 // Section 3.2: a chunk payload is at most 2^31 - 1 bytes.
 inline constexpr uint32_t kMaxChunkLength = 0x7FFFFFFFu;

@@ -37,6 +37,8 @@ class PredictionVisit {
     for (uint32_t i = 0; i < uint32_t(order_.size()); ++i) rank_[order_[i]] = i;
   }
   uint32_t item(uint32_t i) const { return order_.empty() ? i : order_[i]; }
+  // Whether vertex u is visited before the i-th item, i.e. decoded before it.
+  bool visited_before(uint32_t u, uint32_t i) const { return order_.empty() ? u < i : rank_[u] < i; }
   const VertexCorners& mesh() const { return mesh_; }
   // 15.12: texture coordinates guided by the positions (null: 14.3 alone),
   // the orientation starting at +1.

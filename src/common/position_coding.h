@@ -56,11 +56,18 @@ struct PositionResidualModel {
   // and 7), count - 2 and k.
   uint16_t use[kMaskContexts][kMaxCandidates - 1][kMaxCandidates];
   uint16_t mirror[kMirrorContexts];  // 14.10: "the mirror candidate is used", by its context
+  // POSN method 14 (14.15): the classes of the residuals a lattice codes in
+  // steps of k, in tables of their own (LCLS and, as ACLS, LACLS per axis).
+  uint16_t lattice_cls[kPositionBuckets][kPositionMaxClass];
+  uint16_t lattice_axis_cls[3][kPositionBuckets][kPositionMaxClass];
   int max_class[3];  // bitlen(top_a): k of 13.5.6 per axis
   bool mask_contexts;  // 14.8: methods 6 and 7
   bool axis_classes;   // 14.14: method 13
+  int lattice = 1;     // 14.15: method 14's k; 1 without a lattice
   explicit PositionResidualModel(const uint32_t top[3], ClassStart start = ClassStart::kFlat,
                                  bool with_mask_contexts = false, bool with_axis_classes = false);
+  // 14.15: a lattice of factor k, its tables starting as CLS does.
+  void use_lattice(int k, ClassStart start);
 };
 
 // The class probabilities of one group as `start` has them begin (14.4.1),
@@ -95,9 +102,17 @@ inline PositionResidualModel::PositionResidualModel(const uint32_t top[3], Class
   std::fill(&mantissa[0][0], &mantissa[0][0] + sizeof(mantissa) / sizeof(uint16_t), uint16_t(1024));
 }
 
-// 14.4: the bucket of axis a from an activity estimate t0 (a sum over three
-// axes) and the magnitudes of the vertex's earlier axes.
-inline int position_bucket(uint64_t t0, const uint32_t* magnitude, int axis) {
+inline void PositionResidualModel::use_lattice(int k, ClassStart start) {
+  lattice = k;
+  const ClassStartTable& table = start == ClassStart::kFlat ? kFlatClassTable : kGradedClassTable;
+  static_assert(sizeof lattice_cls == sizeof table.p, "the lattice's classes are one ClassStartTable");
+  std::memcpy(lattice_cls, table.p, sizeof table.p);
+  for (auto& axis : lattice_axis_cls) std::memcpy(axis, table.p, sizeof table.p);
+}
+
+// 14.4: the estimate t of axis a's magnitude from an activity estimate t0
+// (a sum over three axes) and the magnitudes of the vertex's earlier axes.
+inline uint64_t position_estimate(uint64_t t0, const uint32_t* magnitude, int axis) {
   uint64_t t = t0;
   if (axis > 0) {
     uint64_t own = 0;
@@ -105,7 +120,11 @@ inline int position_bucket(uint64_t t0, const uint32_t* magnitude, int axis) {
     // 3 own / axis, axis being 1 or 2: no division by a variable, which costs tens of cycles.
     t = (t + (axis == 1 ? 3 * own : 3 * own / 2)) / 2;
   }
-  return t == 0 ? 0 : std::min(bit_length64(t), kPositionBuckets - 1);
+  return t;
+}
+inline int estimate_bucket(uint64_t t) { return t == 0 ? 0 : std::min(bit_length64(t), kPositionBuckets - 1); }
+inline int position_bucket(uint64_t t0, const uint32_t* magnitude, int axis) {
+  return estimate_bucket(position_estimate(t0, magnitude, axis));
 }
 
 // 14.8: the context of a vertex's decisions "candidate k is selected" in
@@ -167,16 +186,31 @@ int code_mixed_class(Coder* coder, uint16_t* shared, uint16_t* own, int k, uint3
   return c;
 }
 
-// Codes the residual of one axis, its class bounded by bitlen(top_a) (14.4).
+// Codes the residual of one axis, its class bounded by bitlen(top_a) (14.4);
+// magnitude holds the earlier axes' |r| in grid steps. With divisor k > 1
+// (14.15, POSN method 14: an axis across the lattice) the value coded is the
+// residual in steps of k, its estimate divided by k and its classes LCLS's
+// (with LACLS's in 14.14's way) instead of the group's. One function for
+// both, so that compilers inline it into the decoder's loop.
 template <class Coder>
 SignedResidual code_position_residual(Coder* coder, PositionResidualModel* m, const VertexPrediction& p,
-                                      const uint32_t* magnitude, int axis, SignedResidual value) {
-  const int bucket = position_bucket(p.neighbour_activity + p.scale / 8, magnitude, axis);
-  const int group = p.kind == PredictionKind::kMirror ? 3 : p.kind >= PredictionKind::kSingle ? 2 : int(p.kind);
+                                      const uint32_t* magnitude, int axis, SignedResidual value, int divisor = 1) {
+  uint64_t t = position_estimate(p.neighbour_activity + p.scale / 8, magnitude, axis);
+  if (divisor > 1) t /= uint64_t(divisor);
+  const int bucket = estimate_bucket(t);
+  uint16_t* shared;
+  uint16_t* own;
+  if (divisor > 1) {
+    shared = m->lattice_cls[bucket];
+    own = m->lattice_axis_cls[axis][bucket];
+  } else {
+    const int group = p.kind == PredictionKind::kMirror ? 3 : p.kind >= PredictionKind::kSingle ? 2 : int(p.kind);
+    shared = m->cls[group][bucket];
+    own = m->axis_cls[axis][group][bucket];
+  }
   if (!m->axis_classes)
-    return code_class_residual(coder, m->cls[group][bucket], &m->sign[axis], m->mantissa, m->max_class[axis], value);
-  const int c = code_mixed_class(coder, m->cls[group][bucket], m->axis_cls[axis][group][bucket], m->max_class[axis],
-                                 value.magnitude);
+    return code_class_residual(coder, shared, &m->sign[axis], m->mantissa, m->max_class[axis], value);
+  const int c = code_mixed_class(coder, shared, own, m->max_class[axis], value.magnitude);
   return code_sign_and_bits(coder, &m->sign[axis], m->mantissa, c, value);
 }
 

@@ -1,6 +1,6 @@
 // Positions: spec/qmc-format.md section 6 (method 0, seed 001 §2.6, §5.1.2:
 // per-axis Huffman-coded deltas between consecutive vertices in file order)
-// and section 14 (methods 1 - 13: predicted from the decoded mesh, range
+// and section 14 (methods 1 - 14: predicted from the decoded mesh, range
 // coded): the payload's header and method 0 here, section 14's decoding of
 // the vertices in predicted_grid_decoder.cc.
 #include "decoder/position_decoder.h"
@@ -14,6 +14,7 @@
 #include "common/huffman.h"
 #include "common/magnitude_code.h"
 #include "common/position_coding.h"
+#include "common/surface_lattice.h"
 
 namespace qmc {
 namespace {
@@ -22,13 +23,15 @@ Status bad_payload(const std::string& message) { return Status(ErrorCode::kBadCh
 
 // Section 14.1: the byte after vertex_count selects the method.
 constexpr uint8_t kPredictedSelector = 0x81, kGradedSelector = 0x83;  // methods 1 and 3 (14.1)
-// Methods 4 - 13 (14.1, 14.6 - 14.14), 0x84 .. 0x8D, all with the start
-// byte; methods 8 - 13 with the features byte of 14.9 after it, methods 11
-// - 13 with their shear and plane bytes after that (14.12 - 14.14);
-// methods 9 - 13 with a plane end with 14.10's plane.
-constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x8D;
+// Methods 4 - 14 (14.1, 14.6 - 14.15), 0x84 .. 0x8E, all with the start
+// byte; methods 8 - 14 with the features byte of 14.9 after it, methods 11
+// - 14 with their shear and plane bytes after that (14.12 - 14.15), method
+// 14 with its lattice byte after those; methods 9 - 14 with a plane end
+// with 14.10's plane.
+constexpr uint8_t kFirstGeometryOrderSelector = 0x84, kLastGeometryOrderSelector = 0x8E;
 constexpr uint8_t kFeaturesSelector = 0x88, kMirrorSelector = 0x89, kNearMirrorSelector = 0x8A;
 constexpr uint8_t kShearSelector = 0x8B, kExtrapolationSelector = 0x8C, kAxisClassSelector = 0x8D;
+constexpr uint8_t kLatticeSelector = 0x8E;
 constexpr uint8_t kLargestShear = 16;
 
 Status read_box(ByteReader* in, QuantizationInfo* info) {
@@ -72,13 +75,16 @@ Status read_grid(ByteReader* in, QuantizationInfo* info) {
   return Status::Ok();
 }
 
-// Sections 14.12 - 14.14: method 11's shear weight (1 .. 16) or methods 12's
-// and 13's (0 .. 16, 0 none), and the kind of its plane (0 none, 1 method
-// 9's, 2 method 10's), before the plane itself.
+// Sections 14.12 - 14.15: method 11's shear weight (1 .. 16) or methods
+// 12's - 14's (0 .. 16, 0 none), and the kind of its plane (0 none, 1
+// method 9's, 2 method 10's), before the plane itself.
 Status read_shear(ByteReader* in, QuantizationInfo* info, bool* mirrored) {
   const std::string method = "method " + std::to_string(info->method);
-  const char* section = info->method == 13 ? " (section 14.14)" : info->method == 12 ? " (section 14.13)" : " (section 14.12)";
-  const uint8_t least = info->method >= 12 ? 0 : 1;  // methods 12 and 13 may shear nothing
+  const char* section = info->method == 14   ? " (section 14.15)"
+                        : info->method == 13 ? " (section 14.14)"
+                        : info->method == 12 ? " (section 14.13)"
+                                             : " (section 14.12)";
+  const uint8_t least = info->method >= 12 ? 0 : 1;  // methods 12 - 14 may shear nothing
   uint8_t shear = 0, plane = 0;
   if (!in->get_u8(&shear)) return bad_payload(method + "'s shear byte missing" + section);
   if (shear < least || shear > kLargestShear)
@@ -88,6 +94,16 @@ Status read_shear(ByteReader* in, QuantizationInfo* info, bool* mirrored) {
   info->shear = shear;
   info->near_images = plane == 2;
   *mirrored = plane != 0;
+  return Status::Ok();
+}
+
+// Section 14.15: method 14's lattice factor k, 2 .. 16.
+Status read_lattice(ByteReader* in, QuantizationInfo* info) {
+  uint8_t k = 0;
+  if (!in->get_u8(&k)) return bad_payload("method 14's lattice byte missing (section 14.15)");
+  if (k < kLatticeLeastFactor || k > kLatticeLargestFactor)
+    return bad_payload("lattice " + std::to_string(k) + " outside 2..16 (section 14.15)");
+  info->lattice = k;
   return Status::Ok();
 }
 
@@ -126,9 +142,9 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
     }
     bool mirrored = selector == kMirrorSelector || selector == kNearMirrorSelector;
     info->near_images = selector == kNearMirrorSelector;
-    const bool sheared = selector >= kShearSelector;  // 11 - 13
-    info->edge_extrapolation = selector >= kExtrapolationSelector;  // 12 and 13
-    info->axis_classes = selector == kAxisClassSelector;
+    const bool sheared = selector >= kShearSelector;  // 11 - 14
+    info->edge_extrapolation = selector >= kExtrapolationSelector;  // 12 - 14
+    info->axis_classes = selector >= kAxisClassSelector;  // 13 and 14
     if (selector == kFeaturesSelector || mirrored || sheared) {
       const std::string method = "method " + std::to_string(info->method);
       uint8_t features = 0;
@@ -139,6 +155,8 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
       info->features = features;
       if (sheared)
         if (Status s = read_shear(in, info, &mirrored); !s.ok()) return s;
+      if (selector == kLatticeSelector)
+        if (Status s = read_lattice(in, info); !s.ok()) return s;
       if (mirrored)
         if (Status s = read_mirror_plane(in, info); !s.ok()) return s;
     } else {
@@ -148,12 +166,16 @@ Status read_header(ByteReader* in, uint32_t vertex_count, QuantizationInfo* info
     if (info->mirror_axis >= 0 && info->mirror_sum > 2 * uint64_t(info->top[size_t(info->mirror_axis)]))
       return bad_payload("mirror sum " + std::to_string(info->mirror_sum) + " above 2 top[" +
                          std::to_string(info->mirror_axis) + "] (section 14.10)");
+    for (int a = 0; a < 3 && info->lattice > 1; ++a)
+      if (info->top[a] >= kLatticeTopBound)
+        return bad_payload("top " + std::to_string(info->top[a]) + " of axis " + std::to_string(a) +
+                           " not below 2^24, as method 14's lattice needs (section 14.15)");
     return Status::Ok();
   }
   if (selector >= 0x80)
     return Status(ErrorCode::kUnsupportedFeature,
                   "POSN: method " + std::to_string(selector - 0x80) +
-                      " is not defined (section 14.1 knows 0, 1 and 3 - 13)");
+                      " is not defined (section 14.1 knows 0, 1 and 3 - 14)");
   if (selector < 1 || selector > 30) return bad_payload("quantization bits " + std::to_string(selector) + " outside 1..30");
   info->method = 0;
   info->bits = selector;
@@ -221,7 +243,7 @@ Status decode_positions(const uint8_t* payload, size_t size, const Mesh& faces, 
                                          quantized, start, order, nullptr, info->features & kQuadTwistFeature,
                                          info->features & kMaskContextsFeature, info->features & kTriangleTwistFeature,
                                          info->mirror_axis >= 0 ? &plane : nullptr, nullptr, info->shear,
-                                         info->edge_extrapolation, info->axis_classes);
+                                         info->edge_extrapolation, info->axis_classes, info->lattice);
         !s.ok())
       return s;
   } else {

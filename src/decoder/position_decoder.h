@@ -48,7 +48,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
                              const PositionGuide* guide = nullptr, bool quad_twist = false,
                              bool mask_contexts = false, bool triangle_twist = false,
                              const MirrorPlane* mirror = nullptr, const AttributeTwins* twins = nullptr,
-                             int shear = 0, bool extrapolate = false, bool axis_classes = false);
+                             int shear = 0, bool extrapolate = false, bool axis_classes = false, int lattice = 1);
 
 // Sections 6.4 and 14.1: per axis, the binary64 min and step of x = min + q * step.
 void dequantization_steps(const QuantizationInfo& info, double lo[3], double step[3]);

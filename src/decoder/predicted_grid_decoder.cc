@@ -1,6 +1,6 @@
 // Sections 14.2 - 14.4 (and 15.4's values): the integers of a predicted
 // grid decoded item by item, each predicted from the decoded ones and its
-// residuals range decoded. Shared by POSN (methods 1 - 13) and aTTR; the
+// residuals range decoded. Shared by POSN (methods 1 - 14) and aTTR; the
 // per-vertex work of the position decoder, in a file of its own so that a
 // build can compile it for speed and the chunk's header and method 0 for size,
 // as the WebAssembly build does (web/CMakeLists.txt).
@@ -11,38 +11,68 @@
 #include "common/mirror_prediction.h"
 #include "common/position_coding.h"
 #include "common/range_coder.h"
+#include "common/surface_lattice.h"
 #include "common/vertex_prediction.h"
 #include "decoder/position_decoder.h"
 
 namespace qmc {
 namespace {
 
+// 14.15 (POSN method 14) for the vertex being decoded: the steps of its
+// residuals per axis, or null (every step 1) without a lattice or where
+// its normal estimate is 0.
+struct Lattice {
+  const PredictionVisit* visit = nullptr;  // null: no lattice
+  int k = 1;
+  uint32_t vertex = 0, i = 0;
+  const uint32_t* q = nullptr;
+  const int* divisors(const VertexPrediction& p, int* out) const {
+    const int fine = lattice_fine_axis(*visit, vertex, i, q, p.value);
+    if (fine < 0) return nullptr;
+    for (int a = 0; a < 3; ++a) out[a] = a == fine ? 1 : k;
+    return out;
+  }
+};
+
 Status truncated_inside(const PredictedGridNames& names, uint32_t v) {
   return Status(ErrorCode::kTruncated, names.chunk + ": the range-coded stream ends inside " + names.item + " " +
                                            std::to_string(v) + " (section 14.4)");
 }
 
+Status outside_grid(const PredictedGridNames& names, uint32_t v, int a, int64_t value, uint32_t top) {
+  return Status(ErrorCode::kBadSymbol, names.chunk + ": " + names.item + " " + std::to_string(v) + " " + names.axis +
+                                           " " + std::to_string(a) + " decodes to " + std::to_string(value) +
+                                           ", outside 0.." + std::to_string(top) + " (section 14.4)");
+}
+
 // Section 14.4's three residuals of one vertex (or attribute value, 15.4)
-// predicted by p; the stream's end is checked after each, before the value
-// it gave is.
+// predicted by p, axis a's in steps of divisor[a] (14.15's lattice; 1
+// otherwise); the stream's end is checked after each, before the value it
+// gave is.
 Status decode_residuals(RangeDecoder* rc, PositionResidualModel* model, const PredictedGridNames& names, uint32_t v,
-                        const uint32_t* top, const VertexPrediction* p, uint32_t* q, uint32_t* activity) {
-  const auto truncated = [&] { return truncated_inside(names, v); };
+                        const uint32_t* top, const VertexPrediction* p, uint32_t* q, uint32_t* activity,
+                        const int* divisor) {
   uint32_t magnitude[3] = {0, 0, 0};
   for (int a = 0; a < 3; ++a) {
-    const SignedResidual r = code_position_residual(rc, model, *p, magnitude, a, SignedResidual{});
-    if (rc->overrun()) return truncated();
-    const int64_t value = p->value[a] + (r.negative ? -int64_t(r.magnitude) : int64_t(r.magnitude));
-    if (value < 0 || value > int64_t(top[a]))
-      return Status(ErrorCode::kBadSymbol, names.chunk + ": " + names.item + " " + std::to_string(v) + " " +
-                                               names.axis + " " + std::to_string(a) + " decodes to " +
-                                               std::to_string(value) + ", outside 0.." + std::to_string(top[a]) +
-                                               " (section 14.4)");
+    const SignedResidual r = code_position_residual(rc, model, *p, magnitude, a, SignedResidual{}, divisor[a]);
+    if (rc->overrun()) return truncated_inside(names, v);
+    const int64_t step = divisor[a] * int64_t(r.magnitude);  // below 2^35
+    const int64_t value = p->value[a] + (r.negative ? -step : step);
+    if (value < 0 || value > int64_t(top[a])) return outside_grid(names, v, a, value, top[a]);
     q[a] = uint32_t(value);
-    magnitude[a] = r.magnitude;
+    magnitude[a] = uint32_t(step);  // |r| <= top_a < 2^30 once in range
   }
   *activity = magnitude[0] + magnitude[1] + magnitude[2];
   return Status::Ok();
+}
+
+// 14.15: the steps of the vertex's residuals per axis, all 1 without a
+// lattice or where its normal estimate is 0.
+const int* residual_steps(const VertexPrediction& p, const Lattice& lattice, int* steps) {
+  static constexpr int kGridSteps[3] = {1, 1, 1};
+  if (!lattice.visit) return kGridSteps;
+  const int* lattice_steps = lattice.divisors(p, steps);
+  return lattice_steps ? lattice_steps : kGridSteps;
 }
 
 // Section 14.4 for one vertex (or attribute value) whose candidates and
@@ -50,13 +80,14 @@ Status decode_residuals(RangeDecoder* rc, PositionResidualModel* model, const Pr
 // selected with every candidate already (14.10's reference), which the mask
 // of all candidates leaves as it is.
 Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const PredictedGridNames& names, uint32_t v,
-                     const uint32_t* top, VertexPrediction* p, uint32_t* q, uint32_t* activity,
+                     const uint32_t* top, VertexPrediction* p, uint32_t* q, uint32_t* activity, const Lattice& lattice,
                      bool selected_all = false) {
   const unsigned all = (1u << p->candidates) - 1;
   const unsigned mask = code_candidate_mask(rc, model, p->candidates, 0, mask_context(*model, *p));
   if (!(selected_all && mask == all)) select_candidates(p, mask, top);
   if (rc->overrun()) return truncated_inside(names, v);
-  return decode_residuals(rc, model, names, v, top, p, q, activity);
+  int steps[3];
+  return decode_residuals(rc, model, names, v, top, p, q, activity, residual_steps(*p, lattice, steps));
 }
 
 // Section 14.10 (POSN methods 9 and 10) for vertex `vertex`, the i-th visited: if it
@@ -64,7 +95,7 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
 // the residuals against it (*used then true; no mask is decoded).
 Status decode_mirrored(RangeDecoder* rc, PositionResidualModel* model, const PredictedGridNames& names,
                        const MirrorSource& mirrors, uint32_t vertex, uint32_t i, const uint32_t* top,
-                       VertexPrediction* p, uint32_t* q, uint32_t* activity, bool* used) {
+                       VertexPrediction* p, uint32_t* q, uint32_t* activity, const Lattice& lattice, bool* used) {
   *used = false;
   select_candidates(p, (1u << p->candidates) - 1, top);  // the reference: every candidate
   int64_t candidate[3];
@@ -75,7 +106,9 @@ Status decode_mirrored(RangeDecoder* rc, PositionResidualModel* model, const Pre
   *used = true;
   p->kind = PredictionKind::kMirror;
   std::copy(candidate, candidate + 3, p->value);
-  return decode_residuals(rc, model, names, i, top, p, &q[3 * size_t(vertex)], activity);
+  int steps[3];
+  return decode_residuals(rc, model, names, i, top, p, &q[3 * size_t(vertex)], activity,
+                          residual_steps(*p, lattice, steps));
 }
 
 }  // namespace
@@ -87,7 +120,8 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
                              const uint32_t top[3], const PredictedGridNames& names, std::vector<uint32_t>* quantized,
                              ClassStart start, PredictionOrder order, const PositionGuide* guide, bool quad_twist,
                              bool mask_contexts, bool triangle_twist, const MirrorPlane* mirror,
-                             const AttributeTwins* twins, int shear, bool extrapolate, bool axis_classes) {
+                             const AttributeTwins* twins, int shear, bool extrapolate, bool axis_classes,
+                             int lattice_factor) {
   if (!range_stream_justifies(count, size))  // section 14.1, before anything is reserved
     return Status(ErrorCode::kLimitExceeded, names.chunk + ": " + std::to_string(count) + " " + names.items +
                                                  " for " + std::to_string(size) +
@@ -104,6 +138,13 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   TriangleTwistWeight twist_weight;
   std::vector<uint32_t> activity(count);
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start, mask_contexts, axis_classes));
+  Lattice lattice;
+  if (lattice_factor > 1) {
+    model[0].use_lattice(lattice_factor, start);
+    lattice.visit = &visit;
+    lattice.k = lattice_factor;
+    lattice.q = quantized->data();
+  }
   RangeDecoder rc(stream, size);
   if (rc.bad_start())
     return Status(ErrorCode::kBadChunkPayload,
@@ -116,15 +157,17 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
     const uint32_t v = visit.item(i);
     visit.predict(i, quantized->data(), activity.data(), top, &p);
     twist_weight.apply(&p);
+    lattice.vertex = v;
+    lattice.i = i;
     bool mirrored = false;
     if (mirrors)
       if (Status s = decode_mirrored(&rc, &model[0], names, *mirrors, v, i, top, &p, quantized->data(),
-                                     &activity[v], &mirrored);
+                                     &activity[v], lattice, &mirrored);
           !s.ok())
         return s;
     if (!mirrored) {
       if (Status s = decode_vertex(&rc, &model[0], names, i, top, &p, &(*quantized)[3 * size_t(v)], &activity[v],
-                                   mirrors != nullptr);
+                                   lattice, mirrors != nullptr);
           !s.ok())
         return s;
       twist_weight.learn(p, &(*quantized)[3 * size_t(v)]);

@@ -18,6 +18,7 @@
 #include "common/mirror_prediction.h"
 #include "common/position_coding.h"
 #include "common/range_coder.h"
+#include "common/surface_lattice.h"
 #include "common/vertex_prediction.h"
 #include "encoder/occupied_blocks.h"
 #include "encoder/residual_costs.h"
@@ -35,6 +36,7 @@ constexpr uint8_t kNearMirrorSelector = 0x8A;                            // meth
 constexpr uint8_t kShearSelector = 0x8B;                                 // method 11 (14.1, 14.12)
 constexpr uint8_t kExtrapolationSelector = 0x8C;                         // method 12 (14.1, 14.13)
 constexpr uint8_t kAxisClassSelector = 0x8D;                             // method 13 (14.1, 14.14)
+constexpr uint8_t kLatticeSelector = 0x8E;                               // method 14 (14.1, 14.15)
 constexpr uint32_t kMaxTop = (uint32_t(1) << 30) - 1;
 
 void bounding_box(const std::vector<float>& positions, QuantizedPositions* out) {
@@ -148,6 +150,52 @@ Status quantize_positions(const std::vector<float>& positions, const EncodeOptio
   }
   if (!s.ok()) return s;
   round_to_grid(positions, out);
+  return Status::Ok();
+}
+
+Status set_surface_lattice(const Mesh& mesh, int k, QuantizedPositions* positions) {
+  if (k < kLatticeLeastFactor || k > kLatticeLargestFactor)
+    return Status(ErrorCode::kInvalidArgument, "the surface lattice's factor " + std::to_string(k) +
+                                                   " is outside 2..16 (spec 14.15)");
+  for (int a = 0; a < 3; ++a)
+    if (positions->top[a] >= kLatticeTopBound)
+      return Status(ErrorCode::kInvalidArgument,
+                    "the surface lattice (spec 14.15) needs a grid of at most 2^24 points per axis; axis " +
+                        std::to_string(a) + " has " + std::to_string(uint64_t(positions->top[a]) + 1));
+  const size_t n = positions->q.size() / 3;
+  positions->lattice = k;
+  positions->x.resize(3 * n);
+  for (size_t i = 0; i < 3 * n; ++i) {
+    const int a = int(i % 3);
+    const double step = positions->step[a] > 0 ? positions->step[a] : 1.0;
+    positions->x[i] = (double(mesh.positions[i]) - double(positions->min[a])) / step;
+  }
+  // Area-weighted normals in grid steps (on a per-axis grid the surface's
+  // normal in grid steps is not its normal in model units), polygons fanned
+  // from their first corner.
+  std::vector<double>& normal = positions->normal;
+  normal.assign(3 * n, 0.0);
+  const std::vector<double>& p = positions->x;
+  size_t corner = 0;
+  for (const uint32_t degree : mesh.face_sizes) {
+    const uint32_t* c = &mesh.corners[corner];
+    for (uint32_t j = 1; j + 1 < degree; ++j) {
+      double e[3], f[3];
+      for (int a = 0; a < 3; ++a) {
+        e[a] = p[3 * size_t(c[j]) + a] - p[3 * size_t(c[0]) + a];
+        f[a] = p[3 * size_t(c[j + 1]) + a] - p[3 * size_t(c[0]) + a];
+      }
+      const double cross[3] = {e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]};
+      for (const uint32_t v : {c[0], c[j], c[j + 1]})
+        for (int a = 0; a < 3; ++a) normal[3 * size_t(v) + a] += cross[a];
+    }
+    corner += degree;
+  }
+  for (size_t v = 0; v < n; ++v) {
+    double* m = &normal[3 * v];
+    const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
+    for (int a = 0; a < 3; ++a) m[a] = length > 0 ? m[a] / length : 0.0;
+  }
   return Status::Ok();
 }
 
@@ -286,6 +334,69 @@ uint32_t code_residuals(Coder* coder, PositionResidualModel* model, const Vertex
   return magnitude[0] + magnitude[1] + magnitude[2];
 }
 
+// 14.15: the same on a lattice, axis a's residual coded in steps of
+// divisor[a] (q on the lattice: every residual a multiple of its step).
+template <class Coder>
+uint32_t code_lattice_residuals(Coder* coder, PositionResidualModel* model, const VertexPrediction& p,
+                                const uint32_t* q, const int* divisor) {
+  uint32_t magnitude[3] = {0, 0, 0};
+  for (int a = 0; a < 3; ++a) {
+    const int64_t r = int64_t(q[a]) - p.value[a];
+    magnitude[a] = uint32_t(r < 0 ? -r : r);
+    const uint32_t steps = magnitude[a] / uint32_t(divisor[a]);
+    code_position_residual(coder, model, p, magnitude, a, SignedResidual{steps, r < 0}, divisor[a]);
+  }
+  return magnitude[0] + magnitude[1] + magnitude[2];
+}
+
+// 14.15 (informative part): the lattice point for a vertex at x (grid
+// units) with unit normal n, predicted at P, its fine axis `fine`. Across
+// the fine axis every multiple of k from P within k steps of x and inside
+// the grid is tried; along it, the grid point that takes back what those
+// moved along n (at most k - 1/2 steps). Of these, the one whose move is
+// smallest along n, then across the surface (weight kAcross), then whose
+// residuals are shortest (weight kShorter): on stanford-bunny at 12 bits
+// with k = 4 the weights 0.02 and 0.05 gave the smallest positions whose
+// distance to the input's surface (L2) is the grid's.
+constexpr double kAcross = 0.02, kShorter = 0.05;
+
+void place_on_lattice(const double* x, const double* n, const int64_t P[3], const uint32_t top[3], int k, int fine,
+                      uint32_t* q) {
+  const int across[2] = {fine == 0 ? 1 : 0, fine == 2 ? 1 : 2};
+  int64_t first[2], last[2];
+  for (int j = 0; j < 2; ++j) {
+    const int a = across[j];
+    first[j] = int64_t(std::ceil((x[a] - double(k) - double(P[a])) / k));
+    last[j] = int64_t(std::floor((x[a] + double(k) - double(P[a])) / k));
+  }
+  double best = std::numeric_limits<double>::infinity();
+  int64_t point[3] = {P[0], P[1], P[2]};  // P is on the grid: the fallback
+  for (int64_t m0 = first[0]; m0 <= last[0]; ++m0)
+    for (int64_t m1 = first[1]; m1 <= last[1]; ++m1) {
+      int64_t c[3];
+      c[across[0]] = P[across[0]] + k * m0;
+      c[across[1]] = P[across[1]] + k * m1;
+      if (c[across[0]] < 0 || c[across[0]] > int64_t(top[across[0]]) || c[across[1]] < 0 ||
+          c[across[1]] > int64_t(top[across[1]]))
+        continue;
+      const double moved = (double(c[across[0]]) - x[across[0]]) * n[across[0]] +
+                           (double(c[across[1]]) - x[across[1]]) * n[across[1]];
+      const double limit = double(k) - 0.5;
+      const double back = std::fabs(n[fine]) > 1e-9 ? std::clamp(moved / n[fine], -limit, limit) : 0.0;
+      c[fine] = std::clamp<int64_t>(std::llround(x[fine] - back), 0, int64_t(top[fine]));
+      double e[3], along = 0, length = 0, shorter = 0;
+      for (int a = 0; a < 3; ++a) {
+        e[a] = double(c[a]) - x[a];
+        along += e[a] * n[a];
+        length += e[a] * e[a];
+        shorter += std::log2(1.0 + std::fabs(double(c[a] - P[a])) / (a == fine ? 1 : k));
+      }
+      const double cost = along * along + kAcross * (length - along * along) + kShorter * shorter;
+      if (cost < best) best = cost, std::copy(c, c + 3, point);
+    }
+  for (int a = 0; a < 3; ++a) q[a] = uint32_t(point[a]);
+}
+
 // 14.10 for the vertex q (3 integers) with p's candidates: whether its
 // mirror candidate (if it has one) is used, priced against the mask
 // best_candidates chooses (p is left selected with that mask, *mask set);
@@ -343,13 +454,21 @@ constexpr double kShearMargin = 0.995;
 // one it keeps. Its statistics start from `stats`.
 class VisitCoder {
  public:
+  // With a lattice (14.15: positions whose lattice is k > 1), the vertices
+  // are placed on it as they are coded, in a copy of q.
   VisitCoder(const std::vector<uint32_t>& q, const uint32_t top[3], PredictionVisit* visit, const PositionStats& stats,
              CandidateChoice choice, ClassStart start, bool mask_contexts, const MirrorPlane* mirror,
-             const AttributeTwins* twins, int shear, bool axis_classes = false)
+             const AttributeTwins* twins, int shear, bool axis_classes = false,
+             const QuantizedPositions* lattice = nullptr)
       : q_(q), top_(top), visit_(visit), stats_(stats), choice_(choice), shear_(shear),
         activity_(q.size() / 3), model_(top, start, mask_contexts, axis_classes) {
     if (mirror) mirrors_.reset(images_ = new MirrorCandidates(visit->mesh(), *mirror, top));
     if (twins) mirrors_ = std::make_unique<ValueTwins>(visit->mesh(), *twins, top);
+    if (lattice && lattice->lattice > 1) {
+      lattice_ = lattice;
+      placed_ = q;
+      model_.use_lattice(lattice->lattice, start);
+    }
   }
 
   // Codes the vertices up to the limit-th of the visit (all if it has fewer).
@@ -360,6 +479,8 @@ class VisitCoder {
   // The information content coded so far.
   double bits() const { return rc_.meter.bits; }
   int shear() const { return shear_; }
+  // The grid points coded: q, or with a lattice where it placed them.
+  const std::vector<uint32_t>& coded() const { return lattice_ ? placed_ : q_; }
   // Codes the rest; the stream, and the statistics of the whole visit.
   std::vector<uint8_t> finish(PositionStats* stats) {
     code(UINT32_MAX);
@@ -371,23 +492,38 @@ class VisitCoder {
  private:
   void code_vertex(uint32_t i) {
     const uint32_t v = visit_->item(i);
-    visit_->predict(i, q_.data(), activity_.data(), top_, &p_);
+    const std::vector<uint32_t>& q = coded();
+    visit_->predict(i, q.data(), activity_.data(), top_, &p_);
     twist_weight_.apply(&p_);
     const double before = rc_.meter.bits;
     unsigned mask = 0;
     const bool mirrored =
-        mirrors_ && code_mirror_choice(&rc_, &model_, *mirrors_, v, q_, top_, choice_, &p_, &mask);
-    if (!mirrors_) mask = best_candidates(&q_[3 * size_t(v)], top_, &model_, choice_, mask_context(model_, p_), &p_);
+        mirrors_ && code_mirror_choice(&rc_, &model_, *mirrors_, v, q, top_, choice_, &p_, &mask);
+    if (!mirrors_) mask = best_candidates(&q[3 * size_t(v)], top_, &model_, choice_, mask_context(model_, p_), &p_);
     if (!mirrored) code_candidate_mask(&rc_, &model_, p_.candidates, mask, mask_context(model_, p_));
-    activity_[v] = code_residuals(&rc_, &model_, p_, &q_[3 * size_t(v)]);
-    if (!mirrored) twist_weight_.learn(p_, &q_[3 * size_t(v)]);
-    if (mirrors_) mirrors_->decoded(v, q_.data());
+    activity_[v] = lattice_ ? code_on_lattice(v, i) : code_residuals(&rc_, &model_, p_, &q[3 * size_t(v)]);
+    if (!mirrored) twist_weight_.learn(p_, &q[3 * size_t(v)]);
+    if (mirrors_) mirrors_->decoded(v, q.data());
     ++stats_.vertices_by_kind[int(p_.kind)];
     stats_.bits_by_kind[int(p_.kind)] += rc_.meter.bits - before;
     if (p_.extrapolated) ++stats_.extrapolated_vertices;
   }
 
+  // 14.15: v (the i-th visited) placed on its lattice around p_ and its
+  // residuals coded; without a fine axis (N = 0), v's grid point as it is.
+  uint32_t code_on_lattice(uint32_t v, uint32_t i) {
+    uint32_t* q = &placed_[3 * size_t(v)];
+    const int fine = lattice_fine_axis(*visit_, v, i, placed_.data(), p_.value);
+    if (fine < 0) return code_residuals(&rc_, &model_, p_, q);
+    const int k = lattice_->lattice;
+    place_on_lattice(&lattice_->x[3 * size_t(v)], &lattice_->normal[3 * size_t(v)], p_.value, top_, k, fine, q);
+    const int divisor[3] = {fine == 0 ? 1 : k, fine == 1 ? 1 : k, fine == 2 ? 1 : k};
+    return code_lattice_residuals(&rc_, &model_, p_, q, divisor);
+  }
+
   const std::vector<uint32_t>& q_;
+  const QuantizedPositions* lattice_ = nullptr;
+  std::vector<uint32_t> placed_;  // with a lattice: the points coded so far, the input's after them
   const uint32_t* top_;
   PredictionVisit* visit_;
   PositionStats stats_;
@@ -407,9 +543,10 @@ class VisitCoder {
 std::vector<uint8_t> encode_visit(const std::vector<uint32_t>& q, const uint32_t top[3], PredictionVisit& visit,
                                   PositionStats* stats, CandidateChoice choice, ClassStart start,
                                   bool mask_contexts = false, const MirrorPlane* mirror = nullptr,
-                                  const AttributeTwins* twins = nullptr, bool axis_classes = false) {
+                                  const AttributeTwins* twins = nullptr, bool axis_classes = false,
+                                  const QuantizedPositions* lattice = nullptr) {
   VisitCoder coder(q, top, &visit, stats ? *stats : PositionStats{}, choice, start, mask_contexts, mirror, twins,
-                   visit.shear(), axis_classes);
+                   visit.shear(), axis_classes, lattice);
   return coder.finish(stats);
 }
 
@@ -430,12 +567,17 @@ std::vector<uint8_t> predicted_payload(const QuantizedPositions& positions, Clas
   if (!range_stream_justifies(n, stream.size())) return {};
   std::vector<uint8_t> payload;
   put_varint(&payload, n);
-  if (order == PredictionOrder::kGeometry && (shear > 0 || extrapolate || axis_classes)) {  // methods 11 - 13
-    put_u8(&payload, axis_classes ? kAxisClassSelector : extrapolate ? kExtrapolationSelector : kShearSelector);
+  const bool lattice = positions.lattice > 1;  // method 14, which has 12's and 13's rules (14.15)
+  if (order == PredictionOrder::kGeometry && (shear > 0 || extrapolate || axis_classes || lattice)) {  // 11 - 14
+    put_u8(&payload, lattice        ? kLatticeSelector
+                     : axis_classes ? kAxisClassSelector
+                     : extrapolate  ? kExtrapolationSelector
+                                    : kShearSelector);
     put_u8(&payload, start == ClassStart::kGraded ? 1 : 0);
     put_u8(&payload, position_features(quad_twist, mask_contexts, triangle_twist));
     put_u8(&payload, uint8_t(shear));
     put_u8(&payload, !mirror ? 0 : mirror->near_images ? 2 : 1);
+    if (lattice) put_u8(&payload, uint8_t(positions.lattice));
     if (mirror) {
       put_u8(&payload, uint8_t(mirror->axis));
       put_varint(&payload, mirror->sum);
@@ -490,6 +632,8 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
   mask_contexts = mask_contexts && order == PredictionOrder::kGeometry;
   triangle_twist = triangle_twist && order == PredictionOrder::kGeometry;
   if (order != PredictionOrder::kGeometry) mirror = nullptr, shear = 0, extrapolate = false, axis_classes = false;
+  const QuantizedPositions* lattice = order == PredictionOrder::kGeometry && positions.lattice > 1 ? &positions : nullptr;
+  if (lattice) axis_classes = true;      // method 14 has 14.14's tables (14.15)
   if (axis_classes) extrapolate = true;  // method 13 has 14.13's rule (14.14)
   VertexCorners corners;
   corners.build(uint32_t(positions.q.size() / 3), faces.face_sizes, faces.corners);
@@ -501,7 +645,7 @@ std::vector<uint8_t> encode_predicted_positions(const QuantizedPositions& positi
   return predicted_payload(
       positions, start, order, quad_twist, mask_contexts, triangle_twist, mirror,
       encode_visit(positions.q, positions.top.data(), visit, stats, choice, start, mask_contexts, mirror, nullptr,
-                   axis_classes),
+                   axis_classes, lattice),
       shear, extrapolate, axis_classes);
 }
 
@@ -781,13 +925,13 @@ std::vector<uint8_t> code_weighing_shear(const QuantizedPositions& positions, Pr
   coders.reserve(4);  // at most 0, 8, 12 and 16
   const auto coded_head = [&](int weight) {
     coders.emplace_back(positions.q, positions.top.data(), visit, *stats, choice, start, contexts, plane, nullptr,
-                        weight, axis_classes);
+                        weight, axis_classes, &positions);
     coders.back().code(kShearPrefix);
     return coders.back().bits();
   };
   *k = weigh ? shear_weight(coded_head(0), coded_head) : 0;
   if (!weigh) coders.emplace_back(positions.q, positions.top.data(), visit, *stats, choice, start, contexts, plane,
-                                  nullptr, 0, axis_classes);
+                                  nullptr, 0, axis_classes, &positions);
   return std::find_if(coders.begin(), coders.end(), [&](const VisitCoder& c) { return c.shear() == *k; })
       ->finish(stats);
 }
@@ -813,8 +957,11 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   // 14.13: the rule adds candidates only where 14.3.1 has none, so a visit
   // in which it adds none codes what it would without it, and is written
   // with the method before (used() below).
-  visit.extrapolate_edges(edge_extrapolation);
-  const auto used = [&](const PositionStats& s) { return s.extrapolated_vertices > before.extrapolated_vertices; };
+  const bool lattice = order == PredictionOrder::kGeometry && positions.lattice > 1;  // method 14 (14.15)
+  visit.extrapolate_edges(edge_extrapolation || lattice);
+  const auto used = [&](const PositionStats& s) {
+    return lattice || s.extrapolated_vertices > before.extrapolated_vertices;
+  };
   const bool twisted = order == PredictionOrder::kGeometry && quad_twist && has_quads(faces) &&
                        twist_pays(positions, &visit);
   visit.twist_quads(twisted);
@@ -832,8 +979,8 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
       shear && order == PredictionOrder::kGeometry && positions.q.size() / 3 >= kShearFrom && has_triangles(faces);
   // 14.14: from kAxisClassesFrom vertices, with the rule of 14.13 (method 13
   // has it), class probabilities per axis too; a rule, no second pass.
-  const bool axis = axis_class_probabilities && edge_extrapolation && order == PredictionOrder::kGeometry &&
-                    positions.q.size() / 3 >= kAxisClassesFrom;
+  const bool axis = lattice || (axis_class_probabilities && edge_extrapolation &&
+                                order == PredictionOrder::kGeometry && positions.q.size() / 3 >= kAxisClassesFrom);
   int k = 0;
   const std::vector<uint8_t> stream =
       code_weighing_shear(positions, &visit, weigh_shear, stats, choice, start, contexts, planed, axis, &k);
@@ -862,9 +1009,10 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     MirrorPlane exact = plane;
     exact.near_images = false;
     const std::vector<uint8_t> exact_stream =
-        encode_visit(positions.q, top, visit, &exact_stats, choice, start, contexts, &exact);
+        encode_visit(positions.q, top, visit, &exact_stats, choice, start, contexts, &exact, nullptr, axis, &positions);
     std::vector<uint8_t> exact_payload = predicted_payload(positions, start, order, twisted, contexts,
-                                                           triangles_twisted, &exact, exact_stream, k, used(exact_stats));
+                                                           triangles_twisted, &exact, exact_stream, k, used(exact_stats),
+                                                           axis);
     if (!exact_payload.empty() && exact_payload.size() <= best.size()) {
       best = std::move(exact_payload);
       *stats = exact_stats;
@@ -878,9 +1026,10 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     // they save (cylinder_ngon_caps: 4 - 10 bytes): methods 4 - 8 too, the
     // smaller kept.
     PositionStats plain_stats = before;
-    const std::vector<uint8_t> plain_stream = encode_visit(positions.q, top, visit, &plain_stats, choice, start, contexts);
+    const std::vector<uint8_t> plain_stream =
+        encode_visit(positions.q, top, visit, &plain_stats, choice, start, contexts, nullptr, nullptr, axis, &positions);
     std::vector<uint8_t> plain = predicted_payload(positions, start, order, twisted, contexts, triangles_twisted,
-                                                   nullptr, plain_stream, k, used(plain_stats));
+                                                   nullptr, plain_stream, k, used(plain_stats), axis);
     if (!plain.empty() && plain.size() <= best.size()) {
       best = std::move(plain);
       *stats = plain_stats;
@@ -889,7 +1038,7 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
   }
   // Under 1,000 vertices the label order's payload too, unless method 9's or 10's
   // twins pay (the label order has none: on the corpus it never won then).
-  if (order == PredictionOrder::kGeometry && positions.q.size() / 3 < kGradedStartBelow && method < 9) {
+  if (order == PredictionOrder::kGeometry && positions.q.size() / 3 < kGradedStartBelow && method < 9 && !lattice) {
     PositionStats label_stats = before;
     PredictionVisit labels_visit(corners, PredictionOrder::kLabels);
     std::vector<uint8_t> labels =
@@ -915,6 +1064,10 @@ std::vector<uint8_t> encode_predicted_choice(const QuantizedPositions& positions
     stats->axis_classes = true;
     method = 13;
   }
+  if (lattice && method >= 4) {  // method 13 on the surface lattice (14.15)
+    stats->lattice = positions.lattice;
+    method = 14;
+  }
   stats->method = method;
   stats->features = method >= 4 ? position_features(twisted, contexts, triangles_twisted) : 0;
   stats->graded_start = start == ClassStart::kGraded;
@@ -929,8 +1082,10 @@ std::vector<uint8_t> encode_positions(const QuantizedPositions& positions, const
   *stats = PositionStats{};
   stats->step = positions.step;
   stats->top = positions.top;
-  stats->error_bound = 0.5 * std::sqrt(positions.step[0] * positions.step[0] + positions.step[1] * positions.step[1] +
-                                       positions.step[2] * positions.step[2]);
+  // 14.15: a vertex on a lattice of factor k lies within k steps per axis.
+  const double within = positions.lattice > 1 ? double(positions.lattice) : 0.5;
+  stats->error_bound = within * std::sqrt(positions.step[0] * positions.step[0] +
+                                          positions.step[1] * positions.step[1] + positions.step[2] * positions.step[2]);
   std::vector<uint8_t> deltas;
   if (positions.per_axis_bits && method != PositionMethod::kPredicted) deltas = encode_positions(positions);
   if (method == PositionMethod::kDeltas) return deltas;

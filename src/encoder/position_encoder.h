@@ -26,7 +26,18 @@ struct QuantizedPositions {
   std::array<double, 3> step{};
   std::array<uint32_t, 3> top{};
   std::vector<uint32_t> q;  // 3 per vertex
+  // POSN method 14 (14.15): with lattice k > 1 each vertex is placed on the
+  // surface lattice around its prediction as it is coded, near x (the
+  // input in grid units) and across the surface of `normal` (unit, by
+  // vertex), 3 per vertex each (set_surface_lattice).
+  int lattice = 1;
+  std::vector<double> x, normal;
 };
+
+// 14.15: the lattice of factor k (2 .. 16) for positions quantized from
+// mesh (the coder's faces and binary32 positions): x and the area-weighted
+// normals. Tops must be below 2^24 (an error naming the bits otherwise).
+Status set_surface_lattice(const Mesh& mesh, int k, QuantizedPositions* positions);
 
 // Section 6.1: each axis over its own range in 2^bits - 1 steps.
 QuantizedPositions quantize_positions(const std::vector<float>& positions, int bits);

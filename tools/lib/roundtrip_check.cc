@@ -263,7 +263,9 @@ RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decode
   const QuantizationInfo& q = decoded.quantization;
   double allowed[3];
   for (int a = 0; a < 3; ++a) {
-    allowed[a] = 0.5 * q.step[a] * (1 + 1e-9) + float_ulp(std::fmax(std::fabs(q.min[a]), std::fabs(q.max[a])));
+    // Half a step (6.4, 14.1), or on 14.15's lattice the k steps its encoder keeps to.
+    const double within = q.lattice > 1 ? double(q.lattice) : 0.5;
+    allowed[a] = within * q.step[a] * (1 + 1e-9) + float_ulp(std::fmax(std::fabs(q.min[a]), std::fabs(q.max[a])));
     report.max_bbox_side = std::fmax(report.max_bbox_side, double(q.max[a]) - double(q.min[a]));
   }
   double sum_sq = 0;

@@ -46,7 +46,7 @@ struct RoundTripReport {
 // possibly starting at another corner unless c.exact_corners, never
 // reversed); every coordinate
 // must lie within half a quantization step (plus binary32 rounding) of the
-// input.
+// input, or k steps on POSN method 14's lattice of factor k (spec 14.15).
 RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decoded, const Correspondence& c);
 // The same with the spec's correspondence for the file's method, or the
 // identity_correspondence when the decoder applied an oRDR chunk.
