@@ -23,8 +23,11 @@
 #   attributes.md    issue 16: texture coordinates and normals (spec 15)
 #                    against Draco cl10 at the same bits, on every corpus
 #                    mesh with attributes.
+#   surface_lattice.md  POSN method 14 (--surface-lattice, spec 14.15)
+#                    against Draco cl10 at the same distance between the
+#                    surfaces, corpus triangle meshes at 12, 14, 16 bits.
 # ONLY=compression, ONLY=topology, ONLY=seed003, ONLY=progressive,
-# ONLY=attributes or ONLY=gim regenerates that one file.
+# ONLY=attributes, ONLY=lattice or ONLY=gim regenerates that one file.
 # RUNS (default 7) runs per measurement, LARGE_RUNS (default 3) for the
 # ~1M-quad sphere; medians are reported. Run on an otherwise idle machine.
 set -euo pipefail
@@ -104,8 +107,18 @@ attributes_result() {
     "$corpus"/quad/suzanne.obj
 }
 
+# lattice_result: docs/results/surface_lattice.md (sizes and distances only, no times).
+lattice_result() {
+  write_result docs/results/surface_lattice.md "The surface lattice (POSN method 14) against Draco cl10 at the same L2" \
+    python3 bench/surface_lattice.py build/tools/qmc "$work" 12,14,16 "$corpus"/tri/*
+}
+
 if [ "${ONLY:-}" = compression ]; then
   compression_result
+  exit 0
+fi
+if [ "${ONLY:-}" = lattice ]; then
+  lattice_result
   exit 0
 fi
 if [ "${ONLY:-}" = attributes ]; then
@@ -148,6 +161,7 @@ compression_result
 seed003_result
 progressive_result
 attributes_result
+lattice_result
 fi
 mkdir -p docs/results/gim
 write_result docs/results/gim.md "Geometry images: seeds 000 and 002 rerun with qmc, and lossless planes against zstd and PNG" \
