@@ -171,6 +171,14 @@ check lattice-4-not-1.18 2 "$qmc" encode "$work/lattice.obj" "$work/lattice18.qm
 contains lattice-4-not-1.18-says "$work/err" "needs --format 1.19"
 check lattice-17-refused 2 "$qmc" encode "$work/lattice.obj" "$work/lattice17.qmc" --surface-lattice 17
 check lattice-progressive-refused 2 "$qmc" encode "$work/lattice.obj" "$work/latticep.qmc" --surface-lattice 4 --progressive
+# --surface-lattice auto: every factor coded and measured, the smallest file within the grid's L2 kept.
+check lattice-auto 0 "$qmc" encode "$work/lattice.obj" "$work/latticea.qmc" --surface-lattice auto
+contains lattice-auto-trials "$work/out" "^lattice     --surface-lattice auto (spec 14.15):.* grid [0-9]* bytes.*F = 6 [0-9]* bytes"
+contains lattice-auto-kept "$work/out" "F = [2-6] kept$"
+check lattice-auto-verify 0 "$qmc" verify "$work/lattice.obj" "$work/latticea.qmc"
+check lattice-auto-not-1.18 2 "$qmc" encode "$work/lattice.obj" "$work/latticea18.qmc" --surface-lattice auto --format 1.18
+check lattice-auto-quiet 0 "$qmc" encode "$work/lattice.obj" "$work/latticeq.qmc" --surface-lattice auto --quiet
+if [ -s "$work/out" ]; then failed=$((failed + 1)); echo "FAIL lattice-auto-quiet: output with --quiet"; else passed=$((passed + 1)); fi
 # Spec 14.12: an irregular triangulation takes POSN method 11 (format 1.15); --format 1.14 keeps method 10 or below.
 "$meshgen" jittered-sphere 3 11 "$work/jittered.obj" >/dev/null
 check format-1.15 0 "$qmc" encode "$work/jittered.obj" "$work/f115.qmc" --quiet --format 1.16

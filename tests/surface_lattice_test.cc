@@ -4,7 +4,9 @@
 // the surfaces as near each other as the grid's, fewer bytes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 #include "common/geometry_order.h"
@@ -17,6 +19,7 @@
 #include "qmc/encoder.h"
 #include "random_polygon_mesh.h"
 #include "roundtrip_check.h"
+#include "surface_lattice_choice.h"
 
 namespace qmc {
 namespace {
@@ -176,6 +179,41 @@ TEST(SurfaceLattice, RandomPolygonMeshesRoundTrip) {
     const tools::RoundTripReport report = tools::check_round_trip(mesh, file);
     EXPECT_TRUE(report.ok()) << seed << ": " << report.face_mismatch << report.position_mismatch;
   }
+}
+
+TEST(SurfaceLatticeChoice, AJitteredSphereTakesTheSmallestFileWithinTheGridsL2) {
+  const Mesh sphere = tools::make_jittered_sphere(4, 0.3f, 5);  // qmc-meshgen jittered-sphere 4 5
+  EncodeOptions options;
+  options.position_bits = 12;
+  int factor = 0;
+  std::vector<tools::LatticeTrial> trials;
+  ASSERT_TRUE(tools::choose_surface_lattice(sphere, options, 20000, &factor, &trials).ok());
+  ASSERT_EQ(trials.size(), 1 + std::size(tools::kLatticeTrialFactors));
+  const tools::LatticeTrial& grid = trials.front();
+  EXPECT_EQ(grid.factor, 1);
+  ASSERT_GT(factor, 1);
+  // No smaller lattice file within the grid's L2 was passed over.
+  const auto chosen = std::find_if(trials.begin(), trials.end(),
+                                   [&](const tools::LatticeTrial& t) { return t.factor == factor; });
+  ASSERT_NE(chosen, trials.end());
+  EXPECT_TRUE(chosen->on_lattice);
+  EXPECT_LE(chosen->l2, grid.l2);
+  EXPECT_LT(chosen->bytes, grid.bytes);
+  for (const tools::LatticeTrial& t : trials) {
+    if (t.on_lattice && t.l2 <= grid.l2) {
+      EXPECT_GE(t.bytes, chosen->bytes) << t.factor;
+    }
+  }
+}
+
+TEST(SurfaceLatticeChoice, ARegularTorusKeepsTheGrid) {
+  const Mesh torus = tools::triangulated(tools::make_torus(48, 24));
+  EncodeOptions options;
+  options.position_bits = 12;
+  int factor = 0;
+  std::vector<tools::LatticeTrial> trials;
+  ASSERT_TRUE(tools::choose_surface_lattice(torus, options, 20000, &factor, &trials).ok());
+  EXPECT_EQ(factor, 1);
 }
 
 TEST(SurfaceLattice, GridsOfMoreThan24BitsAreRefused) {

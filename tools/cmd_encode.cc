@@ -15,6 +15,7 @@
 #include "qmc/decoder.h"
 #include "qmc/encoder.h"
 #include "progressive_rate.h"
+#include "surface_lattice_choice.h"
 #include "roundtrip_check.h"
 
 namespace qmc::cli {
@@ -39,14 +40,16 @@ const char kHelp[] =
     "  --max-error E       the coarsest uniform grid that keeps every vertex\n"
     "                      within distance E (model units) of its input, binary32\n"
     "                      rounding included; instead of --bits\n"
-    "  --surface-lattice F positions keep the grid's step along the axis nearest\n"
+    "  --surface-lattice F|auto  positions keep the grid's step along the axis nearest\n"
     "                      the surface's normal and take steps of F (2..16)\n"
     "                      along the other two (POSN method 14, spec 14.15),\n"
     "                      where that codes smaller than the grid (the report\n"
     "                      says): on dense scans smaller files at about the\n"
     "                      same distance between the surfaces, but a vertex\n"
     "                      may move up to F steps per axis along the surface\n"
-    "                      (verify allows that)\n"
+    "                      (verify allows that); auto: the F of the smallest\n"
+    "                      file no farther from the input (L2) than the\n"
+    "                      grid's, each F of 2, 3, 4, 6 coded and measured\n"
     "  --positions M       auto (default): predicted positions (spec 14), or on\n"
     "                      the per-axis grid the smaller of them and deltas;\n"
     "                      predicted; deltas: spec 6's deltas (--grid per-axis)\n"
@@ -175,6 +178,7 @@ struct EncodeArgs {
   // of its parameters the user fixed.
   tools::RateTarget rate;
   bool levels_given = false, bits_given = false, step_scale_given = false;
+  bool lattice_auto = false;  // --surface-lattice auto (tools/lib/surface_lattice_choice.h)
 };
 
 const CommandSpec kSpec{"encode",
@@ -250,9 +254,11 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
         return usage_error("encode", "--max-error takes a number > 0 in model units, got '" + value + "'");
     } else if (name == "--surface-lattice") {
       long k = 0;
-      if (!parse_int(value, 2, 16, &k))
-        return usage_error("encode", "--surface-lattice takes a factor 2..16 (spec 14.15), got '" + value + "'");
-      o.surface_lattice = int(k);
+      if (value == "auto")
+        args->lattice_auto = true;
+      else if (!parse_int(value, 2, 16, &k))
+        return usage_error("encode", "--surface-lattice takes a factor 2..16 (spec 14.15) or auto, got '" + value + "'");
+      o.surface_lattice = args->lattice_auto ? 1 : int(k);
     } else if (name == "--positions") {
       if (value == "auto") o.position_method = PositionMethod::kAuto;
       else if (value == "deltas") o.position_method = PositionMethod::kDeltas;
@@ -270,10 +276,11 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
     return usage_error("encode", "--grid, --step and --max-error are for plain files: a progressive base takes "
                                  "--bits on spec 6.1's grid, a geometry image its own planes");
   if (grids > 1) return usage_error("encode", "give one of --bits/--grid, --step or --max-error");
-  if (o.surface_lattice > 1 && (args->progressive || args->options.gim.size > 0))
+  const bool lattice = o.surface_lattice > 1 || args->lattice_auto;
+  if (lattice && (args->progressive || args->options.gim.size > 0))
     return usage_error("encode", "--surface-lattice (POSN method 14) is for plain files, not progressive ones or "
                                  "geometry images");
-  if (o.surface_lattice > 1 && (o.position_method == PositionMethod::kDeltas || !o.geometry_order))
+  if (lattice && (o.position_method == PositionMethod::kDeltas || !o.geometry_order))
     return usage_error("encode", "--surface-lattice (POSN method 14) needs predicted positions in the geometry "
                                  "order");
   if (o.position_method == PositionMethod::kDeltas && !args->progressive &&
@@ -287,7 +294,8 @@ int parse_positions(const CommandLine& cl, EncodeArgs* args) {
 int limit_to_format(const CommandLine& cl, EncodeArgs* args) {
   EncodeOptions& o = args->options;
   if (args->newest_minor >= 19) return -1;
-  if (o.surface_lattice > 1) return usage_error("encode", "--surface-lattice (POSN method 14, spec 14.15) needs --format 1.19");
+  if (o.surface_lattice > 1 || args->lattice_auto)
+    return usage_error("encode", "--surface-lattice (POSN method 14, spec 14.15) needs --format 1.19");
   if (args->newest_minor >= 18) return -1;
   o.polygon_quad_contexts = false;  // CONN coding 8 (5.4.10) came with 1.18
   if (args->newest_minor >= 17) return -1;
@@ -912,6 +920,28 @@ int encode_gim(EncodeArgs& args, const Mesh& mesh, uint64_t input_bytes) {
   return kExitOk;
 }
 
+// --surface-lattice auto: the factor of the smallest file no farther from
+// the input (L2) than the grid's, each candidate coded, decoded and measured
+// with 50,000 samples; the trials printed; -1 to carry on.
+int choose_lattice(EncodeArgs* args, const Mesh& mesh, Progress& progress) {
+  progress.stage("trying the surface lattice's factors");
+  int factor = 1;
+  std::vector<tools::LatticeTrial> trials;
+  if (Status s = tools::choose_surface_lattice(mesh, args->options, 50000, &factor, &trials); !s.ok())
+    return fail("encode", s);
+  args->options.surface_lattice = factor;
+  if (args->quiet) return -1;
+  std::printf("lattice     --surface-lattice auto (spec 14.15): L2 / bounding-box diagonal, 50,000 samples:");
+  for (const tools::LatticeTrial& t : trials) {
+    std::printf(" %s %llu bytes %.3g%s;", t.factor == 1 ? "grid" : ("F = " + std::to_string(t.factor)).c_str(),
+                static_cast<unsigned long long>(t.bytes), t.l2,
+                t.factor == 1 || t.on_lattice ? "" : " (grid kept)");
+  }
+  std::printf(" %s\n", factor == 1 ? "the grid kept: no lattice file smaller at its L2"
+                                    : ("F = " + std::to_string(factor) + " kept").c_str());
+  return -1;
+}
+
 }  // namespace
 
 int run_encode(int argc, char** argv) {
@@ -940,6 +970,8 @@ int run_encode(int argc, char** argv) {
   if (args.options.gim.size > 0) return encode_gim(args, mesh, input_size);
   std::vector<uint8_t> bytes;
   EncodeStats stats;
+  if (args.lattice_auto)
+    if (int rc = choose_lattice(&args, mesh, progress); rc >= 0) return rc;
   progress.stage("encoding " + std::to_string(mesh.face_count()) + " faces");
   if (Status s = encode(mesh, args.options, &bytes, &stats); !s.ok()) return fail("encode", s);
   // Decode what was written: the report's error figures are measured, not
