@@ -186,8 +186,10 @@ TEST(SurfaceLatticeChoice, AJitteredSphereTakesTheSmallestFileWithinTheGridsL2) 
   EncodeOptions options;
   options.position_bits = 12;
   int factor = 0;
+  std::vector<uint8_t> bytes;
+  EncodeStats stats;
   std::vector<tools::LatticeTrial> trials;
-  ASSERT_TRUE(tools::choose_surface_lattice(sphere, options, 20000, &factor, &trials).ok());
+  ASSERT_TRUE(tools::choose_surface_lattice(sphere, options, 20000, &factor, &bytes, &stats, &trials).ok());
   ASSERT_EQ(trials.size(), 1 + std::size(tools::kLatticeTrialFactors));
   const tools::LatticeTrial& grid = trials.front();
   EXPECT_EQ(grid.factor, 1);
@@ -211,8 +213,10 @@ TEST(SurfaceLatticeChoice, ARegularTorusKeepsTheGrid) {
   EncodeOptions options;
   options.position_bits = 12;
   int factor = 0;
+  std::vector<uint8_t> bytes;
+  EncodeStats stats;
   std::vector<tools::LatticeTrial> trials;
-  ASSERT_TRUE(tools::choose_surface_lattice(torus, options, 20000, &factor, &trials).ok());
+  ASSERT_TRUE(tools::choose_surface_lattice(torus, options, 20000, &factor, &bytes, &stats, &trials).ok());
   EXPECT_EQ(factor, 1);
 }
 

@@ -920,14 +920,15 @@ int encode_gim(EncodeArgs& args, const Mesh& mesh, uint64_t input_bytes) {
   return kExitOk;
 }
 
-// --surface-lattice auto: the factor of the smallest file no farther from
-// the input (L2) than the grid's, each candidate coded, decoded and measured
-// with 50,000 samples; the trials printed; -1 to carry on.
-int choose_lattice(EncodeArgs* args, const Mesh& mesh, Progress& progress) {
+// --surface-lattice auto: the file (bytes, stats) of the smallest file no
+// farther from the input (L2) than the grid's, each candidate coded, decoded
+// and measured with 50,000 samples; the trials printed; -1 to carry on.
+int choose_lattice(EncodeArgs* args, const Mesh& mesh, Progress& progress, std::vector<uint8_t>* bytes,
+                   EncodeStats* stats) {
   progress.stage("trying the surface lattice's factors");
   int factor = 1;
   std::vector<tools::LatticeTrial> trials;
-  if (Status s = tools::choose_surface_lattice(mesh, args->options, 50000, &factor, &trials); !s.ok())
+  if (Status s = tools::choose_surface_lattice(mesh, args->options, 50000, &factor, bytes, stats, &trials); !s.ok())
     return fail("encode", s);
   args->options.surface_lattice = factor;
   if (args->quiet) return -1;
@@ -970,10 +971,12 @@ int run_encode(int argc, char** argv) {
   if (args.options.gim.size > 0) return encode_gim(args, mesh, input_size);
   std::vector<uint8_t> bytes;
   EncodeStats stats;
-  if (args.lattice_auto)
-    if (int rc = choose_lattice(&args, mesh, progress); rc >= 0) return rc;
-  progress.stage("encoding " + std::to_string(mesh.face_count()) + " faces");
-  if (Status s = encode(mesh, args.options, &bytes, &stats); !s.ok()) return fail("encode", s);
+  if (args.lattice_auto) {
+    if (int rc = choose_lattice(&args, mesh, progress, &bytes, &stats); rc >= 0) return rc;
+  } else {
+    progress.stage("encoding " + std::to_string(mesh.face_count()) + " faces");
+    if (Status s = encode(mesh, args.options, &bytes, &stats); !s.ok()) return fail("encode", s);
+  }
   // Decode what was written: the report's error figures are measured, not
   // derived. Our own output: the decoder limits of spec 8.1 are for files of
   // unknown origin, so none apply.

@@ -63,11 +63,10 @@ struct PositionResidualModel {
   int max_class[3];  // bitlen(top_a): k of 13.5.6 per axis
   bool mask_contexts;  // 14.8: methods 6 and 7
   bool axis_classes;   // 14.14: method 13
-  int lattice = 1;     // 14.15: method 14's k; 1 without a lattice
   explicit PositionResidualModel(const uint32_t top[3], ClassStart start = ClassStart::kFlat,
                                  bool with_mask_contexts = false, bool with_axis_classes = false);
-  // 14.15: a lattice of factor k, its tables starting as CLS does.
-  void use_lattice(int k, ClassStart start);
+  // 14.15 (method 14): the lattice's tables, starting as CLS does.
+  void start_lattice_classes(ClassStart start);
 };
 
 // The class probabilities of one group as `start` has them begin (14.4.1),
@@ -102,8 +101,7 @@ inline PositionResidualModel::PositionResidualModel(const uint32_t top[3], Class
   std::fill(&mantissa[0][0], &mantissa[0][0] + sizeof(mantissa) / sizeof(uint16_t), uint16_t(1024));
 }
 
-inline void PositionResidualModel::use_lattice(int k, ClassStart start) {
-  lattice = k;
+inline void PositionResidualModel::start_lattice_classes(ClassStart start) {
   const ClassStartTable& table = start == ClassStart::kFlat ? kFlatClassTable : kGradedClassTable;
   static_assert(sizeof lattice_cls == sizeof table.p, "the lattice's classes are one ClassStartTable");
   std::memcpy(lattice_cls, table.p, sizeof table.p);

@@ -18,17 +18,19 @@
 namespace qmc {
 namespace {
 
-// 14.15 (POSN method 14) for the vertex being decoded: the steps of its
-// residuals per axis, or null (every step 1) without a lattice or where
-// its normal estimate is 0.
+// 14.15 (POSN method 14) for the vertex being decoded, the i-th visited:
+// the steps of its residuals per axis predicted at p, in out (1 on the
+// fine axis, k on the others), or all 1 without a lattice or where its
+// normal estimate is 0.
 struct Lattice {
   const PredictionVisit* visit = nullptr;  // null: no lattice
   int k = 1;
   uint32_t vertex = 0, i = 0;
   const uint32_t* q = nullptr;
-  const int* divisors(const VertexPrediction& p, int* out) const {
-    const int fine = lattice_fine_axis(*visit, vertex, i, q, p.value);
-    if (fine < 0) return nullptr;
+  const int* steps(const VertexPrediction& p, int* out) const {
+    static constexpr int kGridSteps[3] = {1, 1, 1};
+    const int fine = visit ? lattice_fine_axis(*visit, vertex, i, q, p.value) : -1;
+    if (fine < 0) return kGridSteps;
     for (int a = 0; a < 3; ++a) out[a] = a == fine ? 1 : k;
     return out;
   }
@@ -66,15 +68,6 @@ Status decode_residuals(RangeDecoder* rc, PositionResidualModel* model, const Pr
   return Status::Ok();
 }
 
-// 14.15: the steps of the vertex's residuals per axis, all 1 without a
-// lattice or where its normal estimate is 0.
-const int* residual_steps(const VertexPrediction& p, const Lattice& lattice, int* steps) {
-  static constexpr int kGridSteps[3] = {1, 1, 1};
-  if (!lattice.visit) return kGridSteps;
-  const int* lattice_steps = lattice.divisors(p, steps);
-  return lattice_steps ? lattice_steps : kGridSteps;
-}
-
 // Section 14.4 for one vertex (or attribute value) whose candidates and
 // fallback are in p: the mask, then the residuals. selected_all: p is
 // selected with every candidate already (14.10's reference), which the mask
@@ -87,7 +80,7 @@ Status decode_vertex(RangeDecoder* rc, PositionResidualModel* model, const Predi
   if (!(selected_all && mask == all)) select_candidates(p, mask, top);
   if (rc->overrun()) return truncated_inside(names, v);
   int steps[3];
-  return decode_residuals(rc, model, names, v, top, p, q, activity, residual_steps(*p, lattice, steps));
+  return decode_residuals(rc, model, names, v, top, p, q, activity, lattice.steps(*p, steps));
 }
 
 // Section 14.10 (POSN methods 9 and 10) for vertex `vertex`, the i-th visited: if it
@@ -107,8 +100,7 @@ Status decode_mirrored(RangeDecoder* rc, PositionResidualModel* model, const Pre
   p->kind = PredictionKind::kMirror;
   std::copy(candidate, candidate + 3, p->value);
   int steps[3];
-  return decode_residuals(rc, model, names, i, top, p, &q[3 * size_t(vertex)], activity,
-                          residual_steps(*p, lattice, steps));
+  return decode_residuals(rc, model, names, i, top, p, &q[3 * size_t(vertex)], activity, lattice.steps(*p, steps));
 }
 
 }  // namespace
@@ -140,7 +132,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   std::vector<PositionResidualModel> model(1, PositionResidualModel(top, start, mask_contexts, axis_classes));
   Lattice lattice;
   if (lattice_factor > 1) {
-    model[0].use_lattice(lattice_factor, start);
+    model[0].start_lattice_classes(start);
     lattice.visit = &visit;
     lattice.k = lattice_factor;
     lattice.q = quantized->data();

@@ -323,28 +323,19 @@ unsigned best_candidates(const uint32_t* q, const uint32_t* top, PositionResidua
 
 // 14.4's residuals of the vertex q (3 integers) predicted by p, coded by
 // coder (an encoder, or a CostMeter to price them); their activity.
+// With 14.15's lattice (divisor: the steps per axis, q on the lattice, so
+// every residual a multiple of its step) axis a's residual is coded in
+// steps of divisor[a]; the activity stays in grid steps.
 template <class Coder>
-uint32_t code_residuals(Coder* coder, PositionResidualModel* model, const VertexPrediction& p, const uint32_t* q) {
+uint32_t code_residuals(Coder* coder, PositionResidualModel* model, const VertexPrediction& p, const uint32_t* q,
+                        const int* divisor = nullptr) {
   uint32_t magnitude[3] = {0, 0, 0};
   for (int a = 0; a < 3; ++a) {
     const int64_t r = int64_t(q[a]) - p.value[a];
     magnitude[a] = uint32_t(r < 0 ? -r : r);
-    code_position_residual(coder, model, p, magnitude, a, SignedResidual{magnitude[a], r < 0});
-  }
-  return magnitude[0] + magnitude[1] + magnitude[2];
-}
-
-// 14.15: the same on a lattice, axis a's residual coded in steps of
-// divisor[a] (q on the lattice: every residual a multiple of its step).
-template <class Coder>
-uint32_t code_lattice_residuals(Coder* coder, PositionResidualModel* model, const VertexPrediction& p,
-                                const uint32_t* q, const int* divisor) {
-  uint32_t magnitude[3] = {0, 0, 0};
-  for (int a = 0; a < 3; ++a) {
-    const int64_t r = int64_t(q[a]) - p.value[a];
-    magnitude[a] = uint32_t(r < 0 ? -r : r);
-    const uint32_t steps = magnitude[a] / uint32_t(divisor[a]);
-    code_position_residual(coder, model, p, magnitude, a, SignedResidual{steps, r < 0}, divisor[a]);
+    const int step = divisor ? divisor[a] : 1;
+    const uint32_t coded = step == 1 ? magnitude[a] : magnitude[a] / uint32_t(step);
+    code_position_residual(coder, model, p, magnitude, a, SignedResidual{coded, r < 0}, step);
   }
   return magnitude[0] + magnitude[1] + magnitude[2];
 }
@@ -467,7 +458,7 @@ class VisitCoder {
     if (lattice && lattice->lattice > 1) {
       lattice_ = lattice;
       placed_ = q;
-      model_.use_lattice(lattice->lattice, start);
+      model_.start_lattice_classes(start);
     }
   }
 
@@ -518,7 +509,7 @@ class VisitCoder {
     const int k = lattice_->lattice;
     place_on_lattice(&lattice_->x[3 * size_t(v)], &lattice_->normal[3 * size_t(v)], p_.value, top_, k, fine, q);
     const int divisor[3] = {fine == 0 ? 1 : k, fine == 1 ? 1 : k, fine == 2 ? 1 : k};
-    return code_lattice_residuals(&rc_, &model_, p_, q, divisor);
+    return code_residuals(&rc_, &model_, p_, q, divisor);
   }
 
   const std::vector<uint32_t>& q_;

@@ -27,8 +27,9 @@ struct LatticeTrial {
 // Encodes mesh with `options` on the grid (surface_lattice 1) and with each
 // factor of kLatticeTrialFactors, measures each decoded file with `samples`
 // area samples, and sets *factor to the one of the smallest file whose L2 is
-// at most the grid's (1 if none is). trials gets the grid's first.
+// at most the grid's (1 if none is), *bytes and *stats to that file's
+// (what encode gives with that factor). trials gets the grid's first.
 Status choose_surface_lattice(const Mesh& mesh, const EncodeOptions& options, size_t samples, int* factor,
-                              std::vector<LatticeTrial>* trials);
+                              std::vector<uint8_t>* bytes, EncodeStats* stats, std::vector<LatticeTrial>* trials);
 
 }  // namespace qmc::tools
