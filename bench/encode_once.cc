@@ -11,7 +11,9 @@
 // alone, keep the allocator's memory:
 //   GLIBC_TUNABLES=glibc.malloc.trim_threshold=1073741824:glibc.malloc.mmap_threshold=1073741824
 //
-//   qmc_encode_once MESH BITS [REPEAT]
+// START_FACES: EncodeOptions::start_faces (default 1).
+//
+//   qmc_encode_once MESH BITS [REPEAT [START_FACES]]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -45,14 +47,15 @@ double encode_ms(const qmc::Mesh& mesh, const qmc::EncodeOptions& options, size_
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 3 || argc > 4) fail("usage: qmc_encode_once MESH BITS [REPEAT]");
+  if (argc < 3 || argc > 5) fail("usage: qmc_encode_once MESH BITS [REPEAT [START_FACES]]");
   qmc::Mesh mesh;
   std::vector<std::string> notes;
   if (const qmc::Status s = qmc::bench::read_geometry(argv[1], &mesh, &notes); !s.ok()) fail(s.to_string());
   qmc::bench::drop_unused_vertices(&mesh);
   qmc::EncodeOptions options;
   options.position_bits = std::atoi(argv[2]);
-  const int repeat = argc == 4 ? std::atoi(argv[3]) : 0;
+  const int repeat = argc >= 4 ? std::atoi(argv[3]) : 0;
+  if (argc == 5) options.start_faces = uint32_t(std::atoi(argv[4]));
   size_t bytes = 0;
   const qmc::bench::FirstAndRepeats t =
       qmc::bench::first_and_repeats(repeat, [&] { return encode_ms(mesh, options, &bytes); });

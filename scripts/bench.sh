@@ -26,8 +26,11 @@
 #   surface_lattice.md  POSN method 14 (--surface-lattice, spec 14.15)
 #                    against Draco cl10 at the same distance between the
 #                    surfaces, corpus triangle meshes at 12, 14, 16 bits.
+#   start_faces.md   --start-faces N (the polygon coder's first faces, spec
+#                    5.4.2): bytes and encode time on every corpus mesh.
 # ONLY=compression, ONLY=topology, ONLY=seed003, ONLY=progressive,
-# ONLY=attributes, ONLY=lattice or ONLY=gim regenerates that one file.
+# ONLY=attributes, ONLY=lattice, ONLY=starts or ONLY=gim regenerates that one
+# file.
 # RUNS (default 7) runs per measurement, LARGE_RUNS (default 3) for the
 # ~1M-quad sphere; medians are reported. Run on an otherwise idle machine.
 set -euo pipefail
@@ -113,6 +116,17 @@ lattice_result() {
     python3 bench/surface_lattice.py build/tools/qmc "$work" 12,14,16 "$corpus"/tri/*
 }
 
+# starts_result: docs/results/start_faces.md.
+starts_result() {
+  write_result docs/results/start_faces.md "--start-faces: the polygon coder's first faces (spec 5.4.2)" \
+    python3 bench/start_faces.py build/tools/qmc build/bench/qmc_encode_once "$work" 12 "$corpus"/tri/* \
+    "$corpus"/quad/* "$corpus"/attr/*.obj
+}
+
+if [ "${ONLY:-}" = starts ]; then
+  starts_result
+  exit 0
+fi
 if [ "${ONLY:-}" = compression ]; then
   compression_result
   exit 0
@@ -162,6 +176,7 @@ seed003_result
 progressive_result
 attributes_result
 lattice_result
+starts_result
 fi
 mkdir -p docs/results/gim
 write_result docs/results/gim.md "Geometry images: seeds 000 and 002 rerun with qmc, and lossless planes against zstd and PNG" \

@@ -192,6 +192,17 @@ check format-1.14-jittered-info 0 "$qmc" info "$work/f114j.qmc"
 contains format-1.14-jittered-method-4 "$work/out" "predicted (spec 14, method 4: geometry order)"
 smaller format-1.15-smaller "$work/f115.qmc" "$work/f114j.qmc" "method 11's file is not smaller than the 1.14 file"
 check verify-method-11 0 "$qmc" verify "$work/jittered.obj" "$work/f115.qmc"
+# Spec 5.4.2 leaves each component's first face to the encoder: --start-faces N codes the file from N of
+# them and keeps the smallest (the report says which); verify finds the start the file was coded from;
+# 0, 257 and a progressive file refuse it.
+check starts-1 0 "$qmc" encode "$work/jittered.obj" "$work/starts1.qmc" --quiet
+check starts-16 0 "$qmc" encode "$work/jittered.obj" "$work/starts16.qmc" --start-faces 16
+contains starts-16-report "$work/out" "start-faces 16: kept start [1-9][0-9]* of 16 (0: the usual start, [0-9]* bytes)"
+smaller starts-16-smaller "$work/starts16.qmc" "$work/starts1.qmc" "the best of 16 starts is not smaller than the usual start"
+check starts-16-verify 0 "$qmc" verify "$work/jittered.obj" "$work/starts16.qmc"
+check starts-0-refused 2 "$qmc" encode "$work/jittered.obj" "$work/starts0.qmc" --start-faces 0
+check starts-257-refused 2 "$qmc" encode "$work/jittered.obj" "$work/starts257.qmc" --start-faces 257
+check starts-progressive-refused 2 "$qmc" encode "$work/jittered.obj" "$work/startsp.qmc" --progressive --start-faces 4
 check format-1.010-refused 2 "$qmc" encode "$work/terraces.obj" "$work/f112.qmc" --format 1.010
 "$meshgen" torus 40 30 "$work/torus1200.obj" >/dev/null  # 1,200 vertices of quads: method 4 or 5, never 1 (14.5)
 check format-1.9 0 "$qmc" encode "$work/torus1200.obj" "$work/f19.qmc" --quiet --format 1.11

@@ -58,6 +58,11 @@ const char kHelp[] =
     "                      polygon coder (spec 5.4) for every other mesh (the\n"
     "                      reason is printed); indexed: always indexed; quad: quad\n"
     "                      coder or an error; polygon: always the polygon coder\n"
+    "  --start-faces N     of the polygon coder: code the whole file from N first\n"
+    "                      faces per component (spec 5.4.2, the encoder's\n"
+    "                      choice; 1..256, default 1) and keep the smallest: N\n"
+    "                      times the encode time, files up to 4 % smaller\n"
+    "                      (1 % on average on the corpus at 64 starts)\n"
     "  --text KEY=VALUE    store a teXt chunk (repeatable)\n"
     "  --keep-order        store an oRDR chunk (spec 4.5) so that decoding restores\n"
     "                      the input's order of vertices, faces and face corners\n"
@@ -189,7 +194,7 @@ const CommandSpec kSpec{"encode",
                          {"--roi"}, {"--grid"}, {"--step"}, {"--max-error"}, {"--surface-lattice"}, {"--positions"}, {"--format"},
                          {"--uv-bits"}, {"--normal-bits"}, {"--color-bits"}, {"--drop"},
                          {"--finest-step-scale"}, {"--target-error"}, {"--target-hausdorff"}, {"--max-bytes"},
-                         {"--max-deviation"}},
+                         {"--max-deviation"}, {"--start-faces"}},
                         2,
                         2};
 
@@ -414,6 +419,15 @@ int parse(int argc, char** argv, EncodeArgs* args) {
       if (int rc = parse_rate_option(name, value, args); rc >= 0) return rc;
       continue;
     }
+    if (name == "--start-faces") {
+      long starts = 0;
+      if (args->progressive || args->options.gim.size > 0)
+        return usage_error("encode", "--start-faces is for plain files, not progressive ones or geometry images");
+      if (!parse_int(value, 1, 256, &starts))
+        return usage_error("encode", "--start-faces takes a whole number from 1 to 256, got '" + value + "'");
+      args->options.start_faces = uint32_t(starts);
+      continue;
+    }
     if (name == "--text") {
       args->options.texts.push_back(value);
       continue;
@@ -500,6 +514,9 @@ void print_report(const EncodeArgs& args, const Mesh& mesh, const EncodeStats& s
                 "faces, %u faces not quads; records %.3f bits/vertex\n",
                 p.components, p.holes, p.handles, p.identifications, p.loose_faces, p.non_quad_faces,
                 double(p.record_bits) / v);
+    if (p.start_trials > 1)
+      std::printf("             --start-faces %u: kept start %u of %u (0: the usual start, %llu bytes)\n",
+                  p.start_trials, p.start_kept, p.start_trials, (unsigned long long)p.usual_start_bytes);
   } else {
     std::printf("connectivity indexed coding%s%s\n", stats.fallback_reason.empty() ? "" : "; quad coder not used: ",
                 stats.fallback_reason.c_str());

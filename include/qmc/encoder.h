@@ -67,6 +67,9 @@ enum class CandidateChoice : uint8_t {
   kNearest,     // the prediction nearest to the vertex (L1): faster, about 1.5 % larger
 };
 
+// EncodeOptions::start_faces at most: each start is a whole encode.
+constexpr uint32_t kMaxStartFaces = 256;
+
 struct EncodeOptions {
   int position_bits = kDefaultPositionBits;  // 1..30, section 6.1
   // The grid of a plain file. A progressive file's base always takes
@@ -104,6 +107,16 @@ struct EncodeOptions {
   // on the corpus's quad meshes that take it); false keeps a file readable
   // by 1.17 decoders.
   bool polygon_quad_contexts = true;
+  // Polygon coder only: the whole file is coded from this many first faces
+  // per component (5.4.2 leaves the first face to the encoder; it moves
+  // every label, the geometry order of 14.6 and so the positions and
+  // attributes) and the smallest kept, ties to the usual start. The time is
+  // that many encodes, for a file 0 - 4 % smaller (the corpus at 12 bits,
+  // 64 starts: 1.1 % on average, 3.6 - 4.2 % on halftunnel and
+  // spot_control_mesh; docs/results/start_faces.md). 1: the usual start
+  // only (the first virtual face, else the lowest face). Single-rate files
+  // only.
+  uint32_t start_faces = 1;
   // Polygon coder only: vertices no face uses take the last labels along a
   // Z-order curve, so that each is predicted from a near one (5.4.9); false
   // keeps them in input order, as the encoder did before.
@@ -274,6 +287,10 @@ struct PolygonCoderStats {
   uint32_t components = 0, holes = 0, handles = 0, identifications = 0, loose_faces = 0;
   uint32_t non_quad_faces = 0;
   uint64_t record_bits = 0;              // bits of the records of 5.4.7 and 5.4.8
+  // With EncodeOptions::start_faces > 1: the starts coded, the one kept
+  // (0: the usual start) and the file from the usual start.
+  uint32_t start_trials = 1, start_kept = 0;
+  uint64_t usual_start_bytes = 0;
 };
 
 // Section 12: what the progressive encoder did (seed 003 tables 2 and 3).

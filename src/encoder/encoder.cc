@@ -79,6 +79,12 @@ Status validate_options(const EncodeOptions& options) {
     return invalid("the max deviation must be 0 (none) or a fraction of the diagonal below 1 (12.7.2)");
   if (options.max_deviation > 0 && options.progressive_levels == 0)
     return invalid("a max deviation corrects progressive levels (12.7.2): give progressive levels too");
+  if (options.start_faces < 1 || options.start_faces > kMaxStartFaces)
+    return invalid("start faces must be in 1.." + std::to_string(kMaxStartFaces) + ", got " +
+                   std::to_string(options.start_faces));
+  if (options.start_faces > 1 && (options.progressive_levels > 0 || options.gim.size > 0))
+    return invalid("start faces choose a single-rate file's first faces (5.4.2): not with progressive levels or "
+                   "a geometry image");
   return Status::Ok();
 }
 
@@ -165,12 +171,12 @@ std::string quad_connectivity(const Mesh& mesh, int forced_coding, FileConnectiv
 }
 
 // The polygon coder (section 5.4), also checked by decoding its own output.
-std::string polygon_connectivity(const Mesh& mesh, const EncodeOptions& options, FileConnectivity* c,
-                                 PolygonCoderStats* stats) {
+std::string polygon_connectivity(const Mesh& mesh, const EncodeOptions& options, TraversalStart start,
+                                 FileConnectivity* c, PolygonCoderStats* stats) {
   PolygonEncoding enc;
   if (std::string why = encode_polygon_connectivity(mesh, options.polygon_coding, options.polygon_context_coding,
                                                     options.polygon_quad_contexts,
-                                                    options.unused_vertices_along_curve, &enc);
+                                                    options.unused_vertices_along_curve, &enc, start);
       !why.empty())
     return why;
   c->method = ConnectivityMethod::kPolygon;
@@ -200,7 +206,8 @@ void add_chunk(std::vector<uint8_t>* out, EncodeStats* stats, uint32_t type, con
   stats->chunks.push_back({type, 12 + uint64_t(payload.size())});
 }
 
-Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileConnectivity* conn, EncodeStats* st) {
+Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileConnectivity* conn, EncodeStats* st,
+                           TraversalStart start) {
   bool structured = false;
   if (options.connectivity == ConnectivityChoice::kAuto || options.connectivity == ConnectivityChoice::kQuad) {
     const std::string why = quad_connectivity(mesh, options.quad_coding, conn, &st->quad);
@@ -214,7 +221,7 @@ Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileC
   if (structured && options.connectivity == ConnectivityChoice::kAuto && options.polygon_context_coding) {
     FileConnectivity polygon;
     PolygonCoderStats polygon_stats;
-    if (polygon_connectivity(mesh, options, &polygon, &polygon_stats).empty() &&
+    if (polygon_connectivity(mesh, options, start, &polygon, &polygon_stats).empty() &&
         polygon.payload.size() < conn->payload.size()) {
       st->fallback_reason = "the polygon coder's CONN is smaller (" + std::to_string(polygon.payload.size()) +
                             " bytes against " + std::to_string(conn->payload.size()) + ")";
@@ -224,7 +231,7 @@ Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileC
   }
   if (!structured && options.connectivity != ConnectivityChoice::kIndexed) {
     *conn = FileConnectivity{};
-    const std::string why = polygon_connectivity(mesh, options, conn, &st->polygon);
+    const std::string why = polygon_connectivity(mesh, options, start, conn, &st->polygon);
     structured = why.empty();
     if (!structured && options.connectivity == ConnectivityChoice::kPolygon)
       return invalid("the polygon coder cannot take this mesh: " + why);
@@ -321,17 +328,16 @@ Status add_attributes(const Mesh& mesh, const EncodeOptions& options, const File
   return Status::Ok();
 }
 
-Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* out, EncodeStats* stats) {
-  if (Status s = validate_input(mesh, options); !s.ok()) return s;
-  EncodeStats local;
-  EncodeStats& st = stats ? *stats : local;
+namespace {
+
+// A single-rate file (sections 5, 6, 14 - 16) with the polygon coder's
+// components started as `start` says.
+Status encode_single_rate(const Mesh& mesh, const EncodeOptions& options, TraversalStart start,
+                          std::vector<uint8_t>* out, EncodeStats* stats) {
+  EncodeStats& st = *stats;
   st = EncodeStats{};
-  if (options.progressive_levels > 0 && options.gim.size > 0)
-    return invalid("a file is either progressive (section 12) or a geometry image (section 13), not both");
-  if (options.progressive_levels > 0) return encode_loop_levels(mesh, options, out, &st);
-  if (options.gim.size > 0) return encode_geometry_image(mesh, options, out, &st);
   FileConnectivity conn;
-  if (Status s = choose_connectivity(mesh, options, &conn, &st); !s.ok()) return s;
+  if (Status s = choose_connectivity(mesh, options, &conn, &st, start); !s.ok()) return s;
   QuantizedPositions quantized;
   if (Status s = quantize_positions(conn.mesh.positions, options, &quantized); !s.ok()) return s;
   const auto positions_of = [&](const QuantizedPositions& grid, PositionStats* stats) {
@@ -382,6 +388,46 @@ Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_
   st.file_vertex = std::move(conn.file_vertex);
   st.face_source = std::move(conn.face_source);
   return Status::Ok();
+}
+
+// EncodeOptions::start_faces: the whole file from each start, the smallest
+// kept (ties: the earlier start). Only the polygon coder has a start to
+// choose; with any other connectivity the first file is the file.
+Status encode_from_starts(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* out,
+                          EncodeStats* st) {
+  if (Status s = encode_single_rate(mesh, options, {}, out, st); !s.ok()) return s;
+  if (st->method != ConnectivityMethod::kPolygon) return Status::Ok();
+  const uint64_t usual = out->size();
+  uint32_t kept = 0;
+  std::vector<uint8_t> trial_bytes;
+  EncodeStats trial_stats;
+  for (uint32_t t = 1; t < options.start_faces; ++t) {
+    if (Status s = encode_single_rate(mesh, options, {t}, &trial_bytes, &trial_stats); !s.ok())
+      return s;
+    if (trial_bytes.size() >= out->size()) continue;
+    std::swap(*out, trial_bytes);
+    std::swap(*st, trial_stats);
+    kept = t;
+  }
+  st->polygon.start_trials = options.start_faces;
+  st->polygon.start_kept = kept;
+  st->polygon.usual_start_bytes = usual;
+  return Status::Ok();
+}
+
+}  // namespace
+
+Status encode(const Mesh& mesh, const EncodeOptions& options, std::vector<uint8_t>* out, EncodeStats* stats) {
+  if (Status s = validate_input(mesh, options); !s.ok()) return s;
+  EncodeStats local;
+  EncodeStats& st = stats ? *stats : local;
+  st = EncodeStats{};
+  if (options.progressive_levels > 0 && options.gim.size > 0)
+    return invalid("a file is either progressive (section 12) or a geometry image (section 13), not both");
+  if (options.progressive_levels > 0) return encode_loop_levels(mesh, options, out, &st);
+  if (options.gim.size > 0) return encode_geometry_image(mesh, options, out, &st);
+  if (options.start_faces > 1) return encode_from_starts(mesh, options, out, &st);
+  return encode_single_rate(mesh, options, {}, out, &st);
 }
 
 }  // namespace qmc

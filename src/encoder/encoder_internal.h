@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "encoder/polygon_traversal_encoder.h"
 #include "qmc/encoder.h"
 
 namespace qmc {
@@ -27,8 +28,10 @@ Status validate_options(const EncodeOptions& options);
 Status validate_input(const Mesh& mesh, const EncodeOptions& options);
 
 // Section 5.1: the quad coder where it applies (kAuto), else the polygon
-// coder, else the indexed coding, as `options.connectivity` asks.
-Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileConnectivity* conn, EncodeStats* st);
+// coder (its components started as `start` says), else the indexed coding,
+// as `options.connectivity` asks.
+Status choose_connectivity(const Mesh& mesh, const EncodeOptions& options, FileConnectivity* conn, EncodeStats* st,
+                           TraversalStart start = {});
 
 // Section 4.1: the lowest minor version that defines the connectivity and
 // the POSN method.

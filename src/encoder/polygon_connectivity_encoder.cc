@@ -214,12 +214,12 @@ void derive_records(const PolygonSurfaceModel& s, const PolygonTraversal& t, Rec
 }  // namespace
 
 std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool context_coding, bool quad_contexts,
-                                        bool unused_along_curve, PolygonEncoding* out) {
+                                        bool unused_along_curve, PolygonEncoding* out, TraversalStart start) {
   *out = PolygonEncoding{};
   PolygonSurfaceModel surface;
   if (std::string why = build_polygon_surface(mesh, &surface); !why.empty()) return why;
   PolygonTraversal traversal;
-  if (std::string why = traverse_polygon_surface(surface, &traversal); !why.empty()) return why;
+  if (std::string why = traverse_polygon_surface(surface, &traversal, start); !why.empty()) return why;
   Records records;
   std::vector<uint32_t> parent;
   derive_records(surface, traversal, &records, &parent);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "common/polygon_symbols.h"
+#include "encoder/polygon_traversal_encoder.h"
 #include "qmc/format.h"
 #include "qmc/mesh.h"
 
@@ -31,8 +32,9 @@ struct PolygonEncoding {
 // `context_coding`: coding 7 may be the smallest (5.4.10, format 1.6), and
 // with `quad_contexts` coding 8 too (format 1.18).
 // `unused_along_curve`: vertices no face uses follow a Z-order curve
-// (sort_along_curve), else the input's order.
+// (sort_along_curve), else the input's order. `start`: each component's
+// first face (polygon_traversal_encoder.h).
 std::string encode_polygon_connectivity(const Mesh& mesh, int forced, bool context_coding, bool quad_contexts,
-                                        bool unused_along_curve, PolygonEncoding* out);
+                                        bool unused_along_curve, PolygonEncoding* out, TraversalStart start = {});
 
 }  // namespace qmc

@@ -3,15 +3,49 @@
 // vertices touched by a processed face (anchors); loops are never stored.
 #include "encoder/polygon_traversal_encoder.h"
 
+#include <algorithm>
+
 namespace qmc {
 namespace {
 
 constexpr uint32_t kNone = UINT32_MAX;
 
+// The faces of the component of f0, in the order a flood from f0 reaches
+// them; marks them in `component`.
+void flood_component(const PolygonSurfaceModel& s, uint32_t f0, std::vector<uint32_t>* component,
+                     std::vector<uint32_t>* faces) {
+  faces->assign(1, f0);
+  (*component)[f0] = f0;
+  for (size_t i = 0; i < faces->size(); ++i) {
+    const uint32_t f = (*faces)[i];
+    for (uint32_t h = s.face_begin[f]; h < s.face_begin[f + 1]; ++h) {
+      const uint32_t g = s.face_of[s.twin[h]];
+      if ((*component)[g] == kNone) {
+        (*component)[g] = f0;
+        faces->push_back(g);
+      }
+    }
+  }
+}
+
+// The first face of a component (its faces as flood_component lists them)
+// under `start`, and the corner that is its c0 (TraversalStart).
+std::array<uint32_t, 2> first_face(const PolygonSurfaceModel& s, const std::vector<uint32_t>& faces,
+                                   TraversalStart start, std::vector<uint32_t>* scratch) {
+  scratch->clear();
+  for (uint32_t f : faces)
+    if (s.source[f] == kVirtualFace) scratch->push_back(f);
+  std::sort(scratch->begin(), scratch->end());
+  const std::vector<uint32_t>& from = scratch->empty() ? faces : *scratch;
+  const uint64_t fraction = uint32_t(start.trial * 0x9E3779B9u);  // frac(t / phi) in units of 2^-32
+  const uint32_t f = from[size_t((fraction * from.size()) >> 32)];
+  return {f, start.trial % s.degree(f)};
+}
+
 class PolygonTraversalEncoder {
  public:
-  PolygonTraversalEncoder(const PolygonSurfaceModel& s, PolygonTraversal* out)
-      : s_(s), out_(out), processed_(s.face_count(), 0), touched_(s.vertex_count(), 0) {
+  PolygonTraversalEncoder(const PolygonSurfaceModel& s, PolygonTraversal* out, TraversalStart start)
+      : s_(s), out_(out), start_(start), processed_(s.face_count(), 0), touched_(s.vertex_count(), 0) {
     out_->label.assign(s.vertex_count(), kNone);
     out_->rotation.assign(s.face_count(), 0);
     // Every face but each component's first is coded once: at most this.
@@ -31,24 +65,28 @@ class PolygonTraversalEncoder {
     out_->order.push_back(f);
     for (uint32_t h = s_.face_begin[f]; h < s_.face_begin[f + 1]; ++h) touched_[s_.corners[h]] = 1;
   }
-  uint32_t start_component(uint32_t f);
+  uint32_t start_component(uint32_t f, uint32_t r);
   void encode_face(uint32_t gate, std::vector<uint32_t>* stack, uint32_t* next_gate);
 
   const PolygonSurfaceModel& s_;
   PolygonTraversal* out_;
+  TraversalStart start_;
   std::vector<uint8_t> processed_, touched_;
+  std::vector<uint32_t> candidates_;  // first_face's scratch
   std::vector<uint8_t> status_, gaps_;
   std::vector<uint32_t> gap_start_;  // half-edge leaving each gap's first anchor
 };
 
-// The initial loop c1 -> c0 -> c(d-1) .. c2, gate c1 -> c0, labelled from c1.
-uint32_t PolygonTraversalEncoder::start_component(uint32_t f) {
+// The initial loop c1 -> c0 -> c(d-1) .. c2, gate c1 -> c0, labelled from
+// c1; c0 is the face's corner r.
+uint32_t PolygonTraversalEncoder::start_component(uint32_t f, uint32_t r) {
   const uint32_t b = s_.face_begin[f], d = s_.degree(f);
-  give_label(s_.corners[b + 1]);
-  give_label(s_.corners[b]);
-  for (uint32_t i = d - 1; i >= 2; --i) give_label(s_.corners[b + i]);
-  take(f, 0);
-  return s_.twin[b];
+  const auto c = [&](uint32_t i) { return s_.corners[b + (r + i) % d]; };
+  give_label(c(1));
+  give_label(c(0));
+  for (uint32_t i = d - 1; i >= 2; --i) give_label(c(i));
+  take(f, r);
+  return s_.twin[b + r];
 }
 
 void PolygonTraversalEncoder::encode_face(uint32_t gate, std::vector<uint32_t>* stack, uint32_t* next_gate) {
@@ -91,28 +129,15 @@ void PolygonTraversalEncoder::encode_face(uint32_t gate, std::vector<uint32_t>* 
 
 std::string PolygonTraversalEncoder::run() {
   std::vector<uint32_t> component(s_.face_count(), kNone);
-  std::vector<uint32_t> stack;
+  std::vector<uint32_t> stack, faces;
   for (uint32_t f0 = 0; f0 < s_.face_count(); ++f0) {
     if (processed_[f0]) continue;
-    // First face: the component's first virtual face, else f0. Find the
-    // component by flooding (cheap: each face is flooded once).
-    std::vector<uint32_t> faces{f0};
-    component[f0] = f0;
-    uint32_t first = f0;
-    for (size_t i = 0; i < faces.size(); ++i) {
-      if (s_.source[faces[i]] == kVirtualFace && (s_.source[first] != kVirtualFace || faces[i] < first))
-        first = faces[i];
-      for (uint32_t h = s_.face_begin[faces[i]]; h < s_.face_begin[faces[i] + 1]; ++h) {
-        const uint32_t g = s_.face_of[s_.twin[h]];
-        if (component[g] == kNone) {
-          component[g] = f0;
-          faces.push_back(g);
-        }
-      }
-    }
+    // Each face is flooded once.
+    flood_component(s_, f0, &component, &faces);
+    const auto [first, c0] = first_face(s_, faces, start_, &candidates_);
     const size_t before = out_->shapes.size();
     out_->first_degree.push_back(s_.degree(first));
-    uint32_t gate = start_component(first);
+    uint32_t gate = start_component(first, c0);
     while (gate != kNone) {
       uint32_t next = kNone;
       encode_face(gate, &stack, &next);
@@ -133,10 +158,20 @@ std::string PolygonTraversalEncoder::run() {
 
 }  // namespace
 
-std::string traverse_polygon_surface(const PolygonSurfaceModel& surface, PolygonTraversal* out) {
+std::string traverse_polygon_surface(const PolygonSurfaceModel& surface, PolygonTraversal* out,
+                                     TraversalStart start) {
   *out = PolygonTraversal{};
-  PolygonTraversalEncoder encoder(surface, out);
+  PolygonTraversalEncoder encoder(surface, out, start);
   return encoder.run();
+}
+
+std::array<uint32_t, 2> first_labels(const PolygonSurfaceModel& surface, TraversalStart start) {
+  if (surface.face_count() == 0) return {kNone, kNone};
+  std::vector<uint32_t> component(surface.face_count(), kNone), faces, scratch;
+  flood_component(surface, 0, &component, &faces);
+  const auto [f, r] = first_face(surface, faces, start, &scratch);
+  const uint32_t b = surface.face_begin[f], d = surface.degree(f);
+  return {surface.corners[b + (r + 1) % d], surface.corners[b + r]};
 }
 
 }  // namespace qmc

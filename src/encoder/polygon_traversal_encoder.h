@@ -4,6 +4,7 @@
 // polygon_surface.h, one component after the other.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -22,6 +23,22 @@ struct PolygonTraversal {
   uint32_t labels = 0;
 };
 
-std::string traverse_polygon_surface(const PolygonSurfaceModel& surface, PolygonTraversal* out);
+// Which first face each component starts from, and at which corner (5.4.2
+// leaves both to the encoder). Start t takes, among the component's
+// candidates (its virtual faces by index if it has any, a closed hole,
+// else its faces in the order a flood from its lowest face reaches them),
+// the one at the fraction frac(t / phi) of the list (a Weyl sequence: any
+// first n starts are spread over it), with c0 its corner t mod d. Start 0 is
+// the usual one: the first virtual face, else the lowest face, at corner 0.
+struct TraversalStart {
+  uint32_t trial = 0;
+};
+
+// Component 0's first two labels under `start`: the surface vertices c1 and
+// c0 of its first face, which the decoder outputs as vertices 0 and 1.
+std::array<uint32_t, 2> first_labels(const PolygonSurfaceModel& surface, TraversalStart start);
+
+std::string traverse_polygon_surface(const PolygonSurfaceModel& surface, PolygonTraversal* out,
+                                     TraversalStart start = {});
 
 }  // namespace qmc

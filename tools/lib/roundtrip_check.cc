@@ -6,6 +6,8 @@
 #include <limits>
 
 #include "encoder/polygon_connectivity_encoder.h"
+#include "encoder/polygon_surface.h"
+#include "qmc/encoder.h"
 #include "encoder/quad_traversal_encoder.h"
 
 namespace qmc::tools {
@@ -29,9 +31,10 @@ namespace {
 
 // The polygon coder's correspondence as its encoder makes it, a witness:
 // check_round_trip still checks every face and coordinate against it.
-bool polygon_witness(const Mesh& original, bool unused_along_curve, Correspondence* c, std::string* why) {
+bool polygon_witness(const Mesh& original, bool unused_along_curve, Correspondence* c, std::string* why,
+                     TraversalStart start = {}) {
   PolygonEncoding encoding;
-  *why = encode_polygon_connectivity(original, -1, true, true, unused_along_curve, &encoding);
+  *why = encode_polygon_connectivity(original, -1, true, true, unused_along_curve, &encoding, start);
   if (!why->empty()) return false;
   c->file_vertex = std::move(encoding.file_vertex);
   c->face_source = std::move(encoding.face_source);
@@ -222,6 +225,53 @@ std::string compare_faces(const Mesh& original, const DecodedFile& file, const C
   return compare_values_of_faceless_vertices(original, decoded, label, tolerance);
 }
 
+
+// Per axis, how far a decoded coordinate may be from its input: half a step
+// (6.4, 14.1), or on 14.15's lattice the k steps its encoder keeps to, plus
+// binary32 rounding.
+std::array<double, 3> position_allowance(const QuantizationInfo& q) {
+  std::array<double, 3> allowed{};
+  for (int a = 0; a < 3; ++a) {
+    const double within = q.lattice > 1 ? double(q.lattice) : 0.5;
+    allowed[a] = within * q.step[a] * (1 + 1e-9) + float_ulp(std::fmax(std::fabs(q.min[a]), std::fabs(q.max[a])));
+  }
+  return allowed;
+}
+
+bool near_input(const Mesh& original, uint32_t v, const DecodedFile& decoded, uint32_t i,
+                const std::array<double, 3>& allowed) {
+  if (v >= original.vertex_count() || i >= decoded.mesh.vertex_count()) return false;
+  for (int a = 0; a < 3; ++a)
+    if (std::fabs(double(decoded.mesh.positions[3 * size_t(i) + a]) - original.positions[3 * size_t(v) + a]) >
+        allowed[a])
+      return false;
+  return true;
+}
+
+// EncodeOptions::start_faces: the polygon coder's file from another first
+// face. The decoder's vertices 0 and 1 are c1 and c0 of the first face
+// (first_labels), so only the starts whose c1 and c0 lie there are tried.
+bool other_start_matches(const Mesh& original, const DecodedFile& decoded, RoundTripReport* report) {
+  PolygonSurfaceModel surface;
+  if (!build_polygon_surface(original, &surface).empty()) return false;
+  const std::array<double, 3> allowed = position_allowance(decoded.quantization);
+  for (uint32_t t = 1; t < kMaxStartFaces; ++t) {
+    const std::array<uint32_t, 2> c = first_labels(surface, {t});
+    if (c[0] >= surface.vertex_count() || c[1] >= surface.vertex_count()) return false;
+    if (!near_input(original, surface.original[c[0]], decoded, 0, allowed) ||
+        !near_input(original, surface.original[c[1]], decoded, 1, allowed))
+      continue;
+    Correspondence witness;
+    std::string why;
+    if (!polygon_witness(original, true, &witness, &why, {t})) continue;
+    if (RoundTripReport r = check_round_trip(original, decoded, witness); r.ok()) {
+      *report = r;
+      return true;
+    }
+  }
+  return false;
+}
+
 }  // namespace
 
 RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decoded) {
@@ -238,6 +288,7 @@ RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decode
   // order when asked (5.4.9): either witness will do.
   if (!report.ok() && decoded.method == ConnectivityMethod::kPolygon && polygon_witness(original, false, &c, &why))
     if (RoundTripReport r = check_round_trip(original, decoded, c); r.ok()) return r;
+  if (!report.ok() && decoded.method == ConnectivityMethod::kPolygon) other_start_matches(original, decoded, &report);
   return report;
 }
 
@@ -261,13 +312,9 @@ RoundTripReport check_round_trip(const Mesh& original, const DecodedFile& decode
   report.faces_equal = report.face_mismatch.empty();
 
   const QuantizationInfo& q = decoded.quantization;
-  double allowed[3];
-  for (int a = 0; a < 3; ++a) {
-    // Half a step (6.4, 14.1), or on 14.15's lattice the k steps its encoder keeps to.
-    const double within = q.lattice > 1 ? double(q.lattice) : 0.5;
-    allowed[a] = within * q.step[a] * (1 + 1e-9) + float_ulp(std::fmax(std::fabs(q.min[a]), std::fabs(q.max[a])));
+  const std::array<double, 3> allowed = position_allowance(q);
+  for (int a = 0; a < 3; ++a)
     report.max_bbox_side = std::fmax(report.max_bbox_side, double(q.max[a]) - double(q.min[a]));
-  }
   double sum_sq = 0;
   report.positions_within_bound = true;
   for (uint32_t i = 0; i < order.size(); ++i) {
