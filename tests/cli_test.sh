@@ -200,6 +200,8 @@ check starts-16 0 "$qmc" encode "$work/jittered.obj" "$work/starts16.qmc" --star
 contains starts-16-report "$work/out" "start-faces 16: kept start [1-9][0-9]* of 16 (0: the usual start, [0-9]* bytes)"
 smaller starts-16-smaller "$work/starts16.qmc" "$work/starts1.qmc" "the best of 16 starts is not smaller than the usual start"
 check starts-16-verify 0 "$qmc" verify "$work/jittered.obj" "$work/starts16.qmc"
+check starts-quiet 0 "$qmc" encode "$work/jittered.obj" "$work/startsq.qmc" --start-faces 4 --quiet
+if [ -s "$work/out" ] || [ -s "$work/err" ]; then failed=$((failed + 1)); echo "FAIL starts-quiet: output with --quiet and no terminal"; else passed=$((passed + 1)); fi
 check starts-0-refused 2 "$qmc" encode "$work/jittered.obj" "$work/starts0.qmc" --start-faces 0
 check starts-257-refused 2 "$qmc" encode "$work/jittered.obj" "$work/starts257.qmc" --start-faces 257
 check starts-progressive-refused 2 "$qmc" encode "$work/jittered.obj" "$work/startsp.qmc" --progressive --start-faces 4

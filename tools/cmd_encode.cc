@@ -972,7 +972,8 @@ int run_encode(int argc, char** argv) {
   // why it cannot), so the file is not read twice.
   std::error_code size_error;
   const uint64_t input_size = std::filesystem::file_size(args.input, size_error);
-  Progress progress(!size_error && input_size > (16u << 20));  // big inputs take seconds
+  // Big inputs take seconds, as do N encodes of --start-faces.
+  Progress progress(!size_error && (input_size > (16u << 20) || args.options.start_faces > 1));
   progress.stage("reading " + args.input);
   Mesh mesh;
   std::vector<std::string> ignored;
@@ -992,6 +993,12 @@ int run_encode(int argc, char** argv) {
     if (int rc = choose_lattice(&args, mesh, progress, &bytes, &stats); rc >= 0) return rc;
   } else {
     progress.stage("encoding " + std::to_string(mesh.face_count()) + " faces");
+    const uint32_t starts = args.options.start_faces;
+    if (starts > 1)
+      args.options.progress = [&](const char*, double fraction) {
+        progress.stage("encoding " + std::to_string(mesh.face_count()) + " faces from start " +
+                       std::to_string(uint32_t(fraction * starts + 0.5)) + " of " + std::to_string(starts));
+      };
     if (Status s = encode(mesh, args.options, &bytes, &stats); !s.ok()) return fail("encode", s);
   }
   // Decode what was written: the report's error figures are measured, not

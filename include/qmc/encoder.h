@@ -263,8 +263,8 @@ struct EncodeOptions {
   // Unit normals take section 15.7's octahedral coding; false keeps them on
   // 15.4's grid of three components (as the first aTTR vectors were made).
   bool octahedral_normals = true;
-  // Called during long operations (the progressive pipeline) with a stage
-  // name and the fraction done, 0..1; may be empty.
+  // Called during long operations (the progressive pipeline, the starts of
+  // start_faces) with a stage name and the fraction done, 0..1; may be empty.
   std::function<void(const char* stage, double fraction)> progress;
 };
 

@@ -402,6 +402,7 @@ Status encode_from_starts(const Mesh& mesh, const EncodeOptions& options, std::v
   std::vector<uint8_t> trial_bytes;
   EncodeStats trial_stats;
   for (uint32_t t = 1; t < options.start_faces; ++t) {
+    if (options.progress) options.progress("start faces", double(t) / options.start_faces);
     if (Status s = encode_single_rate(mesh, options, {t}, &trial_bytes, &trial_stats); !s.ok())
       return s;
     if (trial_bytes.size() >= out->size()) continue;
