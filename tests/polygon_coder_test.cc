@@ -338,7 +338,7 @@ TEST(PolygonCoder, EveryStartRoundTrips) {
         ASSERT_TRUE(std::is_permutation(got.begin(), got.end(), want.begin(), want.end()))
             << "seed " << seed << " start " << t << " face " << f;
       }
-      const std::array<uint32_t, 2> first = first_labels(surface, {t});
+      const std::array<uint32_t, 2> first = first_labels(surface, kStarts)[t];
       EXPECT_EQ(enc.file_vertex[0], surface.original[first[0]]) << "seed " << seed << " start " << t;
       EXPECT_EQ(enc.file_vertex[1], surface.original[first[1]]) << "seed " << seed << " start " << t;
     }

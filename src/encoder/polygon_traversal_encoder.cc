@@ -165,13 +165,17 @@ std::string traverse_polygon_surface(const PolygonSurfaceModel& surface, Polygon
   return encoder.run();
 }
 
-std::array<uint32_t, 2> first_labels(const PolygonSurfaceModel& surface, TraversalStart start) {
-  if (surface.face_count() == 0) return {kNone, kNone};
+std::vector<std::array<uint32_t, 2>> first_labels(const PolygonSurfaceModel& surface, uint32_t starts) {
+  std::vector<std::array<uint32_t, 2>> labels;
+  if (surface.face_count() == 0) return labels;
   std::vector<uint32_t> component(surface.face_count(), kNone), faces, scratch;
   flood_component(surface, 0, &component, &faces);
-  const auto [f, r] = first_face(surface, faces, start, &scratch);
-  const uint32_t b = surface.face_begin[f], d = surface.degree(f);
-  return {surface.corners[b + (r + 1) % d], surface.corners[b + r]};
+  for (uint32_t t = 0; t < starts; ++t) {
+    const auto [f, r] = first_face(surface, faces, {t}, &scratch);
+    const uint32_t b = surface.face_begin[f], d = surface.degree(f);
+    labels.push_back({surface.corners[b + (r + 1) % d], surface.corners[b + r]});
+  }
+  return labels;
 }
 
 }  // namespace qmc

@@ -34,9 +34,10 @@ struct TraversalStart {
   uint32_t trial = 0;
 };
 
-// Component 0's first two labels under `start`: the surface vertices c1 and
-// c0 of its first face, which the decoder outputs as vertices 0 and 1.
-std::array<uint32_t, 2> first_labels(const PolygonSurfaceModel& surface, TraversalStart start);
+// Component 0's first two labels under starts 0 .. starts - 1 (one flood):
+// the surface vertices c1 and c0 of its first face, which the decoder
+// outputs as vertices 0 and 1. Empty for a surface without faces.
+std::vector<std::array<uint32_t, 2>> first_labels(const PolygonSurfaceModel& surface, uint32_t starts);
 
 std::string traverse_polygon_surface(const PolygonSurfaceModel& surface, PolygonTraversal* out,
                                      TraversalStart start = {});

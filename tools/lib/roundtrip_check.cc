@@ -255,9 +255,9 @@ bool other_start_matches(const Mesh& original, const DecodedFile& decoded, Round
   PolygonSurfaceModel surface;
   if (!build_polygon_surface(original, &surface).empty()) return false;
   const std::array<double, 3> allowed = position_allowance(decoded.quantization);
-  for (uint32_t t = 1; t < kMaxStartFaces; ++t) {
-    const std::array<uint32_t, 2> c = first_labels(surface, {t});
-    if (c[0] >= surface.vertex_count() || c[1] >= surface.vertex_count()) return false;
+  const std::vector<std::array<uint32_t, 2>> labels = first_labels(surface, kMaxStartFaces);
+  for (uint32_t t = 1; t < labels.size(); ++t) {
+    const std::array<uint32_t, 2>& c = labels[t];
     if (!near_input(original, surface.original[c[0]], decoded, 0, allowed) ||
         !near_input(original, surface.original[c[1]], decoded, 1, allowed))
       continue;
