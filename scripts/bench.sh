@@ -28,9 +28,12 @@
 #                    surfaces, corpus triangle meshes at 12, 14, 16 bits.
 #   start_faces.md   --start-faces N (the polygon coder's first faces, spec
 #                    5.4.2): bytes and encode time on every corpus mesh.
+#   large_meshes.md  decode time of generated meshes of about a million
+#                    vertices against Draco cl10 (with BEFORE=PROGRAM, a
+#                    qmc_decode_once built at another revision, beside it).
 # ONLY=compression, ONLY=topology, ONLY=seed003, ONLY=progressive,
-# ONLY=attributes, ONLY=lattice, ONLY=starts or ONLY=gim regenerates that one
-# file.
+# ONLY=attributes, ONLY=lattice, ONLY=starts, ONLY=large or ONLY=gim
+# regenerates that one file.
 # RUNS (default 7) runs per measurement, LARGE_RUNS (default 3) for the
 # ~1M-quad sphere; medians are reported. Run on an otherwise idle machine.
 set -euo pipefail
@@ -123,8 +126,19 @@ starts_result() {
     "$corpus"/quad/* "$corpus"/attr/*.obj
 }
 
+# large_result: docs/results/large_meshes.md.
+large_result() {
+  write_result docs/results/large_meshes.md "Meshes of a million vertices: decode time against Draco cl10" \
+    python3 bench/large_meshes.py build/tools/qmc build/tools/qmc-meshgen build/bench/qmc_decode_once \
+    build/bench/qmc_draco_decode_once "$work" "$runs" 12 "$corpus"/tri/stanford-bunny.obj ${BEFORE:-}
+}
+
 if [ "${ONLY:-}" = starts ]; then
   starts_result
+  exit 0
+fi
+if [ "${ONLY:-}" = large ]; then
+  large_result
   exit 0
 fi
 if [ "${ONLY:-}" = compression ]; then
@@ -177,6 +191,7 @@ progressive_result
 attributes_result
 lattice_result
 starts_result
+large_result
 fi
 mkdir -p docs/results/gim
 write_result docs/results/gim.md "Geometry images: seeds 000 and 002 rerun with qmc, and lossless planes against zstd and PNG" \

@@ -176,6 +176,34 @@ TEST(MirrorCandidate, EncoderWritesMethodNineOnMirroredMeshes) {
   EXPECT_LT(dc.quantization.method, 9);
 }
 
+// From about 130,000 vertices the mirror search's table outgrows the
+// caches, and both coders then leave each vertex's bookkeeping until the
+// next vertex is predicted, its slots prefetched (MirrorSource::prefetches):
+// the file still decodes to the integers that a file without the plane gives.
+TEST(MirrorCandidate, LargeMeshesDeferTheBookkeepingAndDecodeTheSame) {
+  const Mesh grid = tools::make_grid(370, 370);  // 137,641 vertices, symmetric across x = 0 and y = 0
+  const Mesh small_grid = tools::make_grid(100, 100);
+  const uint32_t top[3] = {4095, 4095, 4095};
+  VertexCorners corners, small_corners;
+  corners.build(uint32_t(grid.vertex_count()), grid.face_sizes, grid.corners);
+  small_corners.build(uint32_t(small_grid.vertex_count()), small_grid.face_sizes, small_grid.corners);
+  EXPECT_TRUE(MirrorCandidates(corners, MirrorPlane{0, 4095, true}, top).prefetches());
+  EXPECT_FALSE(MirrorCandidates(small_corners, MirrorPlane{0, 4095, true}, top).prefetches());
+  EncodeOptions with, without;
+  without.mirror_symmetry = false;
+  std::vector<uint8_t> a, b;
+  ASSERT_TRUE(encode(grid, with, &a).ok());
+  ASSERT_TRUE(encode(grid, without, &b).ok());
+  DecodedFile da, db;
+  ASSERT_TRUE(decode(a.data(), a.size(), &da).ok());
+  ASSERT_TRUE(decode(b.data(), b.size(), &db).ok());
+  EXPECT_GE(da.quantization.method, 9);
+  EXPECT_GE(da.quantization.mirror_axis, 0);
+  EXPECT_LT(db.quantization.mirror_axis, 0);
+  EXPECT_EQ(da.quantized, db.quantized);
+  EXPECT_LT(a.size(), b.size());
+}
+
 // A linear congruential generator (Knuth's MMIX constants), so that the
 // tests' points are the same on every platform.
 class Lcg {

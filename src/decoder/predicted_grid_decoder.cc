@@ -18,6 +18,8 @@
 namespace qmc {
 namespace {
 
+constexpr uint32_t kNoVertex = 0xFFFFFFFFu;
+
 // 14.15 (POSN method 14) for the vertex being decoded, the i-th visited:
 // the steps of its residuals per axis predicted at p, in out (1 on the
 // fine axis, k on the others), or all 1 without a lattice or where its
@@ -145,9 +147,16 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   if (mirror) mirrors = std::make_unique<MirrorCandidates>(corners, *mirror, top);
   if (twins) mirrors = std::make_unique<ValueTwins>(corners, *twins, top);
   VertexPrediction p;
+  // On large meshes a vertex's mirror bookkeeping (14.10) waits until the
+  // next vertex is predicted, which reads none of it: its look-ups,
+  // prefetched as soon as the vertex is known, then find their slots in
+  // the cache. The last vertex's is never read.
+  const bool deferred = mirrors && mirrors->prefetches();
+  uint32_t pending = kNoVertex;
   for (uint32_t i = 0; i < count; ++i) {
     const uint32_t v = visit.item(i);
     visit.predict(i, quantized->data(), activity.data(), top, &p);
+    if (pending != kNoVertex) mirrors->decoded(pending, quantized->data());
     twist_weight.apply(&p);
     lattice.vertex = v;
     lattice.i = i;
@@ -164,7 +173,12 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
         return s;
       twist_weight.learn(p, &(*quantized)[3 * size_t(v)]);
     }
-    if (mirrors) mirrors->decoded(v, quantized->data());
+    if (deferred) {
+      mirrors->prefetch(v, quantized->data());
+      pending = v;
+    } else if (mirrors) {
+      mirrors->decoded(v, quantized->data());
+    }
   }
   if (rc.unread() != 0)
     return Status(ErrorCode::kBadChunkPayload, names.chunk + ": " + std::to_string(rc.unread()) +

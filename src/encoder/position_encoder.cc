@@ -455,6 +455,7 @@ class VisitCoder {
         activity_(q.size() / 3), model_(top, start, mask_contexts, axis_classes) {
     if (mirror) mirrors_.reset(images_ = new MirrorCandidates(visit->mesh(), *mirror, top));
     if (twins) mirrors_ = std::make_unique<ValueTwins>(visit->mesh(), *twins, top);
+    deferred_ = mirrors_ && mirrors_->prefetches();  // as the decoder (decode_predicted_grid)
     if (lattice && lattice->lattice > 1) {
       lattice_ = lattice;
       placed_ = q;
@@ -475,6 +476,7 @@ class VisitCoder {
   // Codes the rest; the stream, and the statistics of the whole visit.
   std::vector<uint8_t> finish(PositionStats* stats) {
     code(UINT32_MAX);
+    settle_mirror_bookkeeping();
     if (images_) stats_.pairs_beside += images_->pairs_beside();
     if (stats) *stats = stats_;
     return rc_.rc.finish();
@@ -485,6 +487,7 @@ class VisitCoder {
     const uint32_t v = visit_->item(i);
     const std::vector<uint32_t>& q = coded();
     visit_->predict(i, q.data(), activity_.data(), top_, &p_);
+    settle_mirror_bookkeeping();
     twist_weight_.apply(&p_);
     const double before = rc_.meter.bits;
     unsigned mask = 0;
@@ -494,10 +497,23 @@ class VisitCoder {
     if (!mirrored) code_candidate_mask(&rc_, &model_, p_.candidates, mask, mask_context(model_, p_));
     activity_[v] = lattice_ ? code_on_lattice(v, i) : code_residuals(&rc_, &model_, p_, &q[3 * size_t(v)]);
     if (!mirrored) twist_weight_.learn(p_, &q[3 * size_t(v)]);
-    if (mirrors_) mirrors_->decoded(v, q.data());
+    if (deferred_) {
+      mirrors_->prefetch(v, q.data());
+      pending_ = v;
+    } else if (mirrors_) {
+      mirrors_->decoded(v, q.data());
+    }
     ++stats_.vertices_by_kind[int(p_.kind)];
     stats_.bits_by_kind[int(p_.kind)] += rc_.meter.bits - before;
     if (p_.extrapolated) ++stats_.extrapolated_vertices;
+  }
+
+  // The mirror bookkeeping of the vertex coded last, where it waited for
+  // its prefetched slots (large meshes only: MirrorSource::prefetches).
+  void settle_mirror_bookkeeping() {
+    if (pending_ == kNoVertex) return;
+    mirrors_->decoded(pending_, coded().data());
+    pending_ = kNoVertex;
   }
 
   // 14.15: v (the i-th visited) placed on its lattice around p_ and its
@@ -528,6 +544,9 @@ class VisitCoder {
   TriangleTwistWeight twist_weight_;  // 14.9: no correction without the triangle twist
   std::unique_ptr<MirrorSource> mirrors_;
   MirrorCandidates* images_ = nullptr;
+  static constexpr uint32_t kNoVertex = UINT32_MAX;
+  bool deferred_ = false;  // large meshes: each vertex's mirror bookkeeping waits for the next prediction
+  uint32_t pending_ = kNoVertex;
 };
 
 // A whole visit, coded at once (VisitCoder); stats (may be null) gain its counts.
