@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "common/prefetch.h"
 #include "common/vertex_prediction.h"
 
 namespace qmc {
@@ -113,7 +114,7 @@ class MirrorCandidates final : public MirrorSource {
   MirrorCandidates(const VertexCorners& mesh, MirrorPlane plane, const uint32_t top[3]);
   bool find(uint32_t v, const uint32_t* q, const VertexPrediction& p, int64_t out[3]) const override;
   void decoded(uint32_t v, const uint32_t* q) override;
-  bool prefetches() const override { return first_at_.outgrows_caches(); }
+  bool prefetches() const override { return kPrefetches && first_at_.outgrows_caches(); }
   void prefetch(uint32_t v, const uint32_t* q) const override;
   // Method 10: how many vertices have paired with a partner beside their image (14.11).
   uint32_t pairs_beside() const { return pairs_beside_; }

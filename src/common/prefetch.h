@@ -1,16 +1,17 @@
-// A hint to the processor that memory will be read soon. It changes no
-// result: compilers without the builtin (and WebAssembly, which has no
-// prefetch) get nothing.
+// A hint to the processor that memory will be read soon; it changes no
+// result. Where there is no such instruction (WebAssembly, compilers
+// without the builtin) prefetch_for_read does nothing and kPrefetches is
+// false, so that callers keep their plain order there.
 #pragma once
 
 namespace qmc {
 
-inline void prefetch_for_read(const void* address) {
-#if defined(__GNUC__) || defined(__clang__)
-  __builtin_prefetch(address, 0, 3);
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__wasm__)
+inline constexpr bool kPrefetches = true;
+inline void prefetch_for_read(const void* address) { __builtin_prefetch(address, 0, 3); }
 #else
-  (void)address;
+inline constexpr bool kPrefetches = false;
+inline void prefetch_for_read(const void*) {}
 #endif
-}
 
 }  // namespace qmc

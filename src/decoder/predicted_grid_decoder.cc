@@ -151,7 +151,7 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   // next vertex is predicted, which reads none of it: its look-ups,
   // prefetched as soon as the vertex is known, then find their slots in
   // the cache. The last vertex's is never read.
-  const bool deferred = mirrors && mirrors->prefetches();
+  const bool deferred = kPrefetches && mirrors && mirrors->prefetches();
   uint32_t pending = kNoVertex;
   for (uint32_t i = 0; i < count; ++i) {
     const uint32_t v = visit.item(i);
