@@ -18,8 +18,6 @@
 namespace qmc {
 namespace {
 
-constexpr uint32_t kNoVertex = 0xFFFFFFFFu;
-
 // 14.15 (POSN method 14) for the vertex being decoded, the i-th visited:
 // the steps of its residuals per axis predicted at p, in out (1 on the
 // fine axis, k on the others), or all 1 without a lattice or where its
@@ -150,13 +148,14 @@ Status decode_predicted_grid(const uint8_t* stream, size_t size, const Mesh& fac
   // On large meshes a vertex's mirror bookkeeping (14.10) waits until the
   // next vertex is predicted, which reads none of it: its look-ups,
   // prefetched as soon as the vertex is known, then find their slots in
-  // the cache. The last vertex's is never read.
+  // the cache. The last vertex's is never read. (kPrefetches, a constant,
+  // lets a build without prefetch, WebAssembly's, leave this path out.)
   const bool deferred = kPrefetches && mirrors && mirrors->prefetches();
-  uint32_t pending = kNoVertex;
+  uint32_t pending = GridPointTable::kNone;
   for (uint32_t i = 0; i < count; ++i) {
     const uint32_t v = visit.item(i);
     visit.predict(i, quantized->data(), activity.data(), top, &p);
-    if (pending != kNoVertex) mirrors->decoded(pending, quantized->data());
+    if (pending != GridPointTable::kNone) mirrors->decoded(pending, quantized->data());
     twist_weight.apply(&p);
     lattice.vertex = v;
     lattice.i = i;

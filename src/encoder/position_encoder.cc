@@ -511,9 +511,9 @@ class VisitCoder {
   // The mirror bookkeeping of the vertex coded last, where it waited for
   // its prefetched slots (large meshes only: MirrorSource::prefetches).
   void settle_mirror_bookkeeping() {
-    if (pending_ == kNoVertex) return;
+    if (pending_ == GridPointTable::kNone) return;
     mirrors_->decoded(pending_, coded().data());
-    pending_ = kNoVertex;
+    pending_ = GridPointTable::kNone;
   }
 
   // 14.15: v (the i-th visited) placed on its lattice around p_ and its
@@ -544,9 +544,8 @@ class VisitCoder {
   TriangleTwistWeight twist_weight_;  // 14.9: no correction without the triangle twist
   std::unique_ptr<MirrorSource> mirrors_;
   MirrorCandidates* images_ = nullptr;
-  static constexpr uint32_t kNoVertex = UINT32_MAX;
   bool deferred_ = false;  // large meshes: each vertex's mirror bookkeeping waits for the next prediction
-  uint32_t pending_ = kNoVertex;
+  uint32_t pending_ = GridPointTable::kNone;  // the vertex whose bookkeeping waits
 };
 
 // A whole visit, coded at once (VisitCoder); stats (may be null) gain its counts.
