@@ -162,24 +162,27 @@ Status PolygonSpiraleReversi::open_detour(size_t f, const Loop& loop, uint32_t f
 }
 
 void PolygonSpiraleReversi::add_triangle(uint32_t g0, uint32_t g1, uint32_t w) {
-  face_vertices_.push_back(vertex_[g0]);
-  face_vertices_.push_back(vertex_[g1]);
-  face_vertices_.push_back(vertex_[w]);
+  const uint32_t a = vertex_[g0], b = vertex_[g1], c = vertex_[w];
+  face_vertices_.push_back(a);
+  face_vertices_.push_back(b);
+  face_vertices_.push_back(c);
   face_degrees_.push_back(3);
-  if (counting_) count_last_face(3);
+  if (!counting_) return;
+  ++faces_at_[find(a)];
+  ++faces_at_[find(b)];
+  ++faces_at_[find(c)];
 }
 
 // The five triangle symbols (13..17) of apply() below, worked out for one
 // anchor or one free vertex: the same nodes, links, merges, checks and
-// faces, without the per-face scratch of the general case.
+// faces, without the per-face scratch of the general case (a detour's
+// loop is only checked to be long enough, as open_detour checks it).
 Status PolygonSpiraleReversi::apply_triangle(size_t f, bool anchor, bool first_gap_edge, bool second_gap_edge) {
   if (anchor && first_gap_edge && second_gap_edge) return whole_loop(3);  // 14
   if (current_.gate == kNone) return invalid(f, "has a detour but there is no boundary to attach to");
-  const uint32_t h = current_.gate, n = uint32_t(current_.length);
-  Detour detour;
-  free_nodes_.clear();
+  const uint32_t h = current_.gate;
   if (!anchor) {  // 13: the gate node's vertex becomes inner
-    if (Status s = open_detour(f, current_, 1, &detour); !s.ok()) return s;
+    if (current_.length < 3) return detour_too_long(f, current_, 1);
     const uint32_t before = prev_[h], after = next_[h];
     link(before, after);
     current_ = {before, current_.length - 1};
@@ -189,10 +192,10 @@ Status PolygonSpiraleReversi::apply_triangle(size_t f, bool anchor, bool first_g
   }
   if (!first_gap_edge && !second_gap_edge) {  // 17: joins the current loop and the top of the stack
     if (loops_.empty()) return invalid(f, "needs 1 loops from a stack of 0");
-    if (Status s = open_detour(f, current_, 0, &detour); !s.ok()) return s;
+    if (current_.length < 2) return detour_too_long(f, current_, 0);
     const Loop popped = loops_.back();
     loops_.pop_back();
-    if (Status s = open_detour(f, popped, 0, &detour); !s.ok()) return s;
+    if (popped.length < 2) return detour_too_long(f, popped, 0);
     const uint32_t h2 = popped.gate, s1 = next_[h], s2 = next_[h2];
     link(h, next_[s2]);
     merge(h, s2);
@@ -201,17 +204,17 @@ Status PolygonSpiraleReversi::apply_triangle(size_t f, bool anchor, bool first_g
     add_triangle(h2, s1, h);
     return Status::Ok();
   }
-  if (Status s = open_detour(f, current_, 0, &detour); !s.ok()) return s;
+  if (current_.length < 2) return detour_too_long(f, current_, 0);
   const uint32_t fresh = new_node(), after = next_[h];
   if (first_gap_edge) {  // 15: a new vertex before the gate edge's end
     link(fresh, after);
     link(h, fresh);
-    current_ = {h, uint64_t(n) + 1};
+    current_ = {h, current_.length + 1};
     add_triangle(h, fresh, after);
   } else {  // 16: a new vertex after the gate node
     link(h, fresh);
     link(fresh, after);
-    current_ = {fresh, uint64_t(n) + 1};
+    current_ = {fresh, current_.length + 1};
     add_triangle(fresh, after, h);
   }
   return Status::Ok();
