@@ -286,6 +286,42 @@ TEST(PolygonSpiraleReversi, ContextRunRejectsAComponentThatDoesNotClose) {
   EXPECT_EQ(polygon_spirale_contexts(t.component_faces, wrong_degree, &source).code(), ErrorCode::kBadSymbol);
 }
 
+// Section 5.4.5 for the triangle symbols, undone in the reverse of stream
+// order: 14 makes a loop of 3 edges, each 13 takes one edge off it, so a
+// second 13 would leave a loop of 1 (rejected); 17 needs a loop on the
+// stack; any symbol but 14 needs a loop to attach to.
+Status undo_triangle_symbols(const std::vector<int>& stream_order, uint32_t first_degree = 3) {
+  FaceShapes shapes;
+  for (const int symbol : stream_order) {
+    uint8_t status[2], gaps[3];
+    uint32_t gap_count = 0;
+    const uint32_t degree = symbol_shape(symbol, status, gaps, &gap_count);
+    shapes.add(degree, status, gaps, gap_count);
+  }
+  PolygonSurface surface;
+  return polygon_spirale_reversi({uint32_t(stream_order.size() + 1)}, {first_degree}, shapes, &surface);
+}
+
+TEST(PolygonSpiraleReversi, TriangleSymbolsNeedTheLoopsTheyUndo) {
+  const Status short_loop = undo_triangle_symbols({13, 13, 14});
+  EXPECT_EQ(short_loop.code(), ErrorCode::kBadSymbol);
+  EXPECT_EQ(short_loop.message(), "CONN: polygon face symbol 0 has a detour of 1 free vertices on a loop of only 2 edges");
+  const Status no_stack = undo_triangle_symbols({17, 14});
+  EXPECT_EQ(no_stack.message(), "CONN: polygon face symbol 0 needs 1 loops from a stack of 0");
+  for (const int symbol : {13, 15, 16, 17}) {
+    const Status no_loop = undo_triangle_symbols({symbol});
+    EXPECT_EQ(no_loop.message(), "CONN: polygon face symbol 0 has a detour but there is no boundary to attach to")
+        << "symbol " << symbol;
+  }
+  // One 13 is undone (a loop of 2 edges, which no first face of 3 closes);
+  // 15 after 14 leaves a loop of 4 that a quad closes: two triangles and a
+  // quad on four vertices.
+  EXPECT_EQ(undo_triangle_symbols({13, 14}).message(),
+            "CONN: component ending at face symbol 0 does not close on its first face of degree 3");
+  EXPECT_TRUE(undo_triangle_symbols({15, 14}, 4).ok());
+  EXPECT_TRUE(undo_triangle_symbols({16, 14}, 4).ok());
+}
+
 TEST(PolygonCoder, GeneratedShapes) {
   using namespace tools;
   EncodeStats stats;
