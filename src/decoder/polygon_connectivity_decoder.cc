@@ -383,8 +383,11 @@ Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t ve
                                              &corners);
   if (!decoded.ok()) return decoded;
   const std::vector<uint32_t>& degree = surface.face_degree;
+  // Without seams or identifications every surface label is a class of its
+  // own (5.4.7): the final labels are the surface's, and no table is built.
+  const bool joined = !records.seam_a.empty() || !records.ident_p.empty();
   std::vector<uint32_t> final;
-  const uint32_t classes = final_labels(surface, records, &final);
+  const uint32_t classes = joined ? final_labels(surface, records, &final) : surface.labels;
   if (classes > vertex_count)
     return symbol_error("the surface has " + std::to_string(classes) + " vertices but vertex_count is " +
                         std::to_string(vertex_count));
@@ -395,14 +398,19 @@ Status decode_polygon_connectivity(const uint8_t* data, size_t size, uint32_t ve
 
   // The real faces with final labels, compacted within the surface's own
   // tables (a face never moves up), which then become the mesh's.
-  size_t faces_kept = 0, corners_kept = 0;
-  for (size_t f = 0, begin = 0; f < degree.size(); begin += degree[f], ++f) {
-    if (records.is_virtual[f]) continue;
-    for (uint32_t k = 0; k < degree[f]; ++k) surface.corners[corners_kept++] = final[surface.corners[begin + k]];
-    surface.face_degree[faces_kept++] = degree[f];
+  if (joined || records.virtual_count > 0) {
+    size_t faces_kept = 0, corners_kept = 0;
+    for (size_t f = 0, begin = 0; f < degree.size(); begin += degree[f], ++f) {
+      if (records.is_virtual[f]) continue;
+      for (uint32_t k = 0; k < degree[f]; ++k) {
+        const uint32_t v = surface.corners[begin + k];
+        surface.corners[corners_kept++] = joined ? final[v] : v;
+      }
+      surface.face_degree[faces_kept++] = degree[f];
+    }
+    surface.face_degree.resize(faces_kept);
+    surface.corners.resize(corners_kept);
   }
-  surface.face_degree.resize(faces_kept);
-  surface.corners.resize(corners_kept);
   mesh->face_sizes = std::move(surface.face_degree);
   mesh->corners = std::move(surface.corners);
   mesh->face_sizes.insert(mesh->face_sizes.end(), loose.face_sizes.begin(), loose.face_sizes.end());
